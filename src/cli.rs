@@ -1,0 +1,462 @@
+//! The course-compatible command line, in two stages: [`RawArgs::parse`] splits the arguments
+//! into known flags and their values (arity, unknown and repeated flags), then
+//! [`RawArgs::validate`] turns them into a typed [`Command`] (numbers, sizes, formats).
+//!
+//! Flags are spelled as the course spells them, with a single dash (`-input FILE`, `-size W H`,
+//! `-output FILE`, `-depth DMIN DMAX FILE`); no argument-parsing crate handles multi-value
+//! single-dash flags in that style, so this is written by hand.
+
+use std::collections::BTreeMap;
+use std::ffi::OsString;
+use std::path::PathBuf;
+
+use crate::depth::DepthRange;
+use crate::export::ImageFormat;
+use crate::render::{MAX_PIXELS, MAX_SIDE_PX, check_image_size};
+
+/// One flag: its spelling, how many values follow it, and its line in the usage text.
+struct FlagSpec {
+    name: &'static str,
+    values: usize,
+    usage: &'static str,
+}
+
+const FLAGS: &[FlagSpec] = &[
+    FlagSpec {
+        name: "-input",
+        values: 1,
+        usage: "-input FILE              scene file (6.837 assignment-1 format)",
+    },
+    FlagSpec {
+        name: "-size",
+        values: 2,
+        usage: "-size W H                image size in pixels (default 200 200)",
+    },
+    FlagSpec {
+        name: "-output",
+        values: 1,
+        usage: "-output FILE             write the colour image (.tga or .png)",
+    },
+    FlagSpec {
+        name: "-depth",
+        values: 3,
+        usage: "-depth DMIN DMAX FILE    write the depth image: t = DMIN white … DMAX black",
+    },
+    FlagSpec {
+        name: "-help",
+        values: 0,
+        usage: "-help                    print this help",
+    },
+];
+
+fn flag_spec(name: &str) -> Option<&'static FlagSpec> {
+    FLAGS.iter().find(|flag| flag.name == name)
+}
+
+/// Image size used when `-size` is not given: the course's 200 × 200.
+pub const DEFAULT_SIZE_PX: (u32, u32) = (200, 200);
+
+/// The usage text printed by `-help`.
+pub fn usage() -> String {
+    let mut text = String::from(
+        "raytracer: ray-casts 6.837 assignment-1 scenes (orthographic camera, spheres)\n\n\
+         usage:\n  raytracer [-input FILE]                     open the viewer (default scene without -input)\n  \
+         raytracer -input FILE [-size W H] [-output FILE] [-depth DMIN DMAX FILE]\n                                              render without a window\n\nflags:\n",
+    );
+    for flag in FLAGS {
+        text.push_str("  ");
+        text.push_str(flag.usage);
+        text.push('\n');
+    }
+    text.push_str(
+        "\nexit status: 0 success, 1 scene or file error, 2 usage error\n\
+         example:\n  raytracer -input scene1_01.txt -size 200 200 -output output1_01.tga -depth 9 10 depth1_01.tga\n",
+    );
+    text
+}
+
+/// A command-line mistake; the program prints it and exits with status 2.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum UsageError {
+    /// A flag the program does not know.
+    #[error("unknown flag '{0}' (raytracer -help lists the flags)")]
+    UnknownFlag(String),
+    /// A word that is not a flag where a flag was expected.
+    #[error(
+        "unexpected argument '{0}': expected a flag such as -input (raytracer -help lists them)"
+    )]
+    StrayArgument(String),
+    /// A flag given twice.
+    #[error("flag {0} is given twice")]
+    Repeated(&'static str),
+    /// Too few values after a flag.
+    #[error("flag {flag} needs {needed} value(s): {usage}")]
+    MissingValue {
+        /// The flag.
+        flag: &'static str,
+        /// How many it needs.
+        needed: usize,
+        /// Its usage line.
+        usage: &'static str,
+    },
+    /// A value that should be a number is not one.
+    #[error("{flag}: expected {what}, found '{found}'")]
+    BadNumber {
+        /// The flag.
+        flag: &'static str,
+        /// What kind of number.
+        what: &'static str,
+        /// The value as given.
+        found: String,
+    },
+    /// An image size outside the supported range.
+    #[error(
+        "-size: {width_px}×{height_px} is out of range: each side 1..={MAX_SIDE_PX}, \
+         at most {MAX_PIXELS} pixels in all"
+    )]
+    BadSize {
+        /// Requested width.
+        width_px: u64,
+        /// Requested height.
+        height_px: u64,
+    },
+    /// An output whose extension names no supported format.
+    #[error(
+        "{flag}: '{path}' has an unknown image format; use one of {}",
+        ImageFormat::EXTENSIONS
+    )]
+    UnknownFormat {
+        /// The flag.
+        flag: &'static str,
+        /// The path as given.
+        path: String,
+    },
+    /// Both outputs name the same file.
+    #[error("-output and -depth name the same file '{0}'")]
+    SameOutput(String),
+    /// An argument that is not valid Unicode where text is needed.
+    #[error("{flag}: value is not valid text")]
+    NotText {
+        /// The flag.
+        flag: &'static str,
+    },
+    /// Rendering needs a scene.
+    #[error("-output and -depth need -input FILE")]
+    MissingInput,
+}
+
+/// The depth image to write.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DepthOutput {
+    /// t range mapped white … black.
+    pub range: DepthRange,
+    /// Where to write it.
+    pub path: PathBuf,
+}
+
+/// A headless render: what to read, how large, what to write.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RenderRequest {
+    /// Scene file.
+    pub input: PathBuf,
+    /// Image width in pixels.
+    pub width_px: u32,
+    /// Image height in pixels.
+    pub height_px: u32,
+    /// Colour image destination.
+    pub colour_output: Option<PathBuf>,
+    /// Depth image destination and range.
+    pub depth_output: Option<DepthOutput>,
+}
+
+/// Opening the viewer.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ViewerRequest {
+    /// Scene file; the embedded default scene when `None`.
+    pub input: Option<PathBuf>,
+    /// `-size W H`, if given: the export size the viewer starts with.
+    pub size_px: Option<(u32, u32)>,
+}
+
+/// What the command line asks for.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Command {
+    /// Print the usage text.
+    Help,
+    /// Render without a window.
+    Render(RenderRequest),
+    /// Open the viewer.
+    View(ViewerRequest),
+}
+
+/// Stage one: flags recognised, values collected, nothing interpreted.
+#[derive(Debug, Clone, Default)]
+pub struct RawArgs {
+    values: BTreeMap<&'static str, Vec<OsString>>,
+}
+
+impl RawArgs {
+    /// Splits arguments (without the program name) into flags and values.
+    pub fn parse<I, S>(arguments: I) -> Result<Self, UsageError>
+    where
+        I: IntoIterator<Item = S>,
+        S: Into<OsString>,
+    {
+        let mut arguments = arguments.into_iter().map(Into::into).peekable();
+        let mut values = BTreeMap::new();
+        while let Some(argument) = arguments.next() {
+            let text = argument.to_string_lossy();
+            let name = match text.as_ref() {
+                "--help" | "-h" => "-help",
+                name => name,
+            };
+            let spec = match flag_spec(name) {
+                Some(spec) => spec,
+                None if name.starts_with('-') && name.len() > 1 => {
+                    return Err(UsageError::UnknownFlag(name.to_owned()));
+                }
+                None => return Err(UsageError::StrayArgument(name.to_owned())),
+            };
+            let mut flag_values = Vec::with_capacity(spec.values);
+            for _ in 0..spec.values {
+                // A value may start with '-' (a negative depth); a known flag may not be a value.
+                let is_flag = arguments
+                    .peek()
+                    .is_some_and(|next| flag_spec(&next.to_string_lossy()).is_some());
+                match arguments.next() {
+                    Some(value) if !is_flag => flag_values.push(value),
+                    _ => {
+                        return Err(UsageError::MissingValue {
+                            flag: spec.name,
+                            needed: spec.values,
+                            usage: spec.usage,
+                        });
+                    }
+                }
+            }
+            if values.insert(spec.name, flag_values).is_some() {
+                return Err(UsageError::Repeated(spec.name));
+            }
+        }
+        Ok(Self { values })
+    }
+
+    /// Stage two: interprets the values into a typed [`Command`].
+    pub fn validate(&self) -> Result<Command, UsageError> {
+        if self.values.contains_key("-help") {
+            return Ok(Command::Help);
+        }
+        let input = self.value("-input", 0).map(PathBuf::from);
+        let size_px = match self.values.get("-size") {
+            Some(_) => Some(self.size()?),
+            None => None,
+        };
+        let colour_output = self.output_path("-output", 0)?;
+        let depth_output = match self.values.get("-depth") {
+            Some(_) => Some(DepthOutput {
+                range: DepthRange::new(
+                    self.finite("-depth", 0, "a number (DMIN)")?,
+                    self.finite("-depth", 1, "a number (DMAX)")?,
+                ),
+                path: self.output_path("-depth", 2)?.unwrap_or_default(),
+            }),
+            None => None,
+        };
+        if let (Some(colour), Some(depth)) = (&colour_output, &depth_output)
+            && *colour == depth.path
+        {
+            return Err(UsageError::SameOutput(colour.display().to_string()));
+        }
+        if colour_output.is_none() && depth_output.is_none() {
+            return Ok(Command::View(ViewerRequest { input, size_px }));
+        }
+        let input = input.ok_or(UsageError::MissingInput)?;
+        let (width_px, height_px) = size_px.unwrap_or(DEFAULT_SIZE_PX);
+        Ok(Command::Render(RenderRequest {
+            input,
+            width_px,
+            height_px,
+            colour_output,
+            depth_output,
+        }))
+    }
+
+    fn value(&self, flag: &str, index: usize) -> Option<&OsString> {
+        self.values.get(flag).and_then(|values| values.get(index))
+    }
+
+    fn text(&self, flag: &'static str, index: usize) -> Result<&str, UsageError> {
+        self.value(flag, index)
+            .map(|value| value.to_str().ok_or(UsageError::NotText { flag }))
+            .unwrap_or(Ok(""))
+    }
+
+    fn finite(
+        &self,
+        flag: &'static str,
+        index: usize,
+        what: &'static str,
+    ) -> Result<f64, UsageError> {
+        let text = self.text(flag, index)?;
+        match text.parse::<f64>() {
+            Ok(value) if value.is_finite() => Ok(value),
+            _ => Err(UsageError::BadNumber {
+                flag,
+                what,
+                found: text.to_owned(),
+            }),
+        }
+    }
+
+    fn size(&self) -> Result<(u32, u32), UsageError> {
+        let side = |index, what| {
+            let text = self.text("-size", index)?;
+            text.parse::<u64>().map_err(|_| UsageError::BadNumber {
+                flag: "-size",
+                what,
+                found: text.to_owned(),
+            })
+        };
+        let (width_px, height_px) = (
+            side(0, "a whole number of pixels (W)")?,
+            side(1, "a whole number of pixels (H)")?,
+        );
+        let bad = UsageError::BadSize {
+            width_px,
+            height_px,
+        };
+        let (Ok(width), Ok(height)) = (u32::try_from(width_px), u32::try_from(height_px)) else {
+            return Err(bad);
+        };
+        check_image_size(width, height).map_err(|_| bad)?;
+        Ok((width, height))
+    }
+
+    fn output_path(&self, flag: &'static str, index: usize) -> Result<Option<PathBuf>, UsageError> {
+        let Some(value) = self.value(flag, index) else {
+            return Ok(None);
+        };
+        let path = PathBuf::from(value);
+        ImageFormat::from_path(&path).map_err(|_| UsageError::UnknownFormat {
+            flag,
+            path: path.display().to_string(),
+        })?;
+        Ok(Some(path))
+    }
+}
+
+/// Both stages: arguments (without the program name) → [`Command`].
+pub fn parse_command<I, S>(arguments: I) -> Result<Command, UsageError>
+where
+    I: IntoIterator<Item = S>,
+    S: Into<OsString>,
+{
+    RawArgs::parse(arguments)?.validate()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(line: &str) -> Result<Command, UsageError> {
+        parse_command(line.split_whitespace())
+    }
+
+    #[test]
+    fn course_command_line_gives_a_render_request() {
+        let command =
+            parse("-input scene1_01.txt -size 200 100 -output out.tga -depth 9 10 depth.tga")
+                .unwrap();
+        assert_eq!(
+            command,
+            Command::Render(RenderRequest {
+                input: "scene1_01.txt".into(),
+                width_px: 200,
+                height_px: 100,
+                colour_output: Some("out.tga".into()),
+                depth_output: Some(DepthOutput {
+                    range: DepthRange::new(9.0, 10.0),
+                    path: "depth.tga".into()
+                }),
+            })
+        );
+    }
+
+    #[test]
+    fn negative_depth_values_are_values_not_flags() {
+        let Command::Render(request) = parse("-input a.txt -depth -2 2 d.png").unwrap() else {
+            panic!("expected a render request");
+        };
+        assert_eq!(
+            request.depth_output.unwrap().range,
+            DepthRange::new(-2.0, 2.0)
+        );
+        assert_eq!((request.width_px, request.height_px), DEFAULT_SIZE_PX);
+    }
+
+    #[test]
+    fn without_outputs_the_viewer_opens() {
+        assert_eq!(parse("").unwrap(), Command::View(ViewerRequest::default()));
+        assert_eq!(
+            parse("-input a.txt -size 640 480").unwrap(),
+            Command::View(ViewerRequest {
+                input: Some("a.txt".into()),
+                size_px: Some((640, 480))
+            })
+        );
+        assert_eq!(parse("-help").unwrap(), Command::Help);
+        assert_eq!(parse("--help").unwrap(), Command::Help);
+    }
+
+    #[test]
+    fn mistakes_are_usage_errors() {
+        let cases = [
+            ("-inptu a.txt", "unknown flag '-inptu'"),
+            ("a.txt", "unexpected argument 'a.txt'"),
+            ("-input", "-input needs 1 value"),
+            ("-input a.txt -size 200", "-size needs 2 value"),
+            (
+                "-input a.txt -size 200 -output x.tga",
+                "-size needs 2 value",
+            ),
+            ("-input a.txt -size 0 200 -output x.tga", "out of range"),
+            ("-input a.txt -size 20000 200 -output x.tga", "out of range"),
+            (
+                "-input a.txt -size 99999999999 200 -output x.tga",
+                "out of range",
+            ),
+            (
+                "-input a.txt -size -5 200 -output x.tga",
+                "expected a whole number",
+            ),
+            (
+                "-input a.txt -size 2.5 200 -output x.tga",
+                "expected a whole number",
+            ),
+            (
+                "-input a.txt -depth a 1 d.tga",
+                "expected a number (DMIN), found 'a'",
+            ),
+            (
+                "-input a.txt -depth 1 inf d.tga",
+                "expected a number (DMAX), found 'inf'",
+            ),
+            ("-input a.txt -output x.jpg", "unknown image format"),
+            ("-input a.txt -output x.tga -output y.tga", "given twice"),
+            ("-input a.txt -output x.tga -depth 1 2 x.tga", "same file"),
+            ("-output x.tga", "need -input"),
+        ];
+        for (line, message) in cases {
+            let error = parse(line).expect_err(line).to_string();
+            assert!(error.contains(message), "{line}: {error}");
+        }
+    }
+
+    #[test]
+    fn usage_lists_every_flag() {
+        let text = usage();
+        for flag in FLAGS {
+            assert!(text.contains(flag.name));
+        }
+    }
+}

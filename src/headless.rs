@@ -1,0 +1,85 @@
+//! Headless rendering for the command line: read the scene, render, write the requested images.
+
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+use crate::cli::RenderRequest;
+use crate::depth::DepthRange;
+use crate::export::{ExportError, write_image};
+use crate::render::{View, ViewError, render};
+use crate::scene::{LoadError, Scene, load_scene};
+
+/// Why a headless render failed (the program exits with status 1).
+#[derive(Debug, thiserror::Error)]
+pub enum RunError {
+    /// The scene could not be read.
+    #[error(transparent)]
+    Load(#[from] LoadError),
+    /// The view cannot be rendered.
+    #[error(transparent)]
+    View(#[from] ViewError),
+    /// An image could not be written.
+    #[error(transparent)]
+    Export(#[from] ExportError),
+}
+
+/// What a headless render did, with its timings.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunReport {
+    /// Spheres in the scene.
+    pub sphere_count: usize,
+    /// Time to read and parse the scene.
+    pub parse: Duration,
+    /// Time to render the frame.
+    pub render: Duration,
+    /// Time to encode and write the images.
+    pub write: Duration,
+}
+
+/// The depth range used when only a colour image is asked for (it does not affect the output).
+const UNUSED_DEPTH_RANGE: DepthRange = DepthRange {
+    min_t: 0.0,
+    max_t: 1.0,
+};
+
+/// The view a request renders: the scene's camera at the requested size and depth range.
+pub fn request_view(scene: &Scene, request: &RenderRequest) -> View {
+    let range = request
+        .depth_output
+        .as_ref()
+        .map_or(UNUSED_DEPTH_RANGE, |depth| depth.range);
+    View::of_camera(&scene.camera, request.width_px, request.height_px, range)
+}
+
+/// Runs a headless render request.
+pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
+    let started = Instant::now();
+    let scene = load_scene(&request.input)?;
+    let parse = started.elapsed();
+
+    let started = Instant::now();
+    let view = request_view(&scene, request);
+    let frame = render(&scene, &view)?;
+    let render = started.elapsed();
+
+    let started = Instant::now();
+    let outputs: [Option<(&Path, _)>; 2] = [
+        request
+            .colour_output
+            .as_deref()
+            .map(|path| (path, frame.colour_image())),
+        request
+            .depth_output
+            .as_ref()
+            .map(|depth| (depth.path.as_path(), frame.depth_image(depth.range))),
+    ];
+    for (path, image) in outputs.into_iter().flatten() {
+        write_image(path, &image)?;
+    }
+    Ok(RunReport {
+        sphere_count: scene.spheres.len(),
+        parse,
+        render,
+        write: started.elapsed(),
+    })
+}

@@ -1,0 +1,44 @@
+//! # raytracer
+//!
+//! Ray casting of MIT 6.837 assignment-1 scenes: an orthographic camera and flat-coloured spheres
+//! in groups. The library has no UI dependency; the `raytracer` binary adds the course-compatible
+//! command line and (feature `gui`) the desktop viewer.
+//!
+//! The pipeline: scene text → [`scene::parse_scene`] → [`scene::Scene`] (plain, validated data) →
+//! [`render::render`] with a [`render::View`] → [`render::Frame`] (colour, t and sphere per pixel)
+//! → 8-bit images ([`render::Frame::colour_image`], [`render::Frame::depth_image`]) → files
+//! ([`export`]).
+//!
+//! Conventions (SPEC.md): `horizontal = normalize(d × up)`, `screen_up = horizontal × d`; pixel
+//! (x, y), y = 0 the bottom row, samples its centre; `size` spans the longer image side; rays
+//! start at t = −∞ (a sphere behind the camera centre is seen); t is measured along the unit
+//! direction from the screen plane; ties go to the sphere first in the file.
+//!
+//! Module map:
+//! * [`scene`]: model, tokenizer, parser, typed errors with line and column
+//! * [`camera`]: orthonormal basis, camera space, pixel grid
+//! * [`intersect`]: the careful general ray–sphere routine (the tests' reference)
+//! * [`render`]: [`render::View`], [`render::Frame`], the fast disc path and the oracle loop
+//! * [`depth`]: the t → grey mapping and 8-bit quantisation
+//! * [`export`]: TGA/PNG writers, atomic writes
+//! * [`cli`]: command-line flags → typed request; [`headless`]: running that request
+
+#![cfg_attr(
+    not(test),
+    deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
+)]
+
+pub mod camera;
+pub mod cli;
+pub mod depth;
+pub mod export;
+pub mod headless;
+pub mod intersect;
+pub mod render;
+pub mod scene;
+
+/// The scene the viewer shows when no file is given (also in `assets/default_scene.txt`).
+pub const DEFAULT_SCENE_TEXT: &str = include_str!("../assets/default_scene.txt");
+
+/// Name shown for the embedded default scene.
+pub const DEFAULT_SCENE_NAME: &str = "default scene (embedded)";

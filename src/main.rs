@@ -1,0 +1,36 @@
+//! `raytracer`: the course-compatible command line. With `-output`/`-depth` it renders without a
+//! window; otherwise it opens the viewer (feature `gui`). Exit status: 0 success, 1 scene or file
+//! error, 2 usage error.
+
+use std::process::ExitCode;
+
+use raytracer::cli::{Command, parse_command, usage};
+
+fn main() -> ExitCode {
+    let command = match parse_command(std::env::args_os().skip(1)) {
+        Ok(command) => command,
+        Err(error) => {
+            eprintln!("raytracer: {error}");
+            return ExitCode::from(2);
+        }
+    };
+    match command {
+        Command::Help => {
+            print!("{}", usage());
+            ExitCode::SUCCESS
+        }
+        Command::Render(request) => match raytracer::headless::run(&request) {
+            Ok(_) => ExitCode::SUCCESS,
+            Err(error) => {
+                eprintln!("raytracer: {error}");
+                ExitCode::from(1)
+            }
+        },
+        Command::View(_request) => {
+            eprintln!(
+                "raytracer: the viewer is not built yet; give -output FILE and/or -depth DMIN DMAX FILE to render without a window"
+            );
+            ExitCode::from(2)
+        }
+    }
+}

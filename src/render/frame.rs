@@ -1,0 +1,73 @@
+//! [`Frame`]: a rendered picture — colour, raw t and the visible sphere per pixel — and its 8-bit
+//! colour and depth images.
+
+use glam::Vec3;
+use image::{Rgb, RgbImage};
+
+use crate::depth::{DepthRange, quantize_f32};
+
+/// Sphere index of pixels that no sphere covers.
+pub const NO_HIT: u32 = u32::MAX;
+
+/// A rendered picture. Pixels are stored row-major with the **top row first** (as image files
+/// store them): pixel (x, y) with y = 0 the bottom row is at index `(height − 1 − y)·width + x`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Frame {
+    /// Width in pixels.
+    pub width_px: u32,
+    /// Height in pixels.
+    pub height_px: u32,
+    /// Linear colour per pixel.
+    pub colour: Vec<Vec3>,
+    /// t of the visible hit per pixel, along the unit view direction from the screen plane;
+    /// `+∞` where no sphere is hit.
+    pub t: Vec<f64>,
+    /// Index (file order) of the visible sphere per pixel, [`NO_HIT`] where none.
+    pub sphere: Vec<u32>,
+}
+
+impl Frame {
+    /// Storage index of pixel (x, y) with y = 0 the bottom row.
+    pub fn index(&self, x: u32, y_up: u32) -> usize {
+        (self.height_px - 1 - y_up) as usize * self.width_px as usize + x as usize
+    }
+
+    /// Number of pixels.
+    pub fn pixel_count(&self) -> usize {
+        self.width_px as usize * self.height_px as usize
+    }
+
+    /// The 8-bit colour image (`floor(c·255)`, clamped), top row first.
+    pub fn colour_image(&self) -> RgbImage {
+        RgbImage::from_fn(self.width_px, self.height_px, |x, y| {
+            Rgb(self.colour[self.storage_index(x, y)]
+                .to_array()
+                .map(quantize_f32))
+        })
+    }
+
+    /// The 8-bit depth image over `range` (grey in all three channels), top row first.
+    pub fn depth_image(&self, range: DepthRange) -> RgbImage {
+        RgbImage::from_fn(self.width_px, self.height_px, |x, y| {
+            Rgb([range.grey_u8(self.t[self.storage_index(x, y)]); 3])
+        })
+    }
+
+    /// Colour and depth images side by side in one picture (colour left), as users share them.
+    pub fn side_by_side_image(&self, range: DepthRange) -> RgbImage {
+        let colour = self.colour_image();
+        let depth = self.depth_image(range);
+        RgbImage::from_fn(self.width_px * 2, self.height_px, |x, y| {
+            if x < self.width_px {
+                *colour.get_pixel(x, y)
+            } else {
+                *depth.get_pixel(x - self.width_px, y)
+            }
+        })
+    }
+
+    /// Storage index of image pixel (x, y) with y = 0 the **top** row.
+    fn storage_index(&self, x: u32, y_down: u32) -> usize {
+        y_down as usize * self.width_px as usize + x as usize
+    }
+}

@@ -1,0 +1,133 @@
+//! Single-pass tokenizer over the bytes of a scene file: whitespace-separated words, with `{` and `}`
+//! always tokens of their own. Tokens borrow the text (no allocation per token) and carry their
+//! line and column.
+
+use super::error::Location;
+
+/// One word of the file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Token<'a> {
+    /// The word as written.
+    pub text: &'a str,
+    /// Where it starts.
+    pub location: Location,
+}
+
+/// Iterator over the tokens of a text.
+#[derive(Debug, Clone)]
+pub struct Lexer<'a> {
+    text: &'a str,
+    offset: usize,
+    line: u32,
+    /// Byte offset at which the current line starts.
+    line_start: usize,
+}
+
+impl<'a> Lexer<'a> {
+    /// A lexer at the start of `text`.
+    pub fn new(text: &'a str) -> Self {
+        Self {
+            text,
+            offset: 0,
+            line: 1,
+            line_start: 0,
+        }
+    }
+
+    /// The location the next character would have (used for "end of file" errors).
+    pub fn here(&self) -> Location {
+        self.location_of(self.offset)
+    }
+
+    fn location_of(&self, offset: usize) -> Location {
+        let line_prefix = &self.text.as_bytes()[self.line_start..offset];
+        // Columns count characters: every byte that does not continue a UTF-8 sequence.
+        let chars = line_prefix.iter().filter(|&&b| (b & 0xC0) != 0x80).count();
+        Location {
+            line: self.line,
+            column: u32::try_from(chars + 1).unwrap_or(u32::MAX),
+        }
+    }
+}
+
+impl<'a> Iterator for Lexer<'a> {
+    type Item = Token<'a>;
+
+    fn next(&mut self) -> Option<Token<'a>> {
+        let bytes = self.text.as_bytes();
+        // Skip whitespace, counting lines.
+        while let Some(&byte) = bytes.get(self.offset) {
+            if byte == b'\n' {
+                self.line = self.line.saturating_add(1);
+                self.offset += 1;
+                self.line_start = self.offset;
+            } else if byte.is_ascii_whitespace() {
+                self.offset += 1;
+            } else {
+                break;
+            }
+        }
+        let start = self.offset;
+        let first = *bytes.get(start)?;
+        let end = if first == b'{' || first == b'}' {
+            start + 1
+        } else {
+            let rest = &bytes[start..];
+            start
+                + rest
+                    .iter()
+                    .position(|&b| b.is_ascii_whitespace() || b == b'{' || b == b'}')
+                    .unwrap_or(rest.len())
+        };
+        let location = self.location_of(start);
+        self.offset = end;
+        // Token boundaries are ASCII bytes, so they are char boundaries too.
+        let text = self.text.get(start..end)?;
+        Some(Token { text, location })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn words(text: &str) -> Vec<(&str, u32, u32)> {
+        Lexer::new(text)
+            .map(|t| (t.text, t.location.line, t.location.column))
+            .collect()
+    }
+
+    #[test]
+    fn splits_on_whitespace_and_braces_with_positions() {
+        assert_eq!(
+            words("Group {\n\tnumObjects 1\n}"),
+            vec![
+                ("Group", 1, 1),
+                ("{", 1, 7),
+                ("numObjects", 2, 2),
+                ("1", 2, 13),
+                ("}", 3, 1)
+            ]
+        );
+        assert_eq!(
+            words("a{b}c"),
+            vec![
+                ("a", 1, 1),
+                ("{", 1, 2),
+                ("b", 1, 3),
+                ("}", 1, 4),
+                ("c", 1, 5)
+            ]
+        );
+    }
+
+    #[test]
+    fn columns_count_characters_not_bytes() {
+        assert_eq!(words("é x"), vec![("é", 1, 1), ("x", 1, 3)]);
+    }
+
+    #[test]
+    fn crlf_line_endings_count_once() {
+        assert_eq!(words("a\r\nb"), vec![("a", 1, 1), ("b", 2, 1)]);
+    }
+}

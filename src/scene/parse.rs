@@ -1,0 +1,427 @@
+//! Recursive-descent parser: scene text → validated [`Scene`].
+//!
+//! The grammar is SPEC.md's. Top-level blocks may come in any order, each at most once; the camera
+//! is required. `MaterialIndex` applies to every following object in file order, across group
+//! boundaries. Counts are checked against what the blocks hold (no allocation is sized by a count
+//! from the file), numbers must be finite, and group nesting is capped at [`MAX_GROUP_DEPTH`].
+
+use glam::{DVec3, Vec3};
+
+use super::error::{Location, ParseError, ParseErrorKind};
+use super::lexer::{Lexer, Token};
+use super::model::{DEFAULT_BACKGROUND, Material, OrthographicCamera, Scene, Sphere};
+use crate::camera::{CameraBasis, CameraError};
+
+/// Deepest group nesting accepted; deeper files get [`ParseErrorKind::TooDeep`].
+pub const MAX_GROUP_DEPTH: usize = 256;
+
+/// Keywords of the course's later assignments: named in a "not supported" error.
+const UNSUPPORTED_KEYWORDS: &[&str] = &[
+    "PerspectiveCamera",
+    "Lights",
+    "DirectionalLight",
+    "PointLight",
+    "AmbientLight",
+    "ambientLight",
+    "Plane",
+    "Triangle",
+    "TriangleMesh",
+    "Transform",
+    "Scale",
+    "UniformScale",
+    "Translate",
+    "Rotate",
+    "XRotate",
+    "YRotate",
+    "ZRotate",
+    "Matrix",
+    "Checkerboard",
+    "Noise",
+    "Marble",
+    "Wood",
+    "specularColor",
+    "exponent",
+    "reflectiveColor",
+    "transparentColor",
+    "indexOfRefraction",
+    "angle",
+];
+
+/// Longest excerpt of a token quoted in an error message, in characters.
+const MAX_QUOTED_CHARS: usize = 40;
+
+/// Parses scene bytes; text that is not UTF-8 gets [`ParseErrorKind::NotText`] at the bad byte.
+pub fn parse_scene_bytes(bytes: &[u8]) -> Result<Scene, ParseError> {
+    match std::str::from_utf8(bytes) {
+        Ok(text) => parse_scene(text),
+        Err(error) => {
+            // The location of the first byte that is not UTF-8.
+            let valid = &bytes[..error.valid_up_to()];
+            let line = 1 + valid.iter().filter(|&&b| b == b'\n').count();
+            let line_start = valid.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
+            let column = 1 + valid[line_start..]
+                .iter()
+                .filter(|&&b| (b & 0xC0) != 0x80)
+                .count();
+            let location = Location {
+                line: u32::try_from(line).unwrap_or(u32::MAX),
+                column: u32::try_from(column).unwrap_or(u32::MAX),
+            };
+            Err(ParseError::new(location, ParseErrorKind::NotText))
+        }
+    }
+}
+
+/// Parses the text of a scene file into a validated [`Scene`].
+pub fn parse_scene(text: &str) -> Result<Scene, ParseError> {
+    Parser::new(text).scene()
+}
+
+/// A token as quoted in an error: escaped and shortened.
+fn quote(text: &str) -> String {
+    let mut quoted: String = text.chars().take(MAX_QUOTED_CHARS).collect();
+    if text.chars().count() > MAX_QUOTED_CHARS {
+        quoted.push('…');
+    }
+    quoted.escape_debug().to_string()
+}
+
+fn error<T>(location: Location, kind: ParseErrorKind) -> Result<T, ParseError> {
+    Err(ParseError::new(location, kind))
+}
+
+struct Parser<'a> {
+    lexer: Lexer<'a>,
+    /// The `MaterialIndex` in effect and where it was set.
+    current_material: Option<u32>,
+    /// Every `MaterialIndex` statement, checked against the materials at the end.
+    material_references: Vec<(u64, Location)>,
+    spheres: Vec<Sphere>,
+}
+
+impl<'a> Parser<'a> {
+    fn new(text: &'a str) -> Self {
+        Self {
+            lexer: Lexer::new(text),
+            current_material: None,
+            material_references: Vec::new(),
+            spheres: Vec::new(),
+        }
+    }
+
+    fn next(&mut self, expected: &str) -> Result<Token<'a>, ParseError> {
+        match self.lexer.next() {
+            Some(token) => Ok(token),
+            None => error(
+                self.lexer.here(),
+                ParseErrorKind::UnexpectedEnd {
+                    expected: expected.to_owned(),
+                },
+            ),
+        }
+    }
+
+    fn unexpected<T>(token: Token<'_>, expected: &str) -> Result<T, ParseError> {
+        let kind = if UNSUPPORTED_KEYWORDS.contains(&token.text) {
+            ParseErrorKind::Unsupported {
+                keyword: token.text.to_owned(),
+            }
+        } else {
+            ParseErrorKind::Expected {
+                expected: expected.to_owned(),
+                found: quote(token.text),
+            }
+        };
+        error(token.location, kind)
+    }
+
+    /// Consumes `keyword` or fails with "expected 'keyword', found …".
+    fn expect(&mut self, keyword: &str) -> Result<Token<'a>, ParseError> {
+        let expected = format!("'{keyword}'");
+        let token = self.next(&expected)?;
+        if token.text == keyword {
+            Ok(token)
+        } else {
+            Self::unexpected(token, &expected)
+        }
+    }
+
+    fn number(&mut self, what: &'static str) -> Result<(f64, Location), ParseError> {
+        let expected = format!("a number ({what})");
+        let token = self.next(&expected)?;
+        match token.text.parse::<f64>() {
+            Ok(value) if value.is_finite() => Ok((value, token.location)),
+            Ok(_) => error(
+                token.location,
+                ParseErrorKind::NotFinite {
+                    what,
+                    found: quote(token.text),
+                },
+            ),
+            Err(_) => error(
+                token.location,
+                ParseErrorKind::NotANumber {
+                    what,
+                    found: quote(token.text),
+                },
+            ),
+        }
+    }
+
+    fn vector(&mut self, what: &'static str) -> Result<(DVec3, Location), ParseError> {
+        let (x, location) = self.number(what)?;
+        let (y, _) = self.number(what)?;
+        let (z, _) = self.number(what)?;
+        Ok((DVec3::new(x, y, z), location))
+    }
+
+    /// A colour channel, read as a 32-bit float as the course's own parser did.
+    fn channel(&mut self, what: &'static str) -> Result<f32, ParseError> {
+        let expected = format!("a number ({what})");
+        let token = self.next(&expected)?;
+        match token.text.parse::<f32>() {
+            Ok(value) if value.is_finite() => Ok(value),
+            Ok(_) => error(
+                token.location,
+                ParseErrorKind::NotFinite {
+                    what,
+                    found: quote(token.text),
+                },
+            ),
+            Err(_) => error(
+                token.location,
+                ParseErrorKind::NotANumber {
+                    what,
+                    found: quote(token.text),
+                },
+            ),
+        }
+    }
+
+    fn colour(&mut self, what: &'static str) -> Result<Vec3, ParseError> {
+        Ok(Vec3::new(
+            self.channel(what)?,
+            self.channel(what)?,
+            self.channel(what)?,
+        ))
+    }
+
+    fn count(&mut self, what: &'static str) -> Result<(u64, Location), ParseError> {
+        let expected = format!("a count ({what})");
+        let token = self.next(&expected)?;
+        match token.text.parse::<u64>() {
+            Ok(value) => Ok((value, token.location)),
+            Err(_) => error(
+                token.location,
+                ParseErrorKind::NotACount {
+                    what,
+                    found: quote(token.text),
+                },
+            ),
+        }
+    }
+
+    fn scene(mut self) -> Result<Scene, ParseError> {
+        const TOP_LEVEL: &str = "'OrthographicCamera', 'Background', 'Materials' or 'Group'";
+        let mut camera = None;
+        let mut background = None;
+        let mut materials: Option<Vec<Material>> = None;
+        let mut group_seen = false;
+        while let Some(token) = self.lexer.next() {
+            let duplicate = |block| error(token.location, ParseErrorKind::Duplicate { block });
+            match token.text {
+                "OrthographicCamera" if camera.is_some() => return duplicate("OrthographicCamera"),
+                "OrthographicCamera" => camera = Some(self.camera()?),
+                "Background" if background.is_some() => return duplicate("Background"),
+                "Background" => background = Some(self.background()?),
+                "Materials" if materials.is_some() => return duplicate("Materials"),
+                "Materials" => materials = Some(self.materials()?),
+                "Group" if group_seen => return duplicate("Group"),
+                "Group" => {
+                    group_seen = true;
+                    self.group(1)?;
+                }
+                _ => return Self::unexpected(token, TOP_LEVEL),
+            }
+        }
+        let Some(camera) = camera else {
+            return error(self.lexer.here(), ParseErrorKind::MissingCamera);
+        };
+        let materials = materials.unwrap_or_default();
+        for &(index, location) in &self.material_references {
+            if index >= materials.len() as u64 {
+                return error(
+                    location,
+                    ParseErrorKind::MaterialIndexOutOfRange {
+                        index,
+                        count: materials.len(),
+                    },
+                );
+            }
+        }
+        Ok(Scene {
+            camera,
+            background: background.unwrap_or(DEFAULT_BACKGROUND),
+            materials,
+            spheres: self.spheres,
+        })
+    }
+
+    fn camera(&mut self) -> Result<OrthographicCamera, ParseError> {
+        self.expect("{")?;
+        self.expect("center")?;
+        let (center_world, _) = self.vector("camera center")?;
+        self.expect("direction")?;
+        let (direction_world, direction_at) = self.vector("camera direction")?;
+        let up_token = self.expect("up")?;
+        let (up_world, _) = self.vector("camera up")?;
+        self.expect("size")?;
+        let (size_world, size_at) = self.number("camera size")?;
+        self.expect("}")?;
+        match CameraBasis::new(direction_world, up_world) {
+            Ok(_) => {}
+            Err(CameraError::ZeroDirection) => {
+                return error(direction_at, ParseErrorKind::ZeroDirection);
+            }
+            Err(CameraError::UpParallel) => {
+                return error(up_token.location, ParseErrorKind::UpParallel);
+            }
+        }
+        if size_world <= 0.0 {
+            return error(
+                size_at,
+                ParseErrorKind::NonPositiveSize { size: size_world },
+            );
+        }
+        Ok(OrthographicCamera {
+            center_world,
+            direction_world,
+            up_world,
+            size_world,
+        })
+    }
+
+    fn background(&mut self) -> Result<Vec3, ParseError> {
+        self.expect("{")?;
+        self.expect("color")?;
+        let colour = self.colour("background color")?;
+        self.expect("}")?;
+        Ok(colour)
+    }
+
+    fn materials(&mut self) -> Result<Vec<Material>, ParseError> {
+        self.expect("{")?;
+        self.expect("numMaterials")?;
+        let (declared, declared_at) = self.count("numMaterials")?;
+        let mut materials = Vec::new();
+        loop {
+            const EXPECTED: &str = "'PhongMaterial', 'Material' or '}'";
+            let token = self.next(EXPECTED)?;
+            match token.text {
+                "PhongMaterial" | "Material" => materials.push(self.material()?),
+                "}" => break,
+                _ => return Self::unexpected(token, EXPECTED),
+            }
+        }
+        if materials.len() as u64 != declared {
+            return error(
+                declared_at,
+                ParseErrorKind::CountMismatch {
+                    block: "Materials",
+                    items: "materials",
+                    declared,
+                    found: materials.len() as u64,
+                },
+            );
+        }
+        Ok(materials)
+    }
+
+    fn material(&mut self) -> Result<Material, ParseError> {
+        self.expect("{")?;
+        const EXPECTED: &str = "'diffuseColor' or '}'";
+        let token = self.next(EXPECTED)?;
+        match token.text {
+            "}" => Ok(Material::default()),
+            "diffuseColor" => {
+                let diffuse_colour = self.colour("diffuseColor")?;
+                self.expect("}")?;
+                Ok(Material { diffuse_colour })
+            }
+            _ => Self::unexpected(token, EXPECTED),
+        }
+    }
+
+    /// A `Group` block after its keyword; `depth` is 1 for the top-level group.
+    fn group(&mut self, depth: usize) -> Result<(), ParseError> {
+        let open = self.expect("{")?;
+        if depth > MAX_GROUP_DEPTH {
+            return error(
+                open.location,
+                ParseErrorKind::TooDeep {
+                    max: MAX_GROUP_DEPTH,
+                },
+            );
+        }
+        self.expect("numObjects")?;
+        let (declared, declared_at) = self.count("numObjects")?;
+        let mut found: u64 = 0;
+        loop {
+            const EXPECTED: &str = "'MaterialIndex', 'Sphere', 'Group' or '}'";
+            let token = self.next(EXPECTED)?;
+            match token.text {
+                "MaterialIndex" => {
+                    let (index, location) = self.count("MaterialIndex")?;
+                    self.material_references.push((index, location));
+                    // Out-of-range indices are reported at the end, once the materials are known.
+                    self.current_material = Some(u32::try_from(index).unwrap_or(u32::MAX));
+                }
+                "Sphere" => {
+                    self.sphere()?;
+                    found += 1;
+                }
+                "Group" => {
+                    self.group(depth + 1)?;
+                    found += 1;
+                }
+                "}" => break,
+                _ => return Self::unexpected(token, EXPECTED),
+            }
+        }
+        if found != declared {
+            return error(
+                declared_at,
+                ParseErrorKind::CountMismatch {
+                    block: "Group",
+                    items: "objects",
+                    declared,
+                    found,
+                },
+            );
+        }
+        Ok(())
+    }
+
+    fn sphere(&mut self) -> Result<(), ParseError> {
+        self.expect("{")?;
+        self.expect("center")?;
+        let (center_world, _) = self.vector("sphere center")?;
+        self.expect("radius")?;
+        let (radius_world, radius_at) = self.number("sphere radius")?;
+        self.expect("}")?;
+        if radius_world < 0.0 {
+            return error(
+                radius_at,
+                ParseErrorKind::NegativeRadius {
+                    radius: radius_world,
+                },
+            );
+        }
+        self.spheres.push(Sphere {
+            center_world,
+            radius_world,
+            material: self.current_material,
+        });
+        Ok(())
+    }
+}
