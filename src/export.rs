@@ -120,6 +120,63 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), ExportError> {
     Ok(())
 }
 
+/// The files one export writes, derived from a base path `dir/stem.ext`:
+/// `dir/stem_colour.ext`, `dir/stem_depth.ext` and (optionally) `dir/stem_both.ext`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ExportPaths {
+    /// Colour image.
+    pub colour: PathBuf,
+    /// Depth image.
+    pub depth: PathBuf,
+    /// Colour and depth side by side.
+    pub side_by_side: PathBuf,
+}
+
+impl ExportPaths {
+    /// Paths for base `path`; `format` applies when the path's extension names no format.
+    pub fn new(path: &Path, format: ImageFormat) -> Self {
+        let format = ImageFormat::from_path(path).unwrap_or(format);
+        let extension = match format {
+            ImageFormat::Tga => "tga",
+            ImageFormat::Png => "png",
+        };
+        let has_format = ImageFormat::from_path(path).is_ok();
+        let stem = if has_format {
+            path.file_stem()
+        } else {
+            path.file_name()
+        }
+        .map_or_else(|| "raytracer".into(), |s| s.to_string_lossy().into_owned());
+        let with_suffix =
+            |suffix: &str| path.with_file_name(format!("{stem}_{suffix}.{extension}"));
+        Self {
+            colour: with_suffix("colour"),
+            depth: with_suffix("depth"),
+            side_by_side: with_suffix("both"),
+        }
+    }
+}
+
+/// Writes the colour and depth images of `frame` (and, if asked, both side by side) to the
+/// paths of [`ExportPaths::new`]; returns the paths written. Each file is written atomically.
+pub fn write_frame_images(
+    frame: &crate::render::Frame,
+    depth_range: crate::depth::DepthRange,
+    base_path: &Path,
+    format: ImageFormat,
+    side_by_side: bool,
+) -> Result<Vec<PathBuf>, ExportError> {
+    let paths = ExportPaths::new(base_path, format);
+    write_image(&paths.colour, &frame.colour_image())?;
+    write_image(&paths.depth, &frame.depth_image(depth_range))?;
+    let mut written = vec![paths.colour, paths.depth];
+    if side_by_side {
+        write_image(&paths.side_by_side, &frame.side_by_side_image(depth_range))?;
+        written.push(paths.side_by_side);
+    }
+    Ok(written)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -127,6 +184,18 @@ mod tests {
 
     fn sample_image() -> RgbImage {
         RgbImage::from_fn(3, 2, |x, y| Rgb([x as u8 * 100, y as u8 * 200, 7]))
+    }
+
+    #[test]
+    fn export_paths_add_suffixes_and_keep_the_folder() {
+        let paths = ExportPaths::new(Path::new("shots/view.tga"), ImageFormat::Png);
+        assert_eq!(paths.colour, Path::new("shots/view_colour.tga"));
+        assert_eq!(paths.depth, Path::new("shots/view_depth.tga"));
+        assert_eq!(paths.side_by_side, Path::new("shots/view_both.tga"));
+        let paths = ExportPaths::new(Path::new("view"), ImageFormat::Png);
+        assert_eq!(paths.colour, Path::new("view_colour.png"));
+        let paths = ExportPaths::new(Path::new("view.v2"), ImageFormat::Tga);
+        assert_eq!(paths.depth, Path::new("view.v2_depth.tga"));
     }
 
     #[test]

@@ -21,16 +21,21 @@
 //! * [`render`]: [`render::View`], [`render::Frame`], the fast disc path and the oracle loop
 //! * [`depth`]: the t → grey mapping and 8-bit quantisation
 //! * [`export`]: TGA/PNG writers, atomic writes
+//! * [`explore`]: slider ranges and depth ranges derived from a scene
 //! * [`cli`]: command-line flags → typed request; [`headless`]: running that request
+//! * `app` (feature `gui`): the desktop viewer
 
 #![cfg_attr(
     not(test),
     deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
 )]
 
+#[cfg(feature = "gui")]
+pub mod app;
 pub mod camera;
 pub mod cli;
 pub mod depth;
+pub mod explore;
 pub mod export;
 pub mod headless;
 pub mod intersect;

@@ -26,11 +26,26 @@ fn main() -> ExitCode {
                 ExitCode::from(1)
             }
         },
-        Command::View(_request) => {
-            eprintln!(
-                "raytracer: the viewer is not built yet; give -output FILE and/or -depth DMIN DMAX FILE to render without a window"
-            );
-            ExitCode::from(2)
+        Command::View(request) => open_viewer(request),
+    }
+}
+
+#[cfg(feature = "gui")]
+fn open_viewer(request: raytracer::cli::ViewerRequest) -> ExitCode {
+    match raytracer::app::run(request) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => {
+            eprintln!("raytracer: cannot open the viewer window: {error}");
+            ExitCode::from(1)
         }
     }
+}
+
+#[cfg(not(feature = "gui"))]
+fn open_viewer(_request: raytracer::cli::ViewerRequest) -> ExitCode {
+    eprintln!(
+        "raytracer: this build has no viewer (built without feature 'gui'); \
+         give -output FILE and/or -depth DMIN DMAX FILE to render without a window"
+    );
+    ExitCode::from(2)
 }

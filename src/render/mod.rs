@@ -10,6 +10,7 @@ pub mod disc;
 mod frame;
 pub mod reference;
 mod view;
+pub mod worker;
 
 pub use frame::{Frame, NO_HIT};
 pub use view::{MAX_PIXELS, MAX_SIDE_PX, View, ViewError, check_image_size};

@@ -1,0 +1,38 @@
+//! Viewer latency: the work between a slider change and a frame ready to upload — rendering a
+//! 1024×1024 view and preparing both texture images (what the viewer's worker does) — for each
+//! course scene.
+
+use std::hint::black_box;
+use std::path::Path;
+use std::sync::Arc;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use raytracer::app::job::{ViewerJob, prepare_frame};
+use raytracer::depth::DepthRange;
+use raytracer::explore::initial_depth_range;
+use raytracer::render::View;
+use raytracer::scene::load_scene;
+
+fn viewer_frame_1024x1024(c: &mut Criterion) {
+    let mut group = c.benchmark_group("viewer_frame_1024x1024");
+    group.sample_size(30);
+    for number in 1..=7 {
+        let path =
+            Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/scene1_0{number}.txt"));
+        let scene = Arc::new(load_scene(&path).expect("course scene"));
+        let mut view = View::of_camera(&scene.camera, 1024, 1024, DepthRange::new(0.0, 1.0));
+        view.depth_range = initial_depth_range(&scene, &view);
+        let job = ViewerJob {
+            scene,
+            view,
+            scene_epoch: 0,
+        };
+        group.bench_function(format!("scene1_0{number}"), |b| {
+            b.iter(|| prepare_frame(black_box(&job)))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, viewer_frame_1024x1024);
+criterion_main!(benches);

@@ -1,0 +1,94 @@
+//! Native file dialogs (rfd) without blocking the UI: each dialog runs on its own thread and its
+//! answer arrives through a channel. Where no dialog can be shown (no desktop portal on the
+//! session bus and no zenity), [`dialog_unavailable_reason`] says so and the viewer's path fields
+//! do the job instead.
+
+use std::path::PathBuf;
+use std::sync::mpsc::{Receiver, TryRecvError, channel};
+
+/// Which dialog an answer belongs to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DialogKind {
+    /// "Open scene".
+    Open,
+    /// "Export to".
+    Export,
+}
+
+/// A dialog that is open (or whose answer has not been read yet).
+#[derive(Debug)]
+pub struct PendingDialog {
+    kind: DialogKind,
+    answer: Receiver<Option<PathBuf>>,
+}
+
+/// The dialog's outcome.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum DialogAnswer {
+    /// Not answered yet.
+    Waiting,
+    /// The user chose a file.
+    Chosen(DialogKind, PathBuf),
+    /// The user cancelled, or the dialog could not be shown.
+    Cancelled(DialogKind),
+}
+
+impl PendingDialog {
+    /// Checks for the answer without blocking.
+    pub fn poll(&self) -> DialogAnswer {
+        match self.answer.try_recv() {
+            Ok(Some(path)) => DialogAnswer::Chosen(self.kind, path),
+            Ok(None) | Err(TryRecvError::Disconnected) => DialogAnswer::Cancelled(self.kind),
+            Err(TryRecvError::Empty) => DialogAnswer::Waiting,
+        }
+    }
+}
+
+/// Why no native dialog can be shown here, or `None` if one probably can.
+pub fn dialog_unavailable_reason() -> Option<&'static str> {
+    let has_session_bus = std::env::var_os("DBUS_SESSION_BUS_ADDRESS").is_some();
+    let has_zenity = std::env::var_os("PATH").is_some_and(|paths| {
+        std::env::split_paths(&paths).any(|folder| folder.join("zenity").is_file())
+    });
+    if has_session_bus || has_zenity {
+        None
+    } else {
+        Some(
+            "no file dialog is available (no desktop portal on a session bus, no zenity): \
+             type a path in the field instead",
+        )
+    }
+}
+
+/// Opens a native dialog on its own thread.
+pub fn spawn_dialog(
+    kind: DialogKind,
+    ctx: &egui::Context,
+    suggested_name: &str,
+) -> std::io::Result<PendingDialog> {
+    let (sender, answer) = channel();
+    let ctx = ctx.clone();
+    let suggested_name = suggested_name.to_owned();
+    std::thread::Builder::new()
+        .name("file-dialog".into())
+        .spawn(move || {
+            let dialog = rfd::FileDialog::new();
+            let chosen = match kind {
+                DialogKind::Open => dialog
+                    .add_filter("6.837 scene", &["txt"])
+                    .add_filter("any file", &["*"])
+                    .set_title("Open scene")
+                    .pick_file(),
+                DialogKind::Export => dialog
+                    .add_filter("PNG", &["png"])
+                    .add_filter("TGA", &["tga"])
+                    .set_title("Export images")
+                    .set_file_name(suggested_name)
+                    .save_file(),
+            };
+            // The viewer may have closed meanwhile; then nobody needs the answer.
+            let _ = sender.send(chosen);
+            ctx.request_repaint();
+        })?;
+    Ok(PendingDialog { kind, answer })
+}

@@ -1,0 +1,346 @@
+//! The viewer's panels, each a `*_ui` function over plain state: the view controls, the file and
+//! export sections, the two images, and the status bar. No rendering math lives here.
+
+use egui::{Color32, Rect, RichText, Sense, TextureHandle, Ui, Vec2};
+
+use super::state::{ExportFormat, ExportSettings};
+use crate::explore::SliderRanges;
+use crate::render::{MAX_SIDE_PX, View};
+
+/// Space between the two images, in points.
+const IMAGE_GAP_POINTS: f32 = 8.0;
+
+/// Height reserved for the caption above each image, in points.
+const CAPTION_POINTS: f32 = 20.0;
+
+fn widened(range: &std::ops::RangeInclusive<f64>, value: f64) -> std::ops::RangeInclusive<f64> {
+    if value.is_finite() {
+        range.start().min(value)..=range.end().max(value)
+    } else {
+        range.clone()
+    }
+}
+
+fn slider(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::RangeInclusive<f64>) {
+    ui.add(
+        egui::Slider::new(value, range)
+            .text(label)
+            .clamping(egui::SliderClamping::Never)
+            .max_decimals(6),
+    );
+}
+
+/// Sliders (each with a typed-in value) for the camera centre, size, depth range, direction and
+/// up. Edits `view` in place. ("Reset view" is in the toolbar.)
+pub fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) {
+    ui.heading("View");
+    for (axis, name) in ["centre x", "centre y", "centre z"].into_iter().enumerate() {
+        let mut value = view.center_world[axis];
+        slider(ui, name, &mut value, ranges.center_world[axis].clone());
+        view.center_world[axis] = value;
+    }
+    ui.add(
+        egui::Slider::new(&mut view.size_world, ranges.size_world.clone())
+            .text("size")
+            .logarithmic(true)
+            .clamping(egui::SliderClamping::Never)
+            .max_decimals(6),
+    );
+    ui.separator();
+    ui.label("Depth range (t: white … black)");
+    slider(
+        ui,
+        "depth min",
+        &mut view.depth_range.min_t,
+        ranges.depth_t.clone(),
+    );
+    slider(
+        ui,
+        "depth max",
+        &mut view.depth_range.max_t,
+        ranges.depth_t.clone(),
+    );
+    ui.separator();
+    ui.collapsing("Direction and up", |ui| {
+        let unit = -1.0..=1.0;
+        for (axis, name) in ["direction x", "direction y", "direction z"]
+            .into_iter()
+            .enumerate()
+        {
+            let mut value = view.direction_world[axis];
+            let range = widened(&unit, value);
+            slider(ui, name, &mut value, range);
+            view.direction_world[axis] = value;
+        }
+        for (axis, name) in ["up x", "up y", "up z"].into_iter().enumerate() {
+            let mut value = view.up_world[axis];
+            let range = widened(&unit, value);
+            slider(ui, name, &mut value, range);
+            view.up_world[axis] = value;
+        }
+    });
+}
+
+/// What the file section asked for.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct FileRequests {
+    /// Open the scene at the typed path.
+    pub open_path: Option<String>,
+}
+
+/// A typed scene path and an "Open path" button (works without any file dialog).
+pub fn file_ui(ui: &mut Ui, path_text: &mut String) -> FileRequests {
+    let mut requests = FileRequests::default();
+    ui.heading("Scene file");
+    ui.horizontal(|ui| {
+        let label = ui.label("path");
+        let field = ui
+            .add(egui::TextEdit::singleline(path_text).desired_width(170.0))
+            .labelled_by(label.id);
+        let entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+        if ui.button("Open path").clicked() || entered {
+            requests.open_path = Some(path_text.clone());
+        }
+    });
+    requests
+}
+
+/// What the export section asked for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct ExportRequests {
+    /// Write to the typed path now.
+    pub export_to_path: bool,
+}
+
+/// Export options: size, format, side by side, and the path to write to.
+pub fn export_ui(
+    ui: &mut Ui,
+    settings: &mut ExportSettings,
+    dialog_note: Option<&str>,
+) -> ExportRequests {
+    let mut requests = ExportRequests::default();
+    ui.heading("Export");
+    ui.checkbox(&mut settings.displayed_size, "displayed size");
+    if !settings.displayed_size {
+        ui.horizontal(|ui| {
+            let label = ui.label("export size");
+            ui.add(egui::DragValue::new(&mut settings.size_px[0]).range(1..=MAX_SIDE_PX))
+                .labelled_by(label.id);
+            ui.label("×");
+            ui.add(egui::DragValue::new(&mut settings.size_px[1]).range(1..=MAX_SIDE_PX))
+                .labelled_by(label.id);
+        });
+    }
+    ui.horizontal(|ui| {
+        ui.radio_value(&mut settings.format, ExportFormat::Png, "PNG");
+        ui.radio_value(&mut settings.format, ExportFormat::Tga, "TGA");
+    });
+    ui.checkbox(&mut settings.side_by_side, "also side by side");
+    ui.horizontal(|ui| {
+        let label = ui.label("to");
+        ui.add(egui::TextEdit::singleline(&mut settings.path).desired_width(150.0))
+            .labelled_by(label.id);
+        if ui.button("Export to path").clicked() {
+            requests.export_to_path = true;
+        }
+    });
+    ui.label(
+        RichText::new("writes <name>_colour, <name>_depth (and <name>_both)")
+            .small()
+            .weak(),
+    );
+    if let Some(note) = dialog_note {
+        ui.label(
+            RichText::new(note)
+                .small()
+                .color(ui.visuals().warn_fg_color),
+        );
+    }
+    requests
+}
+
+/// The textures of the frame on screen and its size in pixels.
+pub struct ShownImages<'a> {
+    /// Colour texture.
+    pub colour: &'a TextureHandle,
+    /// Depth texture.
+    pub depth: &'a TextureHandle,
+    /// Frame size in physical pixels.
+    pub size_px: [u32; 2],
+    /// Depth range the depth texture was mapped with.
+    pub depth_range: crate::depth::DepthRange,
+}
+
+/// The image size (physical pixels) that fills half of the area `available_points` at
+/// `pixels_per_point`: the two images side by side, each below its caption.
+pub fn image_size_px(
+    available_points: Vec2,
+    pixels_per_point: f32,
+    max_texture_side: usize,
+) -> (u32, u32) {
+    let width_points = ((available_points.x - IMAGE_GAP_POINTS) * 0.5).max(1.0);
+    let height_points = (available_points.y - CAPTION_POINTS).max(1.0);
+    let max_side = (max_texture_side as f32).min(MAX_SIDE_PX as f32);
+    let to_px = |points: f32| (points * pixels_per_point).floor().clamp(1.0, max_side) as u32;
+    (to_px(width_points), to_px(height_points))
+}
+
+/// The colour and depth images side by side, each scaled to fit its half while keeping square
+/// pixels (at 1:1 physical pixels when the frame matches the area). Returns the image size in
+/// physical pixels the area asks for.
+pub fn images_ui(ui: &mut Ui, shown: Option<ShownImages<'_>>) -> (u32, u32) {
+    let pixels_per_point = ui.ctx().pixels_per_point();
+    let available = ui.available_size();
+    let max_texture_side = ui.ctx().input(|i| i.max_texture_side);
+    let wanted = image_size_px(available, pixels_per_point, max_texture_side);
+    let half = Vec2::new(
+        ((available.x - IMAGE_GAP_POINTS) * 0.5).max(1.0),
+        (available.y - CAPTION_POINTS).max(1.0),
+    );
+    ui.horizontal_top(|ui| {
+        ui.spacing_mut().item_spacing.x = IMAGE_GAP_POINTS;
+        let captions = match &shown {
+            Some(images) => [
+                "colour".to_owned(),
+                format!(
+                    "depth  (t {} white … {} black)",
+                    short_number(images.depth_range.min_t),
+                    short_number(images.depth_range.max_t)
+                ),
+            ],
+            None => ["colour".to_owned(), "depth".to_owned()],
+        };
+        for (index, caption) in captions.into_iter().enumerate() {
+            ui.vertical(|ui| {
+                ui.set_width(half.x);
+                ui.label(caption);
+                let (area, _) = ui.allocate_exact_size(half, Sense::hover());
+                let Some(images) = &shown else {
+                    ui.painter().rect_filled(area, 0.0, Color32::from_gray(30));
+                    return;
+                };
+                let texture = if index == 0 {
+                    images.colour
+                } else {
+                    images.depth
+                };
+                let frame_points = Vec2::new(images.size_px[0] as f32, images.size_px[1] as f32)
+                    / pixels_per_point;
+                let scale = (area.width() / frame_points.x).min(area.height() / frame_points.y);
+                let size = frame_points * scale;
+                // Snap to the physical pixel grid so a 1:1 frame is shown without resampling.
+                let min =
+                    ((area.min.to_vec2() * pixels_per_point).round() / pixels_per_point).to_pos2();
+                let rect = Rect::from_min_size(min, size);
+                ui.painter().image(
+                    texture.id(),
+                    rect,
+                    Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0)),
+                    Color32::WHITE,
+                );
+            });
+        }
+    });
+    wanted
+}
+
+/// A number shortened for captions (up to 6 significant digits).
+pub fn short_number(value: f64) -> String {
+    let text = format!("{value:.6}");
+    let trimmed = text.trim_end_matches('0').trim_end_matches('.');
+    if trimmed.len() > 12 {
+        format!("{value:.4e}")
+    } else {
+        trimmed.to_owned()
+    }
+}
+
+/// What the status bar shows.
+pub struct StatusLine<'a> {
+    /// Render time of the frame on screen, milliseconds.
+    pub render_ms: Option<f64>,
+    /// Size of the frame on screen.
+    pub size_px: Option<[u32; 2]>,
+    /// Spheres in the scene.
+    pub sphere_count: usize,
+    /// The scene's path or name.
+    pub scene_name: &'a str,
+    /// A render is in flight.
+    pub busy: bool,
+    /// Message of the last action (export result, view problem), with whether it is an error.
+    pub message: Option<(&'a str, bool)>,
+}
+
+/// The status bar: render time, image size, sphere count, scene path, last message.
+pub fn status_bar_ui(ui: &mut Ui, status: &StatusLine<'_>) {
+    ui.horizontal(|ui| {
+        match status.render_ms {
+            Some(ms) => ui.label(format!("render {ms:.1} ms")),
+            None => ui.label("render —"),
+        };
+        ui.separator();
+        if let Some([w, h]) = status.size_px {
+            ui.label(format!("{w}×{h} px"));
+            ui.separator();
+        }
+        let plural = if status.sphere_count == 1 { "" } else { "s" };
+        ui.label(format!("{} sphere{plural}", status.sphere_count));
+        ui.separator();
+        ui.label(status.scene_name);
+        if status.busy {
+            ui.separator();
+            ui.spinner();
+        }
+        if let Some((message, is_error)) = status.message {
+            ui.separator();
+            let colour = if is_error {
+                ui.visuals().error_fg_color
+            } else {
+                ui.visuals().text_color()
+            };
+            ui.label(RichText::new(message).color(colour));
+        }
+    });
+}
+
+/// A red banner with an error (e.g. a scene that failed to parse) and a dismiss button.
+/// Returns true when dismissed.
+pub fn error_banner_ui(ui: &mut Ui, message: &str) -> bool {
+    let mut dismissed = false;
+    ui.horizontal(|ui| {
+        ui.label(
+            RichText::new(message)
+                .color(ui.visuals().error_fg_color)
+                .monospace(),
+        );
+        if ui.button("Dismiss").clicked() {
+            dismissed = true;
+        }
+    });
+    dismissed
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn render_size_follows_physical_pixels() {
+        // 808 points wide: two images of (808 − 8) / 2 = 400 points; 620 − 20 = 600 points high.
+        let area = Vec2::new(808.0, 620.0);
+        assert_eq!(image_size_px(area, 1.0, 8192), (400, 600));
+        assert_eq!(image_size_px(area, 2.0, 8192), (800, 1200));
+        assert_eq!(image_size_px(area, 1.5, 8192), (600, 900));
+        // Never larger than a texture may be, never empty.
+        assert_eq!(image_size_px(area, 2.0, 1000), (800, 1000));
+        assert_eq!(image_size_px(Vec2::ZERO, 1.0, 8192), (1, 1));
+    }
+
+    #[test]
+    fn short_numbers_for_captions() {
+        assert_eq!(short_number(9.0), "9");
+        assert_eq!(short_number(14.5), "14.5");
+        assert_eq!(short_number(-2.0), "-2");
+        assert_eq!(short_number(1e12), "1.0000e12");
+    }
+}

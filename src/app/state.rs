@@ -1,0 +1,152 @@
+//! The viewer's state: the loaded scene and where it came from, the settings that survive a
+//! restart (eframe storage), and the view the controls edit.
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use crate::explore::{SliderRanges, initial_depth_range};
+use crate::render::View;
+use crate::scene::{LoadError, Scene, load_scene, parse_scene};
+use crate::{DEFAULT_SCENE_NAME, DEFAULT_SCENE_TEXT};
+
+/// Image formats offered by the export panel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum ExportFormat {
+    /// `.png`
+    Png,
+    /// `.tga`
+    Tga,
+}
+
+impl ExportFormat {
+    /// The file extension, without the dot.
+    pub fn extension(self) -> &'static str {
+        match self {
+            Self::Png => "png",
+            Self::Tga => "tga",
+        }
+    }
+}
+
+/// Export options, remembered between runs.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct ExportSettings {
+    /// Where to write: `<stem>_colour.<ext>`, `<stem>_depth.<ext>`, `<stem>_both.<ext>`.
+    pub path: String,
+    /// Image format.
+    pub format: ExportFormat,
+    /// Also write colour and depth side by side in one picture.
+    pub side_by_side: bool,
+    /// Export at the displayed size (`true`) or at `size_px`.
+    pub displayed_size: bool,
+    /// Export size when not the displayed size.
+    pub size_px: [u32; 2],
+}
+
+impl Default for ExportSettings {
+    fn default() -> Self {
+        Self {
+            path: "raytracer.png".into(),
+            format: ExportFormat::Png,
+            side_by_side: true,
+            displayed_size: true,
+            size_px: [1024, 1024],
+        }
+    }
+}
+
+/// Everything persisted in eframe's storage (window size is persisted by eframe itself).
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(default)]
+pub struct Settings {
+    /// The last scene file opened successfully.
+    pub last_scene: Option<PathBuf>,
+    /// Whether the controls panel is open.
+    pub show_controls: bool,
+    /// Export options.
+    pub export: ExportSettings,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Self {
+            last_scene: None,
+            show_controls: true,
+            export: ExportSettings::default(),
+        }
+    }
+}
+
+/// A scene on screen, with its origin and what the controls derive from it.
+#[derive(Debug, Clone)]
+pub struct LoadedScene {
+    /// The scene.
+    pub scene: Arc<Scene>,
+    /// The file it came from; `None` for the embedded default scene.
+    pub path: Option<PathBuf>,
+    /// The file's own camera at the initial depth range ("reset view" returns here).
+    pub file_view: View,
+}
+
+impl LoadedScene {
+    /// Wraps a parsed scene; `size_px` is the image size to start with.
+    pub fn new(scene: Scene, path: Option<PathBuf>, size_px: (u32, u32)) -> Self {
+        let mut file_view = View::of_camera(
+            &scene.camera,
+            size_px.0,
+            size_px.1,
+            crate::depth::DepthRange::new(0.0, 1.0),
+        );
+        file_view.depth_range = initial_depth_range(&scene, &file_view);
+        Self {
+            scene: Arc::new(scene),
+            path,
+            file_view,
+        }
+    }
+
+    /// The embedded default scene.
+    pub fn default_scene(size_px: (u32, u32)) -> Self {
+        match parse_scene(DEFAULT_SCENE_TEXT) {
+            Ok(scene) => Self::new(scene, None, size_px),
+            // The embedded scene is parsed by a test; this arm only guards against a bad build.
+            Err(_) => Self::new(empty_scene(), None, size_px),
+        }
+    }
+
+    /// Reads a scene file.
+    pub fn load(path: &Path, size_px: (u32, u32)) -> Result<Self, LoadError> {
+        Ok(Self::new(
+            load_scene(path)?,
+            Some(path.to_path_buf()),
+            size_px,
+        ))
+    }
+
+    /// The name shown in the status bar.
+    pub fn name(&self) -> String {
+        self.path.as_ref().map_or_else(
+            || DEFAULT_SCENE_NAME.to_owned(),
+            |p| p.display().to_string(),
+        )
+    }
+
+    /// Slider ranges for this scene and `view`.
+    pub fn ranges(&self, view: &View) -> SliderRanges {
+        SliderRanges::new(&self.scene, view)
+    }
+}
+
+fn empty_scene() -> Scene {
+    Scene {
+        camera: crate::scene::OrthographicCamera {
+            center_world: glam::DVec3::new(0.0, 0.0, 10.0),
+            direction_world: glam::DVec3::NEG_Z,
+            up_world: glam::DVec3::Y,
+            size_world: 5.0,
+        },
+        background: crate::scene::DEFAULT_BACKGROUND,
+        materials: Vec::new(),
+        spheres: Vec::new(),
+    }
+}

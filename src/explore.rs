@@ -1,0 +1,159 @@
+//! What an interactive viewer derives from a scene and a view, as plain math: the ranges its
+//! sliders span (from the scene's bounds along each axis and along the view direction, never
+//! hard-coded) and the depth range that brackets what the view can see.
+
+use std::ops::RangeInclusive;
+
+use glam::DVec3;
+
+use crate::camera::CameraBasis;
+use crate::depth::DepthRange;
+use crate::render::View;
+use crate::scene::{Bounds, Scene};
+
+/// The box the viewer explores: the spheres' bounds, or a unit box around the camera centre for
+/// a scene without spheres. Never empty (a single point is grown to a unit box).
+pub fn scene_extent(scene: &Scene) -> Bounds {
+    let bounds = scene.bounds().unwrap_or(Bounds {
+        min_world: scene.camera.center_world,
+        max_world: scene.camera.center_world,
+    });
+    let diagonal = bounds.diagonal();
+    if diagonal > 0.0 && diagonal.is_finite() {
+        return bounds;
+    }
+    let center = bounds.center();
+    Bounds {
+        min_world: center - DVec3::splat(0.5),
+        max_world: center + DVec3::splat(0.5),
+    }
+}
+
+/// The ranges of the viewer's sliders for one scene and view.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SliderRanges {
+    /// Camera centre x, y and z: the scene's extent along the axis, widened by the scene's
+    /// diagonal on both sides (and by the current value, so it is never clamped).
+    pub center_world: [RangeInclusive<f64>; 3],
+    /// Screen size (logarithmic): from 1/1000 of the diagonal to 10 diagonals.
+    pub size_world: RangeInclusive<f64>,
+    /// Depth min and max: t of the scene's bounding sphere along the view direction, widened by
+    /// half its radius on both sides.
+    pub depth_t: RangeInclusive<f64>,
+}
+
+fn widen_to(range: RangeInclusive<f64>, value: f64) -> RangeInclusive<f64> {
+    if value.is_finite() {
+        range.start().min(value)..=range.end().max(value)
+    } else {
+        range
+    }
+}
+
+impl SliderRanges {
+    /// Ranges for `scene` seen through `view` (the view's values always lie inside).
+    pub fn new(scene: &Scene, view: &View) -> Self {
+        let extent = scene_extent(scene);
+        let diagonal = extent.diagonal();
+        let center_world = [0, 1, 2].map(|axis| {
+            let range = extent.min_world[axis] - diagonal..=extent.max_world[axis] + diagonal;
+            widen_to(range, view.center_world[axis])
+        });
+        let size_world = widen_to(1e-3 * diagonal..=10.0 * diagonal, view.size_world);
+        let radius = 0.5 * diagonal;
+        let depth_t = match CameraBasis::new(view.direction_world, view.up_world) {
+            Ok(basis) => {
+                let center_t = (extent.center() - view.center_world).dot(basis.direction);
+                center_t - 1.5 * radius..=center_t + 1.5 * radius
+            }
+            Err(_) => -diagonal..=diagonal,
+        };
+        let depth_t = widen_to(
+            widen_to(depth_t, view.depth_range.min_t),
+            view.depth_range.max_t,
+        );
+        Self {
+            center_world,
+            size_world,
+            depth_t,
+        }
+    }
+}
+
+/// The t range that brackets every visible surface point: from the nearest sphere front
+/// (`t_center − r`) to the farthest silhouette (`t_center`, where the front surface meets the
+/// outline). For scene1_01 this is the course's own `-depth 9 10`. `None` without spheres or
+/// for an unusable view.
+pub fn visible_depth_range(scene: &Scene, view: &View) -> Option<DepthRange> {
+    let basis = CameraBasis::new(view.direction_world, view.up_world).ok()?;
+    let mut range: Option<DepthRange> = None;
+    for sphere in &scene.spheres {
+        let t_center = (sphere.center_world - view.center_world).dot(basis.direction);
+        let near = t_center - sphere.radius_world;
+        range = Some(match range {
+            None => DepthRange::new(near, t_center),
+            Some(r) => DepthRange::new(r.min_t.min(near), r.max_t.max(t_center)),
+        });
+    }
+    range.filter(|r| r.min_t.is_finite() && r.max_t.is_finite())
+}
+
+/// The depth range a viewer starts with: [`visible_depth_range`], or `[0, 1]` without spheres.
+pub fn initial_depth_range(scene: &Scene, view: &View) -> DepthRange {
+    visible_depth_range(scene, view).unwrap_or(DepthRange::new(0.0, 1.0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::parse_scene;
+
+    fn course_scene_1_01() -> Scene {
+        parse_scene(
+            "OrthographicCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 size 5 }
+             Materials { numMaterials 1 PhongMaterial { diffuseColor 1 0 0 } }
+             Group { numObjects 1 MaterialIndex 0 Sphere { center 0 0 0 radius 1 } }",
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn visible_range_of_scene1_01_is_the_course_range() {
+        let scene = course_scene_1_01();
+        let view = View::of_camera(&scene.camera, 10, 10, DepthRange::new(0.0, 1.0));
+        assert_eq!(
+            visible_depth_range(&scene, &view),
+            Some(DepthRange::new(9.0, 10.0))
+        );
+    }
+
+    #[test]
+    fn ranges_come_from_the_scene_and_contain_the_view() {
+        let scene = course_scene_1_01();
+        let view = View::of_camera(&scene.camera, 10, 10, DepthRange::new(9.0, 10.0));
+        let ranges = SliderRanges::new(&scene, &view);
+        let diagonal = 2.0 * 3f64.sqrt();
+        assert_eq!(ranges.center_world[0], -1.0 - diagonal..=1.0 + diagonal);
+        // The camera's z = 10 lies outside the scene's box: the range widens to contain it.
+        assert_eq!(*ranges.center_world[2].end(), 10.0);
+        assert!(ranges.size_world.contains(&5.0));
+        assert!(ranges.depth_t.contains(&9.0) && ranges.depth_t.contains(&10.0));
+        // Depth slider centred on the scene's centre t (10).
+        assert!((ranges.depth_t.start() + ranges.depth_t.end() - 20.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn empty_scene_gets_a_unit_box_around_the_camera() {
+        let scene =
+            parse_scene("OrthographicCamera { center 1 2 3 direction 0 0 -1 up 0 1 0 size 5 }")
+                .unwrap();
+        let extent = scene_extent(&scene);
+        assert_eq!(extent.center(), DVec3::new(1.0, 2.0, 3.0));
+        assert!(extent.diagonal() > 0.0);
+        let view = View::of_camera(&scene.camera, 10, 10, DepthRange::new(0.0, 1.0));
+        assert_eq!(
+            initial_depth_range(&scene, &view),
+            DepthRange::new(0.0, 1.0)
+        );
+    }
+}

@@ -1,0 +1,159 @@
+//! The real `raytracer` binary in a temporary folder: exit statuses (0 ok, 1 scene or file
+//! error, 2 usage), one-line messages, and nothing written when a run fails.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn scene_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(name)
+}
+
+fn run(folder: &Path, arguments: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_raytracer"))
+        .current_dir(folder)
+        .args(arguments)
+        .output()
+        .unwrap()
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+fn files_in(folder: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(folder)
+        .unwrap()
+        .map(|entry| entry.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn renders_and_exits_zero() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_02.txt");
+    let output = run(
+        folder.path(),
+        &[
+            "-input",
+            scene.to_str().unwrap(),
+            "-size",
+            "64",
+            "48",
+            "-output",
+            "c.png",
+            "-depth",
+            "8",
+            "12",
+            "d.tga",
+        ],
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(files_in(folder.path()), ["c.png", "d.tga"]);
+    let colour = image::open(folder.path().join("c.png")).unwrap();
+    assert_eq!((colour.width(), colour.height()), (64, 48));
+}
+
+#[test]
+fn either_output_alone_is_enough() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_01.txt");
+    let output = run(
+        folder.path(),
+        &[
+            "-input",
+            scene.to_str().unwrap(),
+            "-depth",
+            "9",
+            "10",
+            "d.png",
+        ],
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(files_in(folder.path()), ["d.png"]);
+}
+
+#[test]
+fn usage_errors_exit_two_with_one_line_and_write_nothing() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_01.txt");
+    let scene = scene.to_str().unwrap();
+    let cases: &[&[&str]] = &[
+        &["-input", scene, "-size", "200", "-output", "c.png"],
+        &["-input", scene, "-size", "200", "two", "-output", "c.png"],
+        &["-input", scene, "-output", "c.bmp"],
+        &["-input", scene, "-output", "c.png", "-bogus"],
+        &["-input", scene, "-depth", "9", "x", "d.png"],
+        &["-output", "c.png"],
+    ];
+    for arguments in cases {
+        let output = run(folder.path(), arguments);
+        assert_eq!(
+            output.status.code(),
+            Some(2),
+            "{arguments:?}: {}",
+            stderr(&output)
+        );
+        let message = stderr(&output);
+        assert_eq!(message.lines().count(), 1, "{arguments:?}: {message}");
+        assert!(message.starts_with("raytracer: "), "{message}");
+    }
+    assert!(files_in(folder.path()).is_empty());
+}
+
+#[test]
+fn scene_and_file_errors_exit_one() {
+    let folder = tempfile::tempdir().unwrap();
+    std::fs::write(
+        folder.path().join("broken.txt"),
+        "OrthographicCamera {\n center 0 0 10\n direction 0 0 -1\n up 0 1 0\n}\n",
+    )
+    .unwrap();
+    let output = run(folder.path(), &["-input", "broken.txt", "-output", "c.png"]);
+    assert_eq!(output.status.code(), Some(1));
+    assert_eq!(
+        stderr(&output),
+        "raytracer: broken.txt:5:1: expected 'size', found '}'\n"
+    );
+
+    let output = run(
+        folder.path(),
+        &["-input", "missing.txt", "-output", "c.png"],
+    );
+    assert_eq!(output.status.code(), Some(1));
+    assert!(
+        stderr(&output).starts_with("raytracer: missing.txt: "),
+        "{}",
+        stderr(&output)
+    );
+
+    let scene = scene_path("scene1_01.txt");
+    let output = run(
+        folder.path(),
+        &[
+            "-input",
+            scene.to_str().unwrap(),
+            "-output",
+            "no/such/dir/c.png",
+        ],
+    );
+    assert_eq!(output.status.code(), Some(1));
+    assert!(
+        stderr(&output).contains("no/such/dir/c.png: cannot write"),
+        "{}",
+        stderr(&output)
+    );
+    assert_eq!(files_in(folder.path()), ["broken.txt"]);
+}
+
+#[test]
+fn help_prints_usage_and_exits_zero() {
+    let folder = tempfile::tempdir().unwrap();
+    let output = run(folder.path(), &["-help"]);
+    assert!(output.status.success());
+    let text = String::from_utf8_lossy(&output.stdout);
+    assert!(text.contains("-depth DMIN DMAX FILE"), "{text}");
+}

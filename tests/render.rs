@@ -1,0 +1,332 @@
+//! The fast disc renderer against the oracle loop, and the camera/intersection conventions of
+//! SPEC.md seen through whole frames: non-square crops, ties, cameras inside spheres, spheres
+//! behind the camera centre, determinism.
+
+use std::path::Path;
+
+use glam::{DVec3, Vec3};
+use raytracer::depth::DepthRange;
+use raytracer::render::reference::render_reference;
+use raytracer::render::{Frame, NO_HIT, View, render};
+use raytracer::scene::{Material, OrthographicCamera, Scene, Sphere, load_scene};
+
+fn course_scene(number: u32) -> Scene {
+    load_scene(&Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/scene1_0{number}.txt")))
+        .unwrap()
+}
+
+fn view_of(scene: &Scene, width_px: u32, height_px: u32) -> View {
+    View::of_camera(
+        &scene.camera,
+        width_px,
+        height_px,
+        DepthRange::new(0.0, 1.0),
+    )
+}
+
+/// A small deterministic generator (SplitMix64), so the random scenes are the same every run.
+struct SplitMix(u64);
+
+impl SplitMix {
+    fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [lo, hi).
+    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+fn random_scene(seed: u64, sphere_count: usize) -> Scene {
+    let mut rng = SplitMix(seed);
+    let materials = (0..4)
+        .map(|i| Material {
+            diffuse_colour: Vec3::new(i as f32 / 4.0, 0.5, 1.0 - i as f32 / 4.0),
+        })
+        .collect();
+    let spheres = (0..sphere_count)
+        .map(|i| Sphere {
+            center_world: DVec3::new(
+                rng.uniform(-3.0, 3.0),
+                rng.uniform(-3.0, 3.0),
+                rng.uniform(-3.0, 3.0),
+            ),
+            radius_world: rng.uniform(0.05, 1.0),
+            material: Some((i % 4) as u32),
+        })
+        .collect();
+    let direction = DVec3::new(
+        rng.uniform(-1.0, 1.0),
+        rng.uniform(-1.0, 1.0),
+        rng.uniform(-1.0, -0.2),
+    );
+    Scene {
+        camera: OrthographicCamera {
+            center_world: -8.0 * direction,
+            direction_world: direction,
+            up_world: DVec3::new(rng.uniform(-0.5, 0.5), 1.0, rng.uniform(-0.5, 0.5)),
+            size_world: 8.0,
+        },
+        background: Vec3::splat(0.25),
+        materials,
+        spheres,
+    }
+}
+
+/// Asserts that the fast frame and the oracle frame agree: the same sphere wherever the pixel is
+/// not within rounding of a silhouette or a tie, and t within `1e-12 · scale` where they agree.
+fn assert_frames_agree(scene: &Scene, view: &View, fast: &Frame, oracle: &Frame) -> usize {
+    let basis = view.validate().unwrap();
+    let grid = view.grid();
+    let scale = scene.bounds().map_or(1.0, |b| b.diagonal()) + view.size_world;
+    let mut silhouette_pixels = 0;
+    for y_up in 0..view.height_px {
+        for x in 0..view.width_px {
+            let index = fast.index(x, y_up);
+            let (u, v) = (
+                grid.u_of_column(f64::from(x)),
+                grid.v_of_row(f64::from(y_up)),
+            );
+            if fast.sphere[index] == oracle.sphere[index] {
+                let (a, b) = (fast.t[index], oracle.t[index]);
+                assert!(
+                    a == b || (a - b).abs() <= 1e-12 * scale,
+                    "pixel ({x}, {y_up}): t {a} vs {b}"
+                );
+                continue;
+            }
+            // Disagreement is allowed only on a silhouette (|d² − r²| at rounding level) or a tie.
+            let near_silhouette = [fast.sphere[index], oracle.sphere[index]]
+                .into_iter()
+                .filter(|&s| s != NO_HIT)
+                .any(|s| {
+                    let sphere = &scene.spheres[s as usize];
+                    let c = basis.to_camera(sphere.center_world - view.center_world);
+                    let d2 = (u - c.x).powi(2) + (v - c.y).powi(2);
+                    let r2 = sphere.radius_world.powi(2);
+                    (d2 - r2).abs() <= 1e-12 * scale * scale
+                });
+            let tie = (fast.t[index] - oracle.t[index]).abs() <= 1e-12 * scale;
+            assert!(
+                near_silhouette || tie,
+                "pixel ({x}, {y_up}): sphere {} vs {}",
+                fast.sphere[index],
+                oracle.sphere[index]
+            );
+            silhouette_pixels += 1;
+        }
+    }
+    silhouette_pixels
+}
+
+#[test]
+fn fast_path_matches_the_oracle_on_the_course_scenes() {
+    for number in 1..=7 {
+        let scene = course_scene(number);
+        for (width, height) in [(200, 200), (123, 77), (64, 301)] {
+            let view = view_of(&scene, width, height);
+            let fast = render(&scene, &view).unwrap();
+            let oracle = render_reference(&scene, &view).unwrap();
+            assert_eq!(
+                assert_frames_agree(&scene, &view, &fast, &oracle),
+                0,
+                "scene1_0{number} {width}×{height}"
+            );
+            assert_eq!(fast.colour, oracle.colour, "scene1_0{number}");
+        }
+    }
+}
+
+#[test]
+fn fast_path_matches_the_oracle_on_random_scenes() {
+    let mut silhouette_pixels = 0;
+    for seed in 0..40 {
+        let scene = random_scene(seed, 1 + (seed as usize * 7) % 60);
+        let view = view_of(&scene, 96, 80);
+        let fast = render(&scene, &view).unwrap();
+        let oracle = render_reference(&scene, &view).unwrap();
+        silhouette_pixels += assert_frames_agree(&scene, &view, &fast, &oracle);
+    }
+    // Rounding may flip a pixel that sits on a silhouette, but that must stay rare.
+    assert!(
+        silhouette_pixels <= 5,
+        "{silhouette_pixels} silhouette pixels differ"
+    );
+}
+
+#[test]
+fn non_square_images_show_the_middle_of_the_square_screen() {
+    let scene = course_scene(2);
+    let square = render(&scene, &view_of(&scene, 200, 200)).unwrap();
+    let wide = render(&scene, &view_of(&scene, 200, 100)).unwrap();
+    let tall = render(&scene, &view_of(&scene, 100, 200)).unwrap();
+    for y_up in 0..100 {
+        for x in 0..200 {
+            let wide_index = wide.index(x, y_up);
+            let square_index = square.index(x, y_up + 50);
+            assert_eq!(wide.sphere[wide_index], square.sphere[square_index]);
+            assert_eq!(wide.t[wide_index], square.t[square_index]);
+            let tall_index = tall.index(y_up, x);
+            let square_index = square.index(y_up + 50, x);
+            assert_eq!(tall.sphere[tall_index], square.sphere[square_index]);
+            assert_eq!(tall.t[tall_index], square.t[square_index]);
+        }
+    }
+    // The crop really is the middle: the red sphere (index 0) sits at the screen's centre.
+    assert_eq!(wide.sphere[wide.index(100, 50)], 0);
+    assert_eq!(tall.sphere[tall.index(50, 100)], 0);
+}
+
+fn one_sphere_scene(center: [f64; 3], spheres: &[([f64; 3], f64, u32)]) -> Scene {
+    Scene {
+        camera: OrthographicCamera {
+            center_world: DVec3::from(center),
+            direction_world: DVec3::NEG_Z,
+            up_world: DVec3::Y,
+            size_world: 4.0,
+        },
+        background: Vec3::ZERO,
+        materials: vec![
+            Material {
+                diffuse_colour: Vec3::X,
+            },
+            Material {
+                diffuse_colour: Vec3::Y,
+            },
+        ],
+        spheres: spheres
+            .iter()
+            .map(|&(center, radius, material)| Sphere {
+                center_world: DVec3::from(center),
+                radius_world: radius,
+                material: Some(material),
+            })
+            .collect(),
+    }
+}
+
+#[test]
+fn ties_go_to_the_sphere_first_in_the_file() {
+    for order in [[0, 1], [1, 0]] {
+        let scene = one_sphere_scene(
+            [0.0, 0.0, 10.0],
+            &[
+                ([0.0, 0.0, 0.0], 1.0, order[0]),
+                ([0.0, 0.0, 0.0], 1.0, order[1]),
+            ],
+        );
+        let view = view_of(&scene, 20, 20);
+        for frame in [
+            render(&scene, &view).unwrap(),
+            render_reference(&scene, &view).unwrap(),
+        ] {
+            let centre = frame.index(10, 10);
+            assert_eq!(frame.sphere[centre], 0);
+            let expected = scene.materials[order[0] as usize].diffuse_colour;
+            assert_eq!(frame.colour[centre], expected);
+        }
+    }
+}
+
+#[test]
+fn camera_inside_a_sphere_and_spheres_behind_it_are_seen() {
+    // Camera centre inside sphere 0; sphere 1 entirely behind the screen plane.
+    let scene = one_sphere_scene(
+        [0.0, 0.0, 0.0],
+        &[([-1.0, 0.0, 0.0], 1.5, 0), ([1.2, 0.0, 5.0], 0.5, 1)],
+    );
+    let view = view_of(&scene, 40, 40);
+    let frame = render(&scene, &view).unwrap();
+    let grid = view.grid();
+    let column_of = |u: f64| ((u / grid.pixel_size_world) + 19.5).round() as u32;
+    let inside = frame.index(column_of(-1.0), 20);
+    assert_eq!(frame.sphere[inside], 0);
+    assert!(
+        frame.t[inside] < 0.0,
+        "front surface behind the camera centre: negative t"
+    );
+    let behind = frame.index(column_of(1.2), 20);
+    assert_eq!(frame.sphere[behind], 1);
+    assert!(frame.t[behind] < -4.0);
+}
+
+#[test]
+fn tangent_pixel_hits_and_the_next_one_misses() {
+    // 32 px over size 4: pixel centres at odd multiples of 0.0625, all exact in binary. The
+    // sphere's centre sits on row 16's centre line and its radius reaches exactly the centres of
+    // columns 11 and 20: the discriminant there is exactly 0.
+    let scene = one_sphere_scene([0.0, 0.0, 10.0], &[([0.0, 0.0625, 0.0], 0.5625, 0)]);
+    let view = view_of(&scene, 32, 32);
+    for frame in [
+        render(&scene, &view).unwrap(),
+        render_reference(&scene, &view).unwrap(),
+    ] {
+        for x in [11, 20] {
+            let tangent = frame.index(x, 16);
+            assert_eq!(frame.sphere[tangent], 0, "column {x}");
+            assert_eq!(frame.t[tangent], 10.0);
+        }
+        assert_eq!(frame.sphere[frame.index(10, 16)], NO_HIT);
+        assert_eq!(frame.sphere[frame.index(21, 16)], NO_HIT);
+    }
+}
+
+#[test]
+fn rendering_is_deterministic_across_thread_counts() {
+    let scene = random_scene(7, 200);
+    let view = view_of(&scene, 257, 129);
+    let with_threads = |threads| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| render(&scene, &view).unwrap())
+    };
+    let one = with_threads(1);
+    assert_eq!(one, with_threads(2));
+    assert_eq!(one, with_threads(5));
+}
+
+#[test]
+fn invalid_views_are_errors_not_panics() {
+    let scene = course_scene(1);
+    let good = view_of(&scene, 10, 10);
+    let cases = [
+        View {
+            size_world: 0.0,
+            ..good
+        },
+        View {
+            size_world: f64::NAN,
+            ..good
+        },
+        View {
+            width_px: 0,
+            ..good
+        },
+        View {
+            direction_world: DVec3::ZERO,
+            ..good
+        },
+        View {
+            up_world: DVec3::new(0.0, 0.0, 2.0),
+            ..good
+        },
+        View {
+            center_world: DVec3::new(f64::INFINITY, 0.0, 0.0),
+            ..good
+        },
+        View {
+            depth_range: DepthRange::new(f64::NAN, 1.0),
+            ..good
+        },
+    ];
+    for view in cases {
+        assert!(render(&scene, &view).is_err(), "{view:?}");
+    }
+}

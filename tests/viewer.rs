@@ -1,0 +1,295 @@
+//! The real viewer driven headlessly with egui_kittest: sliders change the `View` and, once the
+//! worker finishes, the frame on screen; export writes the expected files; a broken scene shows
+//! its error and keeps the previous frame; without a file the default scene is shown.
+#![cfg(feature = "gui")]
+
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use egui::accesskit::Role;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use raytracer::app::ViewerApp;
+use raytracer::cli::ViewerRequest;
+use raytracer::render::{Frame, View, render};
+
+fn scene_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(name)
+}
+
+fn viewer(input: Option<PathBuf>) -> Harness<'static, ViewerApp> {
+    let mut harness = Harness::builder()
+        .with_size(egui::vec2(1000.0, 700.0))
+        .build_eframe(move |cc| {
+            ViewerApp::new(
+                cc,
+                ViewerRequest {
+                    input,
+                    size_px: None,
+                },
+            )
+        });
+    settle(&mut harness);
+    harness
+}
+
+/// Steps the UI until the frame on screen is the current view and no export runs.
+fn settle(harness: &mut Harness<'static, ViewerApp>) {
+    let deadline = Instant::now() + Duration::from_secs(60);
+    loop {
+        harness.step();
+        let app = harness.state();
+        if app.frame_is_current() && !app.export_running() {
+            return;
+        }
+        assert!(Instant::now() < deadline, "the viewer did not settle");
+        app.wait_for_worker(Duration::from_millis(20));
+        std::thread::sleep(Duration::from_millis(2));
+    }
+}
+
+/// Clicks the button labelled `label`, scrolling the side panel to it first.
+fn click(harness: &mut Harness<'static, ViewerApp>, label: &str) {
+    harness
+        .get_by_role_and_label(Role::Button, label)
+        .scroll_to_me();
+    // The accessibility tree describes the previous pass: step so it has the scrolled layout.
+    harness.run_steps(2);
+    harness.get_by_role_and_label(Role::Button, label).click();
+}
+
+/// The frame on screen and its view, cloned.
+fn shown(harness: &Harness<'static, ViewerApp>) -> (Frame, View) {
+    let (frame, view) = harness.state().shown_frame().expect("a frame on screen");
+    (frame.clone(), *view)
+}
+
+/// The frame on screen must be exactly what the library renders for the current view.
+fn assert_shows_current_view(harness: &Harness<'static, ViewerApp>) {
+    let app = harness.state();
+    let (frame, view) = shown(harness);
+    assert_eq!(view, *app.view());
+    let expected = render(&app.loaded_scene().scene, &view).unwrap();
+    assert_eq!(frame, expected);
+}
+
+#[test]
+fn without_a_file_the_default_scene_is_shown() {
+    let harness = viewer(None);
+    let app = harness.state();
+    assert_eq!(app.loaded_scene().path, None);
+    assert_eq!(
+        app.loaded_scene().scene.spheres.len(),
+        raytracer::scene::parse_scene(raytracer::DEFAULT_SCENE_TEXT)
+            .unwrap()
+            .spheres
+            .len()
+    );
+    assert_shows_current_view(&harness);
+    let (frame, view) = shown(&harness);
+    // The render fills the image area: two images side by side, wider than tall here.
+    assert!(view.width_px > 300 && view.height_px > 300, "{view:?}");
+    let hit_pixels = frame
+        .sphere
+        .iter()
+        .filter(|&&s| s != raytracer::render::NO_HIT)
+        .count();
+    assert!(
+        hit_pixels > frame.pixel_count() / 20,
+        "spheres are on screen"
+    );
+}
+
+#[test]
+fn every_slider_changes_the_view_and_the_frame() {
+    let mut harness = viewer(Some(scene_path("scene1_02.txt")));
+    // Open the collapsed direction/up section.
+    harness.get_by_label("Direction and up").click();
+    settle(&mut harness);
+
+    type Field = fn(&View) -> f64;
+    let sliders: [(&str, f64, Field); 12] = [
+        ("centre x", 0.7, |v| v.center_world.x),
+        ("centre y", -0.4, |v| v.center_world.y),
+        ("centre z", 12.0, |v| v.center_world.z),
+        ("size", 2.5, |v| v.size_world),
+        ("depth min", 9.5, |v| v.depth_range.min_t),
+        ("depth max", 10.5, |v| v.depth_range.max_t),
+        // Small turns keep the spheres in view (the camera is 12 units away).
+        ("direction x", 0.05, |v| v.direction_world.x),
+        ("direction y", -0.04, |v| v.direction_world.y),
+        ("direction z", -0.8, |v| v.direction_world.z),
+        ("up x", 0.5, |v| v.up_world.x),
+        ("up y", 0.8, |v| v.up_world.y),
+        ("up z", 0.25, |v| v.up_world.z),
+    ];
+    for (label, value, field) in sliders {
+        let (before_frame, before_view) = shown(&harness);
+        let slider = harness.get_by_role_and_label(Role::Slider, label);
+        slider.scroll_to_me();
+        slider.set_value_accesskit(value);
+        harness.step();
+        assert_eq!(
+            field(harness.state().view()),
+            value,
+            "{label}: the view follows the slider"
+        );
+        settle(&mut harness);
+        assert_shows_current_view(&harness);
+        let (after_frame, after_view) = shown(&harness);
+        assert_eq!(field(&after_view), value, "{label}");
+        // Depth sliders change the depth image only; every other slider moves the picture.
+        let changed = if label.starts_with("depth") {
+            before_frame.depth_image(before_view.depth_range)
+                != after_frame.depth_image(after_view.depth_range)
+        } else {
+            before_frame != after_frame
+        };
+        assert!(
+            changed,
+            "{label}: the frame on screen changed: {before_view:?} → {after_view:?}"
+        );
+        let hits = after_frame
+            .sphere
+            .iter()
+            .filter(|&&s| s != raytracer::render::NO_HIT)
+            .count();
+        assert!(hits > 1000, "{label}: spheres stay in view ({hits} pixels)");
+    }
+
+    click(&mut harness, "Reset view");
+    settle(&mut harness);
+    let app = harness.state();
+    let file_camera = &app.loaded_scene().scene.camera;
+    assert_eq!(app.view().center_world, file_camera.center_world);
+    assert_eq!(app.view().size_world, file_camera.size_world);
+}
+
+#[test]
+fn typed_values_go_beyond_the_slider_range() {
+    let mut harness = viewer(Some(scene_path("scene1_01.txt")));
+    harness
+        .get_by_role_and_label(Role::Slider, "size")
+        .set_value_accesskit(1e6);
+    harness.step();
+    assert_eq!(harness.state().view().size_world, 1e6);
+    settle(&mut harness);
+    assert_shows_current_view(&harness);
+}
+
+#[test]
+fn export_writes_colour_and_depth_with_the_expected_pixels() {
+    let folder = tempfile::tempdir().unwrap();
+    let mut harness = viewer(Some(scene_path("scene1_02.txt")));
+    harness.state_mut().settings_mut().export.path =
+        folder.path().join("shot.png").display().to_string();
+    click(&mut harness, "Export to path");
+    harness.step();
+    assert!(harness.state().export_running() || harness.state().message().is_some());
+    settle(&mut harness);
+    let (message, is_error) = harness.state().message().unwrap();
+    assert!(!is_error, "{message}");
+    assert!(message.starts_with("exported"), "{message}");
+
+    let (frame, view) = shown(&harness);
+    let colour = image::open(folder.path().join("shot_colour.png"))
+        .unwrap()
+        .to_rgb8();
+    let depth = image::open(folder.path().join("shot_depth.png"))
+        .unwrap()
+        .to_rgb8();
+    let both = image::open(folder.path().join("shot_both.png"))
+        .unwrap()
+        .to_rgb8();
+    assert_eq!(colour, frame.colour_image());
+    assert_eq!(depth, frame.depth_image(view.depth_range));
+    assert_eq!(both.dimensions(), (2 * view.width_px, view.height_px));
+}
+
+#[test]
+fn export_at_a_typed_size_and_to_an_unwritable_path() {
+    let folder = tempfile::tempdir().unwrap();
+    let mut harness = viewer(Some(scene_path("scene1_01.txt")));
+    {
+        let settings = &mut harness.state_mut().settings_mut().export;
+        settings.displayed_size = false;
+        settings.size_px = [64, 48];
+        settings.side_by_side = false;
+        settings.format = raytracer::app::state::ExportFormat::Tga;
+        settings.path = folder.path().join("small").display().to_string();
+    }
+    click(&mut harness, "Export to path");
+    settle(&mut harness);
+    let colour = std::fs::read(folder.path().join("small_colour.tga")).unwrap();
+    let colour = image::load_from_memory_with_format(&colour, image::ImageFormat::Tga).unwrap();
+    assert_eq!((colour.width(), colour.height()), (64, 48));
+    assert!(folder.path().join("small_depth.tga").exists());
+    assert!(!folder.path().join("small_both.tga").exists());
+
+    harness.state_mut().settings_mut().export.path = folder
+        .path()
+        .join("missing/dir/x.png")
+        .display()
+        .to_string();
+    click(&mut harness, "Export to path");
+    settle(&mut harness);
+    let (message, is_error) = harness.state().message().unwrap();
+    assert!(is_error, "{message}");
+    assert!(message.contains("cannot write"), "{message}");
+}
+
+#[test]
+fn broken_scene_shows_its_error_and_keeps_the_previous_frame() {
+    let folder = tempfile::tempdir().unwrap();
+    let broken = folder.path().join("broken.txt");
+    std::fs::write(
+        &broken,
+        "OrthographicCamera {\n center 0 0 10\n direction 0 0 -1\n up 0 1 0\n size 5\n}\n\
+         Group {\n numObjects 1\n Sphere { center 0 0 0 }\n}\n",
+    )
+    .unwrap();
+    let mut harness = viewer(Some(scene_path("scene1_02.txt")));
+    let (before, _) = shown(&harness);
+
+    harness
+        .get_by_label("path")
+        .set_text_value_accesskit(&broken.display().to_string());
+    click(&mut harness, "Open path");
+    settle(&mut harness);
+
+    let expected = format!("{}:9:24: expected 'radius', found '}}'", broken.display());
+    assert_eq!(harness.state().scene_error(), Some(expected.as_str()));
+    // The error is on screen, and the previous scene and frame stay.
+    harness.run_steps(2);
+    assert!(
+        harness.query_all_by_value(&expected).next().is_some(),
+        "error on screen"
+    );
+    assert_eq!(
+        harness.state().loaded_scene().path,
+        Some(scene_path("scene1_02.txt"))
+    );
+    let (after, _) = shown(&harness);
+    assert_eq!(before, after);
+
+    // Fixing the file and opening it again clears the error.
+    std::fs::write(&broken, std::fs::read(scene_path("scene1_01.txt")).unwrap()).unwrap();
+    click(&mut harness, "Open path");
+    settle(&mut harness);
+    assert_eq!(harness.state().scene_error(), None);
+    assert_eq!(harness.state().loaded_scene().path, Some(broken));
+    assert_shows_current_view(&harness);
+}
+
+#[test]
+fn resizing_the_window_re_renders_at_the_new_size() {
+    let mut harness = viewer(Some(scene_path("scene1_01.txt")));
+    let (_, before) = shown(&harness);
+    harness.set_size(egui::vec2(900.0, 560.0));
+    settle(&mut harness);
+    let (_, after) = shown(&harness);
+    assert!(after.width_px < before.width_px && after.height_px < before.height_px);
+    assert_shows_current_view(&harness);
+}

@@ -1,0 +1,145 @@
+//! The real binary in a real window: starts Xvfb, runs `raytracer -input scene1_01.txt`, takes
+//! screenshots of the X screen (ImageMagick's `import`) until the first frame is up, and checks
+//! that both images are on screen: the red disc of the colour image and, to its right, the grey
+//! disc of the depth image (white at its centre, t = 9, darkening outwards).
+//!
+//! Needs `Xvfb` and `import` (scripts/test.sh installs them); the test fails, with that message,
+//! where they are missing.
+#![cfg(feature = "gui")]
+
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+use image::RgbImage;
+
+struct KillOnDrop(Child);
+
+impl Drop for KillOnDrop {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+fn start_xvfb() -> (KillOnDrop, String) {
+    for number in 90..140 {
+        if Path::new(&format!("/tmp/.X{number}-lock")).exists() {
+            continue;
+        }
+        let display = format!(":{number}");
+        let child = Command::new("Xvfb")
+            .args([
+                display.as_str(),
+                "-screen",
+                "0",
+                "1280x800x24",
+                "-nolisten",
+                "tcp",
+            ])
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .expect("Xvfb is needed for this test (scripts/test.sh installs it)");
+        let mut xvfb = KillOnDrop(child);
+        let deadline = Instant::now() + Duration::from_secs(10);
+        while Instant::now() < deadline {
+            if Path::new(&format!("/tmp/.X11-unix/X{number}")).exists() {
+                return (xvfb, display);
+            }
+            if let Ok(Some(_)) = xvfb.0.try_wait() {
+                break; // display taken meanwhile: try the next
+            }
+            std::thread::sleep(Duration::from_millis(50));
+        }
+    }
+    panic!("could not start Xvfb on any display :90..:139");
+}
+
+fn screenshot(display: &str, path: &Path) -> Option<RgbImage> {
+    let status = Command::new("import")
+        .args(["-display", display, "-window", "root"])
+        .arg(path)
+        .stderr(Stdio::null())
+        .status()
+        .expect("ImageMagick's import is needed for this test (scripts/test.sh installs it)");
+    if !status.success() {
+        return None;
+    }
+    image::open(path).ok().map(|i| i.to_rgb8())
+}
+
+/// Centroid and count of the pixels matching `predicate`.
+fn blob(image: &RgbImage, predicate: impl Fn(&image::Rgb<u8>) -> bool) -> (f64, f64, usize) {
+    let (mut sx, mut sy, mut n) = (0.0, 0.0, 0usize);
+    for (x, y, pixel) in image.enumerate_pixels() {
+        if predicate(pixel) {
+            sx += f64::from(x);
+            sy += f64::from(y);
+            n += 1;
+        }
+    }
+    if n == 0 {
+        (0.0, 0.0, 0)
+    } else {
+        (sx / n as f64, sy / n as f64, n)
+    }
+}
+
+#[test]
+fn real_window_shows_colour_and_depth_side_by_side() {
+    let (_xvfb, display) = start_xvfb();
+    let home = tempfile::tempdir().unwrap();
+    let scene: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_01.txt");
+    let viewer = Command::new(env!("CARGO_BIN_EXE_raytracer"))
+        .arg("-input")
+        .arg(&scene)
+        .env("DISPLAY", &display)
+        .env_remove("WAYLAND_DISPLAY")
+        .env("HOME", home.path())
+        .env("XDG_DATA_HOME", home.path().join("data"))
+        .env("XDG_CONFIG_HOME", home.path().join("config"))
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut viewer = KillOnDrop(viewer);
+
+    let shot_path = home.path().join("screen.png");
+    let deadline = Instant::now() + Duration::from_secs(90);
+    loop {
+        if let Ok(Some(status)) = viewer.0.try_wait() {
+            let mut stderr = String::new();
+            if let Some(mut pipe) = viewer.0.stderr.take() {
+                use std::io::Read;
+                let _ = pipe.read_to_string(&mut stderr);
+            }
+            panic!("the viewer exited early ({status}): {stderr}");
+        }
+        if let Some(shot) = screenshot(&display, &shot_path) {
+            let red = blob(&shot, |p| p[0] > 250 && p[1] < 5 && p[2] < 5);
+            let white = blob(&shot, |p| p[0] > 245 && p[0] == p[1] && p[1] == p[2]);
+            let mid_grey = blob(&shot, |p| {
+                (60..200).contains(&p[0]) && p[0] == p[1] && p[1] == p[2]
+            });
+            if red.2 > 2000 && white.2 > 20 && mid_grey.2 > 2000 {
+                // The depth disc is to the right of the colour disc, at the same height.
+                assert!(
+                    white.0 > red.0 + 100.0,
+                    "depth right of colour: {white:?} {red:?}"
+                );
+                assert!(
+                    (white.1 - red.1).abs() < 20.0,
+                    "same height: {white:?} {red:?}"
+                );
+                let keep = std::env::var_os("RAYTRACER_KEEP_SCREENSHOT").map(PathBuf::from);
+                if let Some(keep) = keep {
+                    shot.save(keep).unwrap();
+                }
+                return;
+            }
+        }
+        assert!(Instant::now() < deadline, "no frame on screen after 90 s");
+        std::thread::sleep(Duration::from_millis(500));
+    }
+}
