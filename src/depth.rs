@@ -109,12 +109,12 @@ mod tests {
 
     #[test]
     fn narrow_range_far_away_keeps_its_grey_levels() {
-        let range = DepthRange::new(99_999.996, 100_000.0015);
+        let range = DepthRange::new(99_999.996, 100_000.001_5);
         // Midpoint of the range is mid-grey; f32 could not even represent these t apart.
-        let mid = 0.5 * (99_999.996 + 100_000.0015);
+        let mid = 0.5 * (99_999.996 + 100_000.001_5);
         assert_eq!(range.grey_u8(mid), 127);
         assert_eq!(range.grey_u8(99_999.996), 255);
-        assert_eq!(range.grey_u8(100_000.0015), 0);
+        assert_eq!(range.grey_u8(100_000.001_5), 0);
     }
 
     #[test]

@@ -82,7 +82,7 @@ fn column_span(grid: &PixelGrid, center_u: f64, half_chord: f64) -> Option<(usiz
     let first = ((center_u - half_chord) / grid.pixel_size_world + offset).floor() - 1.0;
     let last = ((center_u + half_chord) / grid.pixel_size_world + offset).ceil() + 1.0;
     let max_column = f64::from(grid.width_px - 1);
-    if !(first <= max_column && last >= 0.0) {
+    if first.is_nan() || last.is_nan() || first > max_column || last < 0.0 {
         return None;
     }
     // Both ends are finite here and clamped into [0, width − 1].
@@ -100,7 +100,7 @@ fn rasterise_row(
     for disc in discs {
         let dv = v - disc.v;
         let chord_sq = disc.radius_sq - dv * dv;
-        if !(chord_sq >= 0.0) {
+        if chord_sq.is_nan() || chord_sq < 0.0 {
             continue;
         }
         let Some((first, last)) = column_span(grid, disc.u, chord_sq.sqrt()) else {
