@@ -26,6 +26,7 @@ fn viewer_frame_1024x1024(c: &mut Criterion) {
             scene,
             view,
             scene_epoch: 0,
+            quality: Default::default(),
         };
         group.bench_function(format!("scene1_0{number}"), |b| {
             b.iter(|| prepare_frame(black_box(&job)))

@@ -12,7 +12,7 @@ use std::path::PathBuf;
 
 use crate::depth::DepthRange;
 use crate::export::ImageFormat;
-use crate::render::{MAX_PIXELS, MAX_SIDE_PX, check_image_size};
+use crate::render::{MAX_PIXELS, MAX_SIDE_PX, Precision, Quality, check_image_size};
 
 /// One flag: its spelling, how many values follow it, and its line in the usage text.
 struct FlagSpec {
@@ -41,6 +41,11 @@ const FLAGS: &[FlagSpec] = &[
         name: "-depth",
         values: 3,
         usage: "-depth DMIN DMAX FILE    write the depth image: t = DMIN white … DMAX black",
+    },
+    FlagSpec {
+        name: "-precision",
+        values: 1,
+        usage: "-precision f64|f32|auto  per-pixel arithmetic (default f64: exact)",
     },
     FlagSpec {
         name: "-help",
@@ -143,6 +148,9 @@ pub enum UsageError {
     /// Rendering needs a scene.
     #[error("-output and -depth need -input FILE")]
     MissingInput,
+    /// A precision that is not f64, f32 or auto.
+    #[error("-precision: expected f64, f32 or auto, found '{0}'")]
+    BadPrecision(String),
 }
 
 /// The depth image to write.
@@ -167,6 +175,8 @@ pub struct RenderRequest {
     pub colour_output: Option<PathBuf>,
     /// Depth image destination and range.
     pub depth_output: Option<DepthOutput>,
+    /// Precision and other quality knobs.
+    pub quality: Quality,
 }
 
 /// Opening the viewer.
@@ -176,6 +186,8 @@ pub struct ViewerRequest {
     pub input: Option<PathBuf>,
     /// `-size W H`, if given: the export size the viewer starts with.
     pub size_px: Option<(u32, u32)>,
+    /// `-precision`, if given: the viewer's precision mode.
+    pub precision: Option<Precision>,
 }
 
 /// What the command line asks for.
@@ -267,8 +279,22 @@ impl RawArgs {
         {
             return Err(UsageError::SameOutput(colour.display().to_string()));
         }
+        let precision = match self.values.get("-precision") {
+            Some(_) => {
+                let text = self.text("-precision", 0)?;
+                Some(
+                    text.parse::<Precision>()
+                        .map_err(|_| UsageError::BadPrecision(text.to_owned()))?,
+                )
+            }
+            None => None,
+        };
         if colour_output.is_none() && depth_output.is_none() {
-            return Ok(Command::View(ViewerRequest { input, size_px }));
+            return Ok(Command::View(ViewerRequest {
+                input,
+                size_px,
+                precision,
+            }));
         }
         let input = input.ok_or(UsageError::MissingInput)?;
         let (width_px, height_px) = size_px.unwrap_or(DEFAULT_SIZE_PX);
@@ -278,6 +304,9 @@ impl RawArgs {
             height_px,
             colour_output,
             depth_output,
+            quality: Quality {
+                precision: precision.unwrap_or_default(),
+            },
         }))
     }
 
@@ -378,6 +407,7 @@ mod tests {
                     range: DepthRange::new(9.0, 10.0),
                     path: "depth.tga".into()
                 }),
+                quality: Quality::default(),
             })
         );
     }
@@ -395,13 +425,23 @@ mod tests {
     }
 
     #[test]
+    fn precision_flag_selects_the_mode() {
+        let Command::Render(request) = parse("-input a.txt -output x.png -precision auto").unwrap()
+        else {
+            panic!("expected a render request");
+        };
+        assert_eq!(request.quality.precision, Precision::Auto);
+    }
+
+    #[test]
     fn without_outputs_the_viewer_opens() {
         assert_eq!(parse("").unwrap(), Command::View(ViewerRequest::default()));
         assert_eq!(
             parse("-input a.txt -size 640 480").unwrap(),
             Command::View(ViewerRequest {
                 input: Some("a.txt".into()),
-                size_px: Some((640, 480))
+                size_px: Some((640, 480)),
+                precision: None,
             })
         );
         assert_eq!(parse("-help").unwrap(), Command::Help);
@@ -445,6 +485,10 @@ mod tests {
             ("-input a.txt -output x.tga -output y.tga", "given twice"),
             ("-input a.txt -output x.tga -depth 1 2 x.tga", "same file"),
             ("-output x.tga", "need -input"),
+            (
+                "-input a.txt -output x.tga -precision f16",
+                "expected f64, f32 or auto, found 'f16'",
+            ),
         ];
         for (line, message) in cases {
             let error = parse(line).expect_err(line).to_string();

@@ -6,7 +6,7 @@ use std::time::{Duration, Instant};
 use crate::cli::RenderRequest;
 use crate::depth::DepthRange;
 use crate::export::{ExportError, write_image};
-use crate::render::{View, ViewError, render};
+use crate::render::{View, ViewError, render_with};
 use crate::scene::{LoadError, Scene, load_scene};
 
 /// Why a headless render failed (the program exits with status 1).
@@ -59,7 +59,7 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
 
     let started = Instant::now();
     let view = request_view(&scene, request);
-    let frame = render(&scene, &view)?;
+    let frame = render_with(&scene, &view, &request.quality)?;
     let render = started.elapsed();
 
     let started = Instant::now();

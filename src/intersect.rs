@@ -52,6 +52,32 @@ pub fn ray_sphere_nearest_t(ray: &Ray, center_world: DVec3, radius_world: f64) -
     ray_sphere_roots(ray, center_world, radius_world).map(|(near, _)| near)
 }
 
+/// The textbook ray–sphere test in f32: `a = d·d`, `b = 2·(o − c)·d`, `c = |o − c|² − r²`,
+/// discriminant `b² − 4ac`, `t = (−b − √disc) / 2a`. Kept only as the error study's baseline:
+/// `b²` and `4ac` cancel catastrophically once distance/radius passes about 4000 (√ of f32's
+/// epsilon⁻¹), and world coordinates far from the origin make `o − c` lose the sphere entirely.
+pub fn textbook_nearest_t_f32(
+    origin: [f32; 3],
+    direction: [f32; 3],
+    center: [f32; 3],
+    radius: f32,
+) -> Option<f32> {
+    let oc = [
+        origin[0] - center[0],
+        origin[1] - center[1],
+        origin[2] - center[2],
+    ];
+    let dot = |p: [f32; 3], q: [f32; 3]| p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
+    let a = dot(direction, direction);
+    let b = 2.0 * dot(oc, direction);
+    let c = dot(oc, oc) - radius * radius;
+    let discriminant = b * b - 4.0 * a * c;
+    if discriminant.is_nan() || discriminant < 0.0 {
+        return None;
+    }
+    Some((-b - discriminant.sqrt()) / (2.0 * a))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -96,6 +122,16 @@ mod tests {
     fn misses_just_outside() {
         let r = ray([1.0 + 1e-12, 0.0, 10.0], [0.0, 0.0, -1.0]);
         assert_eq!(ray_sphere_roots(&r, DVec3::ZERO, 1.0), None);
+    }
+
+    #[test]
+    fn textbook_f32_is_right_up_close_and_wrong_far_away() {
+        let near = textbook_nearest_t_f32([0.0, 0.5, 10.0], [0.0, 0.0, -1.0], [0.0; 3], 1.0);
+        assert!((near.unwrap() - (10.0 - 0.75f32.sqrt())).abs() < 1e-5);
+        // distance/radius = 1e6: the discriminant is pure rounding noise.
+        let far = textbook_nearest_t_f32([0.0, 0.5, 1e6], [0.0, 0.0, -1.0], [0.0; 3], 1.0);
+        let error = far.map_or(f32::INFINITY, |t| (t - (1e6 - 0.75f32.sqrt())).abs());
+        assert!(error > 0.1, "textbook f32 should fail here, error {error}");
     }
 
     #[test]

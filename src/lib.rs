@@ -37,6 +37,7 @@ pub mod cli;
 pub mod depth;
 pub mod explore;
 pub mod export;
+pub mod generate;
 pub mod headless;
 pub mod intersect;
 pub mod render;

@@ -228,7 +228,10 @@ fn ties_go_to_the_sphere_first_in_the_file() {
             let centre = frame.index(10, 10);
             assert_eq!(frame.sphere[centre], 0);
             let expected = scene.materials[order[0] as usize].diffuse_colour;
-            assert_eq!(frame.colour[centre], expected);
+            assert_eq!(
+                frame.colour[centre],
+                expected.to_array().map(|c| (c * 255.0) as u8)
+            );
         }
     }
 }

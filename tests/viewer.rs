@@ -27,7 +27,7 @@ fn viewer(input: Option<PathBuf>) -> Harness<'static, ViewerApp> {
                 cc,
                 ViewerRequest {
                     input,
-                    size_px: None,
+                    ..Default::default()
                 },
             )
         });

@@ -6,9 +6,8 @@ use std::sync::Arc;
 
 use egui::{Color32, ColorImage};
 
-use crate::depth::quantize_f32;
 use crate::render::worker::{RenderResult, RenderWorker};
-use crate::render::{Frame, View, ViewError, render};
+use crate::render::{Frame, Quality, View, ViewError, render_with};
 use crate::scene::Scene;
 
 /// What the worker renders: a scene through a view.
@@ -20,6 +19,8 @@ pub struct ViewerJob {
     pub view: View,
     /// Which scene load this job belongs to (the viewer counts loads).
     pub scene_epoch: u64,
+    /// Precision and other quality knobs.
+    pub quality: Quality,
 }
 
 /// A rendered frame with the pixels of its two textures.
@@ -41,17 +42,14 @@ pub type JobResult = RenderResult<ViewerJob, JobOutput>;
 
 /// Renders `job` and prepares both texture images (what the worker runs).
 pub fn prepare_frame(job: &ViewerJob) -> JobOutput {
-    let frame = render(&job.scene, &job.view)?;
+    let frame = render_with(&job.scene, &job.view, &job.quality)?;
     let size = [frame.width_px as usize, frame.height_px as usize];
     let colour = ColorImage::new(
         size,
         frame
             .colour
             .iter()
-            .map(|c| {
-                let [r, g, b] = c.to_array().map(quantize_f32);
-                Color32::from_rgb(r, g, b)
-            })
+            .map(|&[r, g, b]| Color32::from_rgb(r, g, b))
             .collect(),
     );
     let range = job.view.depth_range;

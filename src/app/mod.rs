@@ -27,7 +27,7 @@ use self::panels::{ShownImages, StatusLine};
 use self::state::{ExportFormat, LoadedScene, Settings};
 use crate::cli::ViewerRequest;
 use crate::export::{ImageFormat, write_frame_images};
-use crate::render::{Frame, View, check_image_size};
+use crate::render::{Frame, Quality, View, check_image_size};
 
 /// Image size used until the first layout tells the real one.
 const INITIAL_SIZE_PX: (u32, u32) = (512, 512);
@@ -54,6 +54,7 @@ struct Shown {
     frame: Arc<Frame>,
     view: View,
     scene_epoch: u64,
+    quality: Quality,
     colour: TextureHandle,
     depth: TextureHandle,
     render_ms: f64,
@@ -67,7 +68,7 @@ pub struct ViewerApp {
     scene_epoch: u64,
     view: View,
     worker: Option<ViewerWorker>,
-    submitted: Option<(View, u64)>,
+    submitted: Option<(View, u64, Quality)>,
     shown: Option<Shown>,
     scene_error: Option<String>,
     message: Option<(String, bool)>,
@@ -89,6 +90,9 @@ impl ViewerApp {
         if let Some((width, height)) = request.size_px {
             settings.export.displayed_size = false;
             settings.export.size_px = [width, height];
+        }
+        if let Some(precision) = request.precision {
+            settings.quality.precision = precision;
         }
         let mut message = None;
         let worker = match start_worker(&cc.egui_ctx) {
@@ -144,11 +148,14 @@ impl ViewerApp {
             .map(|shown| (shown.frame.as_ref(), &shown.view))
     }
 
-    /// True when the frame on screen is the current view of the current scene.
+    /// True when the frame on screen is the current view of the current scene at the current
+    /// quality.
     pub fn frame_is_current(&self) -> bool {
-        self.shown
-            .as_ref()
-            .is_some_and(|s| s.view == self.view && s.scene_epoch == self.scene_epoch)
+        self.shown.as_ref().is_some_and(|s| {
+            s.view == self.view
+                && s.scene_epoch == self.scene_epoch
+                && s.quality == self.settings.quality
+        })
     }
 
     /// The error of the last scene that failed to load, if shown.
@@ -230,12 +237,17 @@ impl ViewerApp {
         let ready = self
             .shown
             .as_ref()
-            .filter(|s| s.view == view && s.scene_epoch == self.scene_epoch)
+            .filter(|s| {
+                s.view == view
+                    && s.scene_epoch == self.scene_epoch
+                    && s.quality == self.settings.quality
+            })
             .map(|s| Arc::clone(&s.frame));
         let job = ViewerJob {
             scene: Arc::clone(&self.loaded.scene),
             view,
             scene_epoch: self.scene_epoch,
+            quality: self.settings.quality,
         };
         let (sender, receiver) = channel();
         let ctx = self.ctx.clone();
@@ -289,6 +301,7 @@ impl ViewerApp {
                         shown.frame = prepared.frame;
                         shown.view = job.view;
                         shown.scene_epoch = scene_epoch;
+                        shown.quality = job.quality;
                         shown.render_ms = render_ms;
                     }
                     None => {
@@ -306,6 +319,7 @@ impl ViewerApp {
                             frame: prepared.frame,
                             view: job.view,
                             scene_epoch,
+                            quality: job.quality,
                             render_ms,
                         });
                     }
@@ -433,6 +447,8 @@ impl ViewerApp {
             let ranges = self.loaded.ranges(&self.view);
             panels::controls_ui(ui, &mut self.view, &ranges);
             ui.separator();
+            panels::quality_ui(ui, &mut self.settings.quality);
+            ui.separator();
             let file = panels::file_ui(ui, &mut self.path_text);
             if let Some(path) = file.open_path {
                 self.open(Path::new(path.trim()));
@@ -447,7 +463,7 @@ impl ViewerApp {
     }
 
     fn submit_if_changed(&mut self) {
-        let wanted = (self.view, self.scene_epoch);
+        let wanted = (self.view, self.scene_epoch, self.settings.quality);
         if self.submitted == Some(wanted) {
             return;
         }
@@ -456,6 +472,7 @@ impl ViewerApp {
                 scene: Arc::clone(&self.loaded.scene),
                 view: self.view,
                 scene_epoch: self.scene_epoch,
+                quality: self.settings.quality,
             });
             self.submitted = Some(wanted);
         }
@@ -485,6 +502,7 @@ impl eframe::App for ViewerApp {
                 .shown
                 .as_ref()
                 .map(|s| [s.frame.width_px, s.frame.height_px]),
+            precision: self.shown.as_ref().map(|s| s.frame.precision),
             sphere_count: self.loaded.scene.spheres.len(),
             scene_name: &scene_name,
             busy,

@@ -5,7 +5,7 @@ use egui::{Color32, Rect, RichText, Sense, TextureHandle, Ui, Vec2};
 
 use super::state::{ExportFormat, ExportSettings};
 use crate::explore::SliderRanges;
-use crate::render::{MAX_SIDE_PX, View};
+use crate::render::{MAX_SIDE_PX, Precision, Quality, View};
 
 /// Space between the two images, in points.
 const IMAGE_GAP_POINTS: f32 = 8.0;
@@ -77,6 +77,22 @@ pub fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) {
             let range = widened(&unit, value);
             slider(ui, name, &mut value, range);
             view.up_world[axis] = value;
+        }
+    });
+}
+
+/// The quality section: precision mode.
+pub fn quality_ui(ui: &mut Ui, quality: &mut Quality) {
+    ui.heading("Quality");
+    ui.horizontal(|ui| {
+        ui.label("precision");
+        for precision in Precision::ALL {
+            ui.radio_value(&mut quality.precision, precision, precision.name())
+                .on_hover_text(match precision {
+                    Precision::F64 => "64-bit: exact at every extreme",
+                    Precision::F32 => "32-bit: fast; exact only inside its safe range",
+                    Precision::Auto => "f32 where it is safe for the frame, else f64",
+                });
         }
     });
 }
@@ -265,6 +281,8 @@ pub struct StatusLine<'a> {
     pub sphere_count: usize,
     /// The scene's path or name.
     pub scene_name: &'a str,
+    /// Precision the frame on screen was rendered in.
+    pub precision: Option<Precision>,
     /// A render is in flight.
     pub busy: bool,
     /// Message of the last action (export result, view problem), with whether it is an error.
@@ -281,6 +299,10 @@ pub fn status_bar_ui(ui: &mut Ui, status: &StatusLine<'_>) {
         ui.separator();
         if let Some([w, h]) = status.size_px {
             ui.label(format!("{w}×{h} px"));
+            ui.separator();
+        }
+        if let Some(precision) = status.precision {
+            ui.label(precision.name());
             ui.separator();
         }
         let plural = if status.sphere_count == 1 { "" } else { "s" };

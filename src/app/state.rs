@@ -65,6 +65,8 @@ pub struct Settings {
     pub show_controls: bool,
     /// Export options.
     pub export: ExportSettings,
+    /// Rendering quality (precision).
+    pub quality: crate::render::Quality,
 }
 
 impl Default for Settings {
@@ -73,6 +75,7 @@ impl Default for Settings {
             last_scene: None,
             show_controls: true,
             export: ExportSettings::default(),
+            quality: crate::render::Quality::default(),
         }
     }
 }

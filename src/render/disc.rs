@@ -1,19 +1,32 @@
-//! The fast path: spheres projected to screen discs, rasterised row by row in parallel.
+//! The fast path: spheres projected to screen discs, binned into bands of rows, rasterised band
+//! by band in parallel.
 //!
 //! Each sphere's centre is moved into camera space once per frame, in f64 and relative to the
 //! camera centre, so coordinates of 1e7 cost no precision. For a pixel at screen (u, v) and a disc
 //! (c_u, c_v, r) the test is `du² + dv² ≤ r²` with `du = u − c_u`, `dv = v − c_v` — the same
 //! expression everywhere, so hit/miss is decided once — and the visible depth is
 //! `t = c_w − √(r² − du² − dv²)` (tmin = −∞: the front root even behind the camera centre).
-//! Within a row only the pixels a disc's chord can cover are tested; ties keep the sphere that
-//! comes first in the file.
+//!
+//! Cost: a disc is listed in the bands its rows touch; within a row only the columns its chord can
+//! cover are tested. A frame costs in proportion to the discs plus the pixels they cover, not to
+//! pixels × spheres. Ties keep the sphere that comes first in the file (bands list discs in file
+//! order and a hit replaces the current one only when strictly nearer).
+//!
+//! The per-pixel arithmetic is generic over [`Real`]: f64 (exact mode) or f32 (fast mode); the
+//! projection and the column spans are always f64.
 
-use glam::Vec3;
+use std::ops::{Add, Mul, Sub};
+
 use rayon::prelude::*;
 
-use super::{Frame, NO_HIT, View, ViewError};
+use super::precision::f32_is_safe;
+use super::{Frame, NO_HIT, Precision, View, ViewError};
 use crate::camera::{CameraBasis, PixelGrid};
+use crate::depth::quantize_f32;
 use crate::scene::Scene;
+
+/// Rows per band: the unit of binning and of parallel work.
+pub const BAND_ROWS: usize = 8;
 
 /// A sphere projected into camera space.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -75,84 +88,292 @@ pub fn nearest_hit(discs: &[Disc], u: f64, v: f64) -> Option<(f64, u32)> {
     best
 }
 
+/// Discs listed per band of [`BAND_ROWS`] rows (compressed rows: band `b`'s discs are
+/// `indices[offsets[b]..offsets[b + 1]]`, in file order).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Bands {
+    /// Start of each band's list in `indices`; one more entry than bands.
+    pub offsets: Vec<usize>,
+    /// Disc indices.
+    pub indices: Vec<u32>,
+}
+
+/// Image rows (top row first) `[first, last]` whose centres a disc may cover; conservative by
+/// one row.
+fn row_span(grid: &PixelGrid, disc: &Disc) -> Option<(usize, usize)> {
+    let radius = disc.radius_sq.sqrt();
+    let height = f64::from(grid.height_px);
+    // Row index from the top: r = height − 1 − y_up, with v = (y_up + ½ − height/2)·s.
+    let y_up_low = ((disc.v - radius) / grid.pixel_size_world + 0.5 * height - 0.5).floor() - 1.0;
+    let y_up_high = ((disc.v + radius) / grid.pixel_size_world + 0.5 * height - 0.5).ceil() + 1.0;
+    clamp_span(
+        height - 1.0 - y_up_high,
+        height - 1.0 - y_up_low,
+        height - 1.0,
+    )
+}
+
+/// Clamps a span of indices `[first, last]` to `[0, max]`; `None` if it misses or is NaN.
+fn clamp_span(first: f64, last: f64, max: f64) -> Option<(usize, usize)> {
+    if first.is_nan() || last.is_nan() || first > max || last < 0.0 {
+        return None;
+    }
+    // Both ends are finite here and clamped into [0, max].
+    Some((first.max(0.0) as usize, last.min(max) as usize))
+}
+
 /// Columns `[first, last]` (clamped to the image) whose pixel centres may lie within `half_chord`
 /// of screen u `center_u`. Conservative by one pixel; the exact test decides.
 fn column_span(grid: &PixelGrid, center_u: f64, half_chord: f64) -> Option<(usize, usize)> {
     let offset = 0.5 * f64::from(grid.width_px) - 0.5;
     let first = ((center_u - half_chord) / grid.pixel_size_world + offset).floor() - 1.0;
     let last = ((center_u + half_chord) / grid.pixel_size_world + offset).ceil() + 1.0;
-    let max_column = f64::from(grid.width_px - 1);
-    if first.is_nan() || last.is_nan() || first > max_column || last < 0.0 {
-        return None;
-    }
-    // Both ends are finite here and clamped into [0, width − 1].
-    Some((first.max(0.0) as usize, last.min(max_column) as usize))
+    clamp_span(first, last, f64::from(grid.width_px - 1))
 }
 
-/// Fills one image row (screen v = `v`) of t and sphere indices.
-fn rasterise_row(
-    discs: &[Disc],
-    grid: &PixelGrid,
-    v: f64,
-    t_row: &mut [f64],
-    sphere_row: &mut [u32],
-) {
-    for disc in discs {
-        let dv = v - disc.v;
-        let chord_sq = disc.radius_sq - dv * dv;
-        if chord_sq.is_nan() || chord_sq < 0.0 {
-            continue;
+/// Lists each disc in the bands its rows touch (two passes: count, then fill).
+pub fn bin_discs(discs: &[Disc], grid: &PixelGrid) -> Bands {
+    let band_count = (grid.height_px as usize).div_ceil(BAND_ROWS);
+    let spans: Vec<Option<(usize, usize)>> = discs
+        .par_iter()
+        .map(|disc| row_span(grid, disc).map(|(first, last)| (first / BAND_ROWS, last / BAND_ROWS)))
+        .collect();
+    let mut offsets = vec![0usize; band_count + 1];
+    for &(first, last) in spans.iter().flatten() {
+        for count in &mut offsets[first + 1..=last + 1] {
+            *count += 1;
         }
-        let Some((first, last)) = column_span(grid, disc.u, chord_sq.sqrt()) else {
-            continue;
-        };
-        for x in first..=last {
-            let u = grid.u_of_column(x as f64);
-            if let Some(t) = disc.hit_t(u, v)
-                && t < t_row[x]
-            {
-                t_row[x] = t;
-                sphere_row[x] = disc.sphere;
+    }
+    for band in 0..band_count {
+        offsets[band + 1] += offsets[band];
+    }
+    let mut cursor = offsets.clone();
+    let mut indices = vec![0u32; offsets[band_count]];
+    for (index, span) in (0u32..).zip(&spans) {
+        if let &Some((first, last)) = span {
+            for band in first..=last {
+                indices[cursor[band]] = index;
+                cursor[band] += 1;
+            }
+        }
+    }
+    Bands { offsets, indices }
+}
+
+/// The floating-point type of the per-pixel arithmetic.
+pub trait Real:
+    Copy
+    + PartialOrd
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Send
+    + Sync
+    + 'static
+{
+    /// The mode this type implements.
+    const PRECISION: Precision;
+    /// Zero.
+    const ZERO: Self;
+    /// +∞ (no hit).
+    const INFINITY: Self;
+    /// Rounds an f64 to this type.
+    fn from_f64(value: f64) -> Self;
+    /// Widens to f64.
+    fn to_f64(self) -> f64;
+    /// Square root.
+    fn sqrt(self) -> Self;
+    /// The same buffer seen as this type, when it is f64 (so f64 kernels write in place).
+    fn as_self_slice(buffer: &mut [f64]) -> Option<&mut [Self]>;
+}
+
+impl Real for f64 {
+    const PRECISION: Precision = Precision::F64;
+    const ZERO: Self = 0.0;
+    const INFINITY: Self = f64::INFINITY;
+    fn from_f64(value: f64) -> Self {
+        value
+    }
+    fn to_f64(self) -> f64 {
+        self
+    }
+    fn sqrt(self) -> Self {
+        f64::sqrt(self)
+    }
+    fn as_self_slice(buffer: &mut [f64]) -> Option<&mut [Self]> {
+        Some(buffer)
+    }
+}
+
+impl Real for f32 {
+    const PRECISION: Precision = Precision::F32;
+    const ZERO: Self = 0.0;
+    const INFINITY: Self = f32::INFINITY;
+    fn from_f64(value: f64) -> Self {
+        value as f32
+    }
+    fn to_f64(self) -> f64 {
+        f64::from(self)
+    }
+    fn sqrt(self) -> Self {
+        f32::sqrt(self)
+    }
+    fn as_self_slice(_buffer: &mut [f64]) -> Option<&mut [Self]> {
+        None
+    }
+}
+
+/// A disc in the per-pixel type.
+#[derive(Debug, Clone, Copy)]
+struct DiscIn<R> {
+    u: R,
+    v: R,
+    w: R,
+    radius_sq: R,
+}
+
+/// Fills one band (rows `first_row..first_row + rows`, top first) of t and sphere indices.
+#[allow(clippy::too_many_arguments)]
+fn rasterise_band<R: Real>(
+    discs: &[Disc],
+    discs_in: &[DiscIn<R>],
+    list: &[u32],
+    grid: &PixelGrid,
+    first_row: usize,
+    t_band: &mut [R],
+    sphere_band: &mut [u32],
+) {
+    let width = grid.width_px as usize;
+    let height = grid.height_px as usize;
+    let pixel_size = R::from_f64(grid.pixel_size_world);
+    let column_offset = R::from_f64(0.5 - 0.5 * f64::from(grid.width_px));
+    for (row_in_band, (t_row, sphere_row)) in t_band
+        .chunks_mut(width)
+        .zip(sphere_band.chunks_mut(width))
+        .enumerate()
+    {
+        let y_up = (height - 1 - (first_row + row_in_band)) as f64;
+        let v = grid.v_of_row(y_up);
+        let v_in = R::from_f64(v);
+        for &index in list {
+            let disc = &discs[index as usize];
+            // Span in f64 (conservative); the per-pixel test in R decides.
+            let dv = v - disc.v;
+            let chord_sq = disc.radius_sq - dv * dv;
+            if chord_sq.is_nan() || chord_sq < -disc.radius_sq * 1e-6 {
+                continue;
+            }
+            let Some((first, last)) = column_span(grid, disc.u, chord_sq.max(0.0).sqrt()) else {
+                continue;
+            };
+            let disc_in = discs_in[index as usize];
+            let dv_in = v_in - disc_in.v;
+            let dv_sq = dv_in * dv_in;
+            for x in first..=last {
+                let u = (R::from_f64(x as f64) + column_offset) * pixel_size;
+                let du = u - disc_in.u;
+                let distance_sq = du * du + dv_sq;
+                let rest = disc_in.radius_sq - distance_sq;
+                let t = disc_in.w - (if rest > R::ZERO { rest } else { R::ZERO }).sqrt();
+                let closer = distance_sq <= disc_in.radius_sq && t < t_row[x];
+                t_row[x] = if closer { t } else { t_row[x] };
+                sphere_row[x] = if closer { disc.sphere } else { sphere_row[x] };
             }
         }
     }
 }
 
-/// Renders with projected discs, rows in parallel (see the module docs).
-pub fn render_discs(scene: &Scene, view: &View) -> Result<Frame, ViewError> {
+/// Renders with projected discs in the per-pixel precision `R` (see the module docs). With
+/// `auto`, switches to f32 when [`f32_is_safe`] says the frame allows it.
+pub fn render_discs_in<R: Real>(
+    scene: &Scene,
+    view: &View,
+    auto: bool,
+) -> Result<Frame, ViewError> {
     let basis = view.validate()?;
     let grid = view.grid();
     let discs = project_discs(scene, view, &basis);
+    if auto && f32_is_safe(&discs, &grid, view.depth_range) {
+        return rasterise_frame::<f32>(scene, view, &grid, &discs);
+    }
+    rasterise_frame::<R>(scene, view, &grid, &discs)
+}
+
+fn rasterise_frame<R: Real>(
+    scene: &Scene,
+    view: &View,
+    grid: &PixelGrid,
+    discs: &[Disc],
+) -> Result<Frame, ViewError> {
+    let grid = *grid;
+    let discs_in: Vec<DiscIn<R>> = discs
+        .iter()
+        .map(|d| DiscIn {
+            u: R::from_f64(d.u),
+            v: R::from_f64(d.v),
+            w: R::from_f64(d.w),
+            radius_sq: R::from_f64(d.radius_sq),
+        })
+        .collect();
+    let bands = bin_discs(discs, &grid);
     let width = view.width_px as usize;
     let height = view.height_px as usize;
     let mut t = vec![f64::INFINITY; width * height];
     let mut sphere = vec![NO_HIT; width * height];
-    t.par_chunks_mut(width)
-        .zip(sphere.par_chunks_mut(width))
+    t.par_chunks_mut(width * BAND_ROWS)
+        .zip(sphere.par_chunks_mut(width * BAND_ROWS))
         .enumerate()
-        .for_each(|(row, (t_row, sphere_row))| {
-            let y_up = (height - 1 - row) as f64;
-            rasterise_row(&discs, &grid, grid.v_of_row(y_up), t_row, sphere_row);
+        .for_each(|(band, (t_band, sphere_band))| {
+            let list = &bands.indices[bands.offsets[band]..bands.offsets[band + 1]];
+            let first_row = band * BAND_ROWS;
+            match R::as_self_slice(t_band) {
+                Some(t_in_place) => rasterise_band(
+                    discs,
+                    &discs_in,
+                    list,
+                    &grid,
+                    first_row,
+                    t_in_place,
+                    sphere_band,
+                ),
+                None => {
+                    let mut scratch = vec![R::INFINITY; t_band.len()];
+                    rasterise_band(
+                        discs,
+                        &discs_in,
+                        list,
+                        &grid,
+                        first_row,
+                        &mut scratch,
+                        sphere_band,
+                    );
+                    for (out, value) in t_band.iter_mut().zip(&scratch) {
+                        *out = value.to_f64();
+                    }
+                }
+            }
         });
-    Ok(frame_from_hits(scene, view, t, sphere))
+    Ok(frame_from_hits(scene, view, t, sphere, R::PRECISION))
 }
 
 /// Completes a frame from per-pixel t and sphere indices: colour from the sphere's material or
-/// the background.
-pub(crate) fn frame_from_hits(scene: &Scene, view: &View, t: Vec<f64>, sphere: Vec<u32>) -> Frame {
-    let sphere_colours: Vec<Vec3> = scene
+/// the background, quantised to 8 bits.
+pub(crate) fn frame_from_hits(
+    scene: &Scene,
+    view: &View,
+    t: Vec<f64>,
+    sphere: Vec<u32>,
+    precision: Precision,
+) -> Frame {
+    let palette: Vec<[u8; 3]> = scene
         .spheres
         .iter()
-        .map(|s| scene.sphere_colour(s))
+        .map(|s| scene.sphere_colour(s).to_array().map(quantize_f32))
         .collect();
+    let background = scene.background.to_array().map(quantize_f32);
     let colour = sphere
         .par_iter()
-        .map(|&index| {
-            sphere_colours
-                .get(index as usize)
-                .copied()
-                .unwrap_or(scene.background)
-        })
+        .map(|&index| palette.get(index as usize).copied().unwrap_or(background))
         .collect();
     Frame {
         width_px: view.width_px,
@@ -160,5 +381,36 @@ pub(crate) fn frame_from_hits(scene: &Scene, view: &View, t: Vec<f64>, sphere: V
         colour,
         t,
         sphere,
+        precision,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bands_list_each_disc_where_its_rows_are_in_file_order() {
+        let grid = PixelGrid::new(32, 32, 32.0); // one world unit per pixel
+        let disc = |v: f64, r: f64, sphere| Disc {
+            u: 0.0,
+            v,
+            w: 0.0,
+            radius_sq: r * r,
+            sphere,
+        };
+        // Top band holds rows 0..8 (v from 16 down to 8); the disc at v = 12 sits in it.
+        let discs = [disc(12.0, 1.0, 0), disc(-100.0, 1.0, 1), disc(0.0, 20.0, 2)];
+        let bands = bin_discs(&discs, &grid);
+        assert_eq!(bands.offsets.len(), 5);
+        let band = |b: usize| &bands.indices[bands.offsets[b]..bands.offsets[b + 1]];
+        assert_eq!(band(0), [0, 2]);
+        assert!(
+            !bands.indices.contains(&1),
+            "off-screen disc listed nowhere"
+        );
+        for b in 1..4 {
+            assert!(band(b).contains(&2), "the big disc is in every band");
+        }
     }
 }

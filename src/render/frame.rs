@@ -1,10 +1,9 @@
 //! [`Frame`]: a rendered picture — colour, raw t and the visible sphere per pixel — and its 8-bit
 //! colour and depth images.
 
-use glam::Vec3;
 use image::{Rgb, RgbImage};
 
-use crate::depth::{DepthRange, quantize_f32};
+use crate::depth::DepthRange;
 
 /// Sphere index of pixels that no sphere covers.
 pub const NO_HIT: u32 = u32::MAX;
@@ -17,13 +16,15 @@ pub struct Frame {
     pub width_px: u32,
     /// Height in pixels.
     pub height_px: u32,
-    /// Linear colour per pixel.
-    pub colour: Vec<Vec3>,
+    /// 8-bit colour per pixel (`floor(c·255)` of the material's colour, clamped).
+    pub colour: Vec<[u8; 3]>,
     /// t of the visible hit per pixel, along the unit view direction from the screen plane;
     /// `+∞` where no sphere is hit.
     pub t: Vec<f64>,
     /// Index (file order) of the visible sphere per pixel, [`NO_HIT`] where none.
     pub sphere: Vec<u32>,
+    /// The per-pixel precision used (`F64` or `F32`; `Auto` is resolved before rendering).
+    pub precision: super::Precision,
 }
 
 impl Frame {
@@ -40,9 +41,7 @@ impl Frame {
     /// The 8-bit colour image (`floor(c·255)`, clamped), top row first.
     pub fn colour_image(&self) -> RgbImage {
         RgbImage::from_fn(self.width_px, self.height_px, |x, y| {
-            Rgb(self.colour[self.storage_index(x, y)]
-                .to_array()
-                .map(quantize_f32))
+            Rgb(self.colour[self.storage_index(x, y)])
         })
     }
 

@@ -20,11 +20,11 @@ pub enum ViewError {
     /// Direction or up are unusable.
     #[error(transparent)]
     Camera(#[from] CameraError),
-    /// The screen size is zero, negative or not finite.
-    #[error("view size must be a finite number > 0, found {0}")]
+    /// The screen size is zero, negative, not finite or above 1e150.
+    #[error("view size must be a number in (0, 1e150], found {0}")]
     BadSize(f64),
-    /// The camera centre is not finite.
-    #[error("view centre must be finite")]
+    /// The camera centre is not finite or beyond 1e150.
+    #[error("view centre must be finite and at most 1e150 in magnitude")]
     BadCenter,
     /// The image is empty or larger than [`MAX_SIDE_PX`] / [`MAX_PIXELS`].
     #[error(
@@ -99,10 +99,11 @@ impl View {
 
     /// Checks every field; the basis of a valid view.
     pub fn validate(&self) -> Result<CameraBasis, ViewError> {
-        if !self.center_world.is_finite() {
+        let limit = crate::scene::MAX_MAGNITUDE;
+        if !(self.center_world.is_finite() && self.center_world.abs().max_element() <= limit) {
             return Err(ViewError::BadCenter);
         }
-        if !(self.size_world.is_finite() && self.size_world > 0.0) {
+        if !(self.size_world > 0.0 && self.size_world <= limit) {
             return Err(ViewError::BadSize(self.size_world));
         }
         if !(self.depth_range.min_t.is_finite() && self.depth_range.max_t.is_finite()) {

@@ -60,6 +60,14 @@ pub enum ParseErrorKind {
         /// The token in the file.
         found: String,
     },
+    /// A number beyond [`crate::scene::MAX_MAGNITUDE`].
+    #[error("{what} must be at most 1e150 in magnitude, found '{found}'")]
+    OutOfRange {
+        /// Which value.
+        what: &'static str,
+        /// The token in the file.
+        found: String,
+    },
     /// A count (`numObjects`, `numMaterials`, `MaterialIndex`) that is not a non-negative integer.
     #[error("{what} must be a non-negative integer, found '{found}'")]
     NotACount {

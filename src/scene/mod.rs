@@ -13,7 +13,7 @@ pub use lexer::{Lexer, Token};
 pub use model::{
     Bounds, DEFAULT_BACKGROUND, DEFAULT_DIFFUSE, Material, OrthographicCamera, Scene, Sphere,
 };
-pub use parse::{MAX_GROUP_DEPTH, parse_scene, parse_scene_bytes};
+pub use parse::{MAX_GROUP_DEPTH, MAX_MAGNITUDE, parse_scene, parse_scene_bytes};
 
 use std::path::Path;
 

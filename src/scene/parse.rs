@@ -12,6 +12,10 @@ use super::lexer::{Lexer, Token};
 use super::model::{DEFAULT_BACKGROUND, Material, OrthographicCamera, Scene, Sphere};
 use crate::camera::{CameraBasis, CameraError};
 
+/// Largest magnitude of a coordinate, radius or size: squares and sums of squares of such numbers
+/// stay finite in f64, so no input can drive the arithmetic to infinity or NaN.
+pub const MAX_MAGNITUDE: f64 = 1e150;
+
 /// Deepest group nesting accepted; deeper files get [`ParseErrorKind::TooDeep`].
 pub const MAX_GROUP_DEPTH: usize = 256;
 
@@ -150,7 +154,14 @@ impl<'a> Parser<'a> {
         let expected = format!("a number ({what})");
         let token = self.next(&expected)?;
         match token.text.parse::<f64>() {
-            Ok(value) if value.is_finite() => Ok((value, token.location)),
+            Ok(value) if value.abs() <= MAX_MAGNITUDE => Ok((value, token.location)),
+            Ok(value) if value.is_finite() => error(
+                token.location,
+                ParseErrorKind::OutOfRange {
+                    what,
+                    found: quote(token.text),
+                },
+            ),
             Ok(_) => error(
                 token.location,
                 ParseErrorKind::NotFinite {

@@ -208,6 +208,13 @@ fn numbers_must_be_numbers_and_finite() {
             format!("sphere radius must be a finite number, found '{bad}'")
         );
     }
+    let (_, _, message) = fail(&format!(
+        "{CAMERA}Group {{ numObjects 1 Sphere {{ center 0 0 1e200 radius 1 }} }}"
+    ));
+    assert_eq!(
+        message,
+        "sphere center must be at most 1e150 in magnitude, found '1e200'"
+    );
     let (_, _, message) = fail("Background { color 1e39 0 0 }");
     assert!(message.contains("must be a finite number"), "{message}");
 }
