@@ -72,6 +72,12 @@ pub struct ReferencePixel {
     /// The smallest `|r² − d²| / max(r², d²)` over all spheres: how close the pixel centre is to
     /// any silhouette, relative to the disc's size.
     pub silhouette_margin: f64,
+    /// How strongly the visible t reacts to rounding of the inputs: `r² / √(r² − d²)` of the
+    /// visible sphere (it grows without bound towards the silhouette, where t's slope is
+    /// infinite); 0 without a hit. A backward-stable t is within a few ε times this plus `|t| + r`.
+    pub t_sensitivity: f64,
+    /// The visible sphere's radius (0 without a hit).
+    pub radius: f64,
     /// The smallest relative gap in t between the visible sphere and any other sphere covering the
     /// pixel (ties: 0); `+∞` when only one sphere covers it.
     pub tie_margin: f64,
@@ -124,11 +130,31 @@ impl HighPrecision {
         })
     }
 
+    /// Screen (u, v) of pixel (x, y_up)'s centre.
+    fn screen_point(&self, x: u32, y_up: u32) -> (Dd, Dd) {
+        (
+            Dd::from(f64::from(x) + 0.5 - 0.5 * self.width) * self.pixel_size,
+            Dd::from(f64::from(y_up) + 0.5 - 0.5 * self.height) * self.pixel_size,
+        )
+    }
+
+    /// `| |p − c| − r |` for the point p at parameter `t` on pixel (x, y_up)'s ray and sphere
+    /// `sphere`: how far a claimed hit point lies from the sphere's surface.
+    pub fn distance_from_surface(&self, sphere: u32, x: u32, y_up: u32, t: f64) -> f64 {
+        let Some(&(cu, cv, cw, radius_sq, _)) = self.discs.get(sphere as usize) else {
+            return f64::INFINITY;
+        };
+        let (u, v) = self.screen_point(x, y_up);
+        let (du, dv, dw) = (u - cu, v - cv, Dd::from(t) - cw);
+        let distance = (du * du + dv * dv + dw * dw).sqrt();
+        (distance - radius_sq.sqrt()).hi().abs()
+    }
+
     /// The reference answer at pixel (x, y_up).
     pub fn pixel(&self, x: u32, y_up: u32) -> ReferencePixel {
-        let u = Dd::from(f64::from(x) + 0.5 - 0.5 * self.width) * self.pixel_size;
-        let v = Dd::from(f64::from(y_up) + 0.5 - 0.5 * self.height) * self.pixel_size;
+        let (u, v) = self.screen_point(x, y_up);
         let mut best: Option<(u32, Dd)> = None;
+        let mut best_shape = (0.0, 0.0);
         let mut covering: Vec<(u32, Dd)> = Vec::new();
         let mut silhouette_margin = f64::INFINITY;
         for &(cu, cv, cw, radius_sq, index) in &self.discs {
@@ -149,6 +175,8 @@ impl HighPrecision {
                 covering.push((index, t));
                 if best.is_none_or(|(_, best_t)| t < best_t) {
                     best = Some((index, t));
+                    let sensitivity = radius_sq.hi() / gap.hi().sqrt();
+                    best_shape = (sensitivity, radius_sq.hi().sqrt());
                 }
             }
         }
@@ -166,6 +194,8 @@ impl HighPrecision {
         ReferencePixel {
             hit: best.map(|(index, t)| (index, t.hi() + t.lo())),
             silhouette_margin,
+            t_sensitivity: best_shape.0,
+            radius: best_shape.1,
             tie_margin,
         }
     }
