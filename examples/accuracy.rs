@@ -406,10 +406,12 @@ fn write_report(sweeps: &[Sweep], results: &[Vec<Vec<Errors>>], timings: &[Timin
     }
     let _ = writeln!(
         md,
-        "\n`auto` renders a frame in f32 only when the frame lies inside f32's safe range by the rule of \
-         `src/render/precision.rs`: f32's t error, ≈ ε₃₂·(|w| + r), must stay below 1/16 grey level and its \
-         silhouette displacement, ≈ ε₃₂·(r + 2M) (M the largest screen coordinate involved), below 1/16 pixel, \
-         with a factor 4 of headroom; otherwise f64. The table shows it exact on every sweep.\n"
+        "\nf32 mode computes every pixel in f32 but re-decides in f64 the pixels it cannot decide with \
+         certainty (within its error bound of a silhouette or of a tie between two spheres), so its \
+         coverage — which sphere each pixel shows — is exact; its limit is depth. `auto` renders a frame \
+         in f32 only when f32's t error, ≈ ε₃₂·(|w| + r) with a factor 4 of headroom, stays below 1/16 \
+         grey level of the depth range and every magnitude fits f32 comfortably (`src/render/precision.rs`); \
+         otherwise f64. The table shows it exact on every sweep.\n"
     );
 
     for (sweep, per_value) in sweeps.iter().zip(results) {
@@ -542,7 +544,7 @@ fn write_plot(
         }
         chart
             .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
+            .position(SeriesLabelPosition::MiddleRight)
             .background_style(WHITE.mix(0.8))
             .border_style(BLACK)
             .draw()?;

@@ -173,6 +173,9 @@ pub trait Real:
 {
     /// The mode this type implements.
     const PRECISION: Precision;
+    /// Unit roundoff, if coarser than f64's (then uncertain decisions are re-made in f64); 0 for
+    /// f64.
+    const ROUNDOFF: f64;
     /// Zero.
     const ZERO: Self;
     /// +∞ (no hit).
@@ -183,12 +186,17 @@ pub trait Real:
     fn to_f64(self) -> f64;
     /// Square root.
     fn sqrt(self) -> Self;
+    /// Absolute value.
+    fn abs(self) -> Self;
+    /// Division.
+    fn div(self, other: Self) -> Self;
     /// The same buffer seen as this type, when it is f64 (so f64 kernels write in place).
     fn as_self_slice(buffer: &mut [f64]) -> Option<&mut [Self]>;
 }
 
 impl Real for f64 {
     const PRECISION: Precision = Precision::F64;
+    const ROUNDOFF: f64 = 0.0;
     const ZERO: Self = 0.0;
     const INFINITY: Self = f64::INFINITY;
     fn from_f64(value: f64) -> Self {
@@ -200,6 +208,12 @@ impl Real for f64 {
     fn sqrt(self) -> Self {
         f64::sqrt(self)
     }
+    fn abs(self) -> Self {
+        f64::abs(self)
+    }
+    fn div(self, other: Self) -> Self {
+        self / other
+    }
     fn as_self_slice(buffer: &mut [f64]) -> Option<&mut [Self]> {
         Some(buffer)
     }
@@ -207,6 +221,7 @@ impl Real for f64 {
 
 impl Real for f32 {
     const PRECISION: Precision = Precision::F32;
+    const ROUNDOFF: f64 = 5.960_464_477_539_063e-8;
     const ZERO: Self = 0.0;
     const INFINITY: Self = f32::INFINITY;
     fn from_f64(value: f64) -> Self {
@@ -217,6 +232,12 @@ impl Real for f32 {
     }
     fn sqrt(self) -> Self {
         f32::sqrt(self)
+    }
+    fn abs(self) -> Self {
+        f32::abs(self)
+    }
+    fn div(self, other: Self) -> Self {
+        self / other
     }
     fn as_self_slice(_buffer: &mut [f64]) -> Option<&mut [Self]> {
         None
@@ -232,26 +253,46 @@ struct DiscIn<R> {
     radius_sq: R,
 }
 
+/// One band's output buffers.
+struct BandOut<'a, R> {
+    /// t per pixel.
+    t: &'a mut [R],
+    /// Sphere per pixel.
+    sphere: &'a mut [u32],
+    /// Error bound of the stored t per pixel (only for types with [`Real::ROUNDOFF`] > 0).
+    t_error: &'a mut [R],
+}
+
 /// Fills one band (rows `first_row..first_row + rows`, top first) of t and sphere indices.
-#[allow(clippy::too_many_arguments)]
+///
+/// In a type with rounding coarser than f64 (f32), a pixel whose decision that type cannot make
+/// with certainty — within its error bound of a silhouette (`r² − d²`) or of a tie with the sphere
+/// already there — is re-decided in f64, so coverage is exact in every mode and only t carries
+/// the coarser rounding.
 fn rasterise_band<R: Real>(
     discs: &[Disc],
     discs_in: &[DiscIn<R>],
     list: &[u32],
     grid: &PixelGrid,
     first_row: usize,
-    t_band: &mut [R],
-    sphere_band: &mut [u32],
+    out: BandOut<'_, R>,
 ) {
     let width = grid.width_px as usize;
     let height = grid.height_px as usize;
     let pixel_size = R::from_f64(grid.pixel_size_world);
     let column_offset = R::from_f64(0.5 - 0.5 * f64::from(grid.width_px));
-    for (row_in_band, (t_row, sphere_row)) in t_band
+    let refine = R::ROUNDOFF > 0.0;
+    for (row_in_band, (t_row, sphere_row)) in out
+        .t
         .chunks_mut(width)
-        .zip(sphere_band.chunks_mut(width))
+        .zip(out.sphere.chunks_mut(width))
         .enumerate()
     {
+        let error_row: &mut [R] = if refine {
+            &mut out.t_error[row_in_band * width..(row_in_band + 1) * width]
+        } else {
+            &mut []
+        };
         let y_up = (height - 1 - (first_row + row_in_band)) as f64;
         let v = grid.v_of_row(y_up);
         let v_in = R::from_f64(v);
@@ -269,17 +310,85 @@ fn rasterise_band<R: Real>(
             let disc_in = discs_in[index as usize];
             let dv_in = v_in - disc_in.v;
             let dv_sq = dv_in * dv_in;
+            // Error bounds of R's arithmetic for this disc on this row (f64 types: zero).
+            let (coverage_tolerance, t_error_flat, t_error_steep) = if refine {
+                let radius = disc.radius_sq.sqrt();
+                let largest = disc
+                    .u
+                    .abs()
+                    .max(disc.v.abs())
+                    .max(v.abs())
+                    .max(grid.u_of_column(first as f64).abs())
+                    .max(grid.u_of_column(last as f64).abs())
+                    + radius;
+                let coverage = 32.0 * R::ROUNDOFF * largest * largest;
+                (
+                    R::from_f64(coverage),
+                    R::from_f64(8.0 * R::ROUNDOFF * (disc.w.abs() + radius)),
+                    R::from_f64(coverage),
+                )
+            } else {
+                (R::ZERO, R::ZERO, R::ZERO)
+            };
             for x in first..=last {
                 let u = (R::from_f64(x as f64) + column_offset) * pixel_size;
                 let du = u - disc_in.u;
                 let distance_sq = du * du + dv_sq;
                 let rest = disc_in.radius_sq - distance_sq;
-                let t = disc_in.w - (if rest > R::ZERO { rest } else { R::ZERO }).sqrt();
+                let root = (if rest > R::ZERO { rest } else { R::ZERO }).sqrt();
+                let t = disc_in.w - root;
+                if refine {
+                    // t's error: flat part plus the part that grows towards the silhouette.
+                    let t_error = t_error_flat + t_error_steep.div(root);
+                    let uncertain_coverage = rest.abs() <= coverage_tolerance;
+                    let uncertain_order =
+                        sphere_row[x] != NO_HIT && (t - t_row[x]).abs() <= t_error + error_row[x];
+                    if uncertain_coverage || uncertain_order {
+                        decide_in_f64(discs, disc, grid, x, v, &mut t_row[x], &mut sphere_row[x]);
+                        if sphere_row[x] == disc.sphere {
+                            error_row[x] = R::ZERO;
+                        }
+                        continue;
+                    }
+                    let closer = rest >= R::ZERO && t < t_row[x];
+                    if closer {
+                        t_row[x] = t;
+                        sphere_row[x] = disc.sphere;
+                        error_row[x] = t_error;
+                    }
+                    continue;
+                }
                 let closer = distance_sq <= disc_in.radius_sq && t < t_row[x];
                 t_row[x] = if closer { t } else { t_row[x] };
                 sphere_row[x] = if closer { disc.sphere } else { sphere_row[x] };
             }
         }
+    }
+}
+
+/// Decides pixel `x` of the row at screen v in f64: `disc` against the sphere already there.
+fn decide_in_f64<R: Real>(
+    discs: &[Disc],
+    disc: &Disc,
+    grid: &PixelGrid,
+    x: usize,
+    v: f64,
+    t_out: &mut R,
+    sphere_out: &mut u32,
+) {
+    let u = grid.u_of_column(x as f64);
+    let Some(t) = disc.hit_t(u, v) else {
+        return;
+    };
+    let current = discs
+        .get(*sphere_out as usize)
+        .and_then(|d| d.hit_t(u, v))
+        .unwrap_or(f64::INFINITY);
+    if t < current {
+        *t_out = R::from_f64(t);
+        *sphere_out = disc.sphere;
+    } else if current.is_finite() {
+        *t_out = R::from_f64(current);
     }
 }
 
@@ -327,26 +436,23 @@ fn rasterise_frame<R: Real>(
             let list = &bands.indices[bands.offsets[band]..bands.offsets[band + 1]];
             let first_row = band * BAND_ROWS;
             match R::as_self_slice(t_band) {
-                Some(t_in_place) => rasterise_band(
-                    discs,
-                    &discs_in,
-                    list,
-                    &grid,
-                    first_row,
-                    t_in_place,
-                    sphere_band,
-                ),
+                Some(t_in_place) => {
+                    let out = BandOut {
+                        t: t_in_place,
+                        sphere: sphere_band,
+                        t_error: &mut [],
+                    };
+                    rasterise_band(discs, &discs_in, list, &grid, first_row, out);
+                }
                 None => {
                     let mut scratch = vec![R::INFINITY; t_band.len()];
-                    rasterise_band(
-                        discs,
-                        &discs_in,
-                        list,
-                        &grid,
-                        first_row,
-                        &mut scratch,
-                        sphere_band,
-                    );
+                    let mut t_error = vec![R::ZERO; t_band.len()];
+                    let out = BandOut {
+                        t: &mut scratch,
+                        sphere: sphere_band,
+                        t_error: &mut t_error,
+                    };
+                    rasterise_band(discs, &discs_in, list, &grid, first_row, out);
                     for (out, value) in t_band.iter_mut().zip(&scratch) {
                         *out = value.to_f64();
                     }
