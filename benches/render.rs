@@ -5,6 +5,9 @@
 use std::hint::black_box;
 use std::path::Path;
 
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 use criterion::{Criterion, criterion_group, criterion_main};
 use raytracer::depth::DepthRange;
 use raytracer::render::reference::render_reference;

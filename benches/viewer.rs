@@ -6,6 +6,9 @@ use std::hint::black_box;
 use std::path::Path;
 use std::sync::Arc;
 
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 use criterion::{Criterion, criterion_group, criterion_main};
 use raytracer::app::job::{ViewerJob, prepare_frame};
 use raytracer::depth::DepthRange;

@@ -4,6 +4,9 @@
 
 use std::process::ExitCode;
 
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 use raytracer::cli::{Command, parse_command, usage};
 
 fn main() -> ExitCode {

@@ -5,6 +5,7 @@
 use std::sync::Arc;
 
 use egui::{Color32, ColorImage};
+use rayon::prelude::*;
 
 use crate::render::worker::{RenderResult, RenderWorker};
 use crate::render::{Frame, Quality, View, ViewError, render_with};
@@ -48,7 +49,7 @@ pub fn prepare_frame(job: &ViewerJob) -> JobOutput {
         size,
         frame
             .colour
-            .iter()
+            .par_iter()
             .map(|&[r, g, b]| Color32::from_rgb(r, g, b))
             .collect(),
     );
@@ -57,7 +58,7 @@ pub fn prepare_frame(job: &ViewerJob) -> JobOutput {
         size,
         frame
             .t
-            .iter()
+            .par_iter()
             .map(|&t| Color32::from_gray(range.grey_u8(t)))
             .collect(),
     );
