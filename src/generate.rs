@@ -56,9 +56,9 @@ pub fn random_scene(seed: u64, count: usize) -> Scene {
             let hue = i as f32 / 16.0;
             Material {
                 diffuse_colour: Vec3::new(
-                    0.5 + 0.5 * (6.283 * hue).cos(),
-                    0.5 + 0.5 * (6.283 * (hue + 0.33)).cos(),
-                    0.5 + 0.5 * (6.283 * (hue + 0.67)).cos(),
+                    0.5 + 0.5 * (std::f32::consts::TAU * hue).cos(),
+                    0.5 + 0.5 * (std::f32::consts::TAU * (hue + 0.33)).cos(),
+                    0.5 + 0.5 * (std::f32::consts::TAU * (hue + 0.67)).cos(),
                 ),
             }
         })

@@ -61,7 +61,7 @@ fn view_of(scene: &Scene, width_px: u32, height_px: u32) -> View {
         height_px,
         DepthRange::new(0.0, 1.0),
     );
-    view.depth_range = initial_depth_range(&scene, &view);
+    view.depth_range = initial_depth_range(scene, &view);
     view
 }
 
