@@ -9,7 +9,7 @@ use glam::DVec3;
 use crate::camera::CameraBasis;
 use crate::depth::DepthRange;
 use crate::render::View;
-use crate::scene::{Bounds, Scene};
+use crate::scene::{Bounds, MAX_MAGNITUDE, Scene};
 
 /// The box the viewer explores: the spheres' bounds, or a unit box around the camera centre for
 /// a scene without spheres. Never empty (a single point is grown to a unit box).
@@ -42,11 +42,22 @@ pub struct SliderRanges {
     pub depth_t: RangeInclusive<f64>,
 }
 
+/// `range` widened to contain `value`, if `value` is a usable number (finite and at most
+/// [`MAX_MAGNITUDE`] in magnitude; slider ranges stay where arithmetic cannot overflow).
 fn widen_to(range: RangeInclusive<f64>, value: f64) -> RangeInclusive<f64> {
-    if value.is_finite() {
+    if value.abs() <= MAX_MAGNITUDE {
         range.start().min(value)..=range.end().max(value)
     } else {
         range
+    }
+}
+
+/// `range` if both ends are finite and ordered, else `fallback`.
+fn finite_or(range: RangeInclusive<f64>, fallback: RangeInclusive<f64>) -> RangeInclusive<f64> {
+    if range.start().is_finite() && range.end().is_finite() && range.start() <= range.end() {
+        range
+    } else {
+        fallback
     }
 }
 
@@ -59,7 +70,12 @@ impl SliderRanges {
             let range = extent.min_world[axis] - diagonal..=extent.max_world[axis] + diagonal;
             widen_to(range, view.center_world[axis])
         });
-        let size_world = widen_to(1e-3 * diagonal..=10.0 * diagonal, view.size_world);
+        let size_world = 1e-3 * diagonal..=10.0 * diagonal;
+        let size_world = if view.size_world > 0.0 {
+            widen_to(size_world, view.size_world)
+        } else {
+            size_world
+        };
         let radius = 0.5 * diagonal;
         let depth_t = match CameraBasis::new(view.direction_world, view.up_world) {
             Ok(basis) => {
@@ -68,6 +84,7 @@ impl SliderRanges {
             }
             Err(_) => -diagonal..=diagonal,
         };
+        let depth_t = finite_or(depth_t, -diagonal..=diagonal);
         let depth_t = widen_to(
             widen_to(depth_t, view.depth_range.min_t),
             view.depth_range.max_t,
@@ -140,6 +157,37 @@ mod tests {
         assert!(ranges.depth_t.contains(&9.0) && ranges.depth_t.contains(&10.0));
         // Depth slider centred on the scene's centre t (10).
         assert!((ranges.depth_t.start() + ranges.depth_t.end() - 20.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn hostile_views_still_give_finite_ordered_ranges() {
+        let scene = course_scene_1_01();
+        let good = View::of_camera(&scene.camera, 10, 10, DepthRange::new(9.0, 10.0));
+        for value in [f64::NAN, f64::INFINITY, -1e308, 1e308, 0.0, -5.0] {
+            let view = View {
+                center_world: DVec3::splat(value),
+                size_world: value,
+                depth_range: DepthRange::new(value, -value),
+                direction_world: DVec3::new(value, 1.0, -1.0),
+                ..good
+            };
+            let ranges = SliderRanges::new(&scene, &view);
+            let all = ranges
+                .center_world
+                .iter()
+                .chain([&ranges.size_world, &ranges.depth_t]);
+            for range in all {
+                assert!(
+                    range.start().is_finite() && range.end().is_finite(),
+                    "{value}: {range:?}"
+                );
+                assert!(range.start() <= range.end());
+            }
+            assert!(
+                *ranges.size_world.start() > 0.0,
+                "logarithmic size range stays positive"
+            );
+        }
     }
 
     #[test]

@@ -97,20 +97,45 @@ pub fn write_image(path: &Path, image: &RgbImage) -> Result<(), ExportError> {
     write_atomically(path, &bytes)
 }
 
+/// The folder a destination path writes into (`.` for a bare file name).
+fn folder_of(path: &Path) -> &Path {
+    match path.parent() {
+        Some(parent) if !parent.as_os_str().is_empty() => parent,
+        _ => Path::new("."),
+    }
+}
+
+/// Checks, without touching `path`, that a file could be written there: the format is known,
+/// `path` is not a folder, and a temporary file can be created (and is removed) in its folder.
+pub fn check_writable(path: &Path) -> Result<(), ExportError> {
+    ImageFormat::from_path(path)?;
+    let io_error = |source| ExportError::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    if path.is_dir() {
+        return Err(io_error(std::io::Error::new(
+            std::io::ErrorKind::IsADirectory,
+            "is a folder",
+        )));
+    }
+    tempfile::Builder::new()
+        .prefix(".raytracer-check-")
+        .tempfile_in(folder_of(path))
+        .map(drop)
+        .map_err(io_error)
+}
+
 /// Writes `bytes` to `path` through a temporary file in the same folder and a rename.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), ExportError> {
     let io_error = |source| ExportError::Io {
         path: path.to_path_buf(),
         source,
     };
-    let folder = match path.parent() {
-        Some(parent) if !parent.as_os_str().is_empty() => parent,
-        _ => Path::new("."),
-    };
     let mut temporary = tempfile::Builder::new()
         .prefix(".raytracer-")
         .suffix(".tmp")
-        .tempfile_in(folder)
+        .tempfile_in(folder_of(path))
         .map_err(io_error)?;
     temporary.write_all(bytes).map_err(io_error)?;
     temporary.as_file().sync_all().map_err(io_error)?;
@@ -184,6 +209,19 @@ mod tests {
 
     fn sample_image() -> RgbImage {
         RgbImage::from_fn(3, 2, |x, y| Rgb([x as u8 * 100, y as u8 * 200, 7]))
+    }
+
+    #[test]
+    fn writability_is_checked_without_leaving_files() {
+        let folder = tempfile::tempdir().unwrap();
+        assert!(check_writable(&folder.path().join("a.png")).is_ok());
+        assert!(check_writable(&folder.path().join("missing/a.png")).is_err());
+        assert!(check_writable(&folder.path().join("a.gif")).is_err());
+        std::fs::create_dir(folder.path().join("d.png")).unwrap();
+        let error = check_writable(&folder.path().join("d.png")).unwrap_err();
+        assert!(error.to_string().contains("is a folder"), "{error}");
+        let names: Vec<_> = std::fs::read_dir(folder.path()).unwrap().collect();
+        assert_eq!(names.len(), 1, "only the folder d.png: {names:?}");
     }
 
     #[test]

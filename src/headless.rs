@@ -5,7 +5,7 @@ use std::time::{Duration, Instant};
 
 use crate::cli::RenderRequest;
 use crate::depth::DepthRange;
-use crate::export::{ExportError, write_image};
+use crate::export::{ExportError, check_writable, write_image};
 use crate::render::{View, ViewError, render_with};
 use crate::scene::{LoadError, Scene, load_scene};
 
@@ -51,8 +51,16 @@ pub fn request_view(scene: &Scene, request: &RenderRequest) -> View {
     View::of_camera(&scene.camera, request.width_px, request.height_px, range)
 }
 
-/// Runs a headless render request.
+/// Runs a headless render request. Every output is checked for writability first, so a run that
+/// cannot write all its files writes none.
 pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
+    let outputs = request
+        .colour_output
+        .iter()
+        .chain(request.depth_output.iter().map(|depth| &depth.path));
+    for path in outputs {
+        check_writable(path)?;
+    }
     let started = Instant::now();
     let scene = load_scene(&request.input)?;
     let parse = started.elapsed();

@@ -2,18 +2,26 @@
 //! window; otherwise it opens the viewer (feature `gui`). Exit status: 0 success, 1 scene or file
 //! error, 2 usage error.
 
+#![deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
 use std::process::ExitCode;
 
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
-use raytracer::cli::{Command, parse_command, usage};
+use raytracer::cli::{Command, UsageError, parse_command, usage};
 
 fn main() -> ExitCode {
     let command = match parse_command(std::env::args_os().skip(1)) {
         Ok(command) => command,
         Err(error) => {
             eprintln!("raytracer: {error}");
+            if matches!(
+                error,
+                UsageError::UnknownFlag(_) | UsageError::StrayArgument(_)
+            ) {
+                eprint!("\n{}", usage());
+            }
             return ExitCode::from(2);
         }
     };

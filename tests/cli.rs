@@ -98,10 +98,48 @@ fn usage_errors_exit_two_with_one_line_and_write_nothing() {
             stderr(&output)
         );
         let message = stderr(&output);
-        assert_eq!(message.lines().count(), 1, "{arguments:?}: {message}");
         assert!(message.starts_with("raytracer: "), "{message}");
+        // One line; an unknown flag adds the usage text after a blank line.
+        if arguments.contains(&"-bogus") {
+            assert!(message.contains("\nusage:"), "{message}");
+        } else {
+            assert_eq!(message.lines().count(), 1, "{arguments:?}: {message}");
+        }
     }
     assert!(files_in(folder.path()).is_empty());
+}
+
+#[test]
+fn an_unwritable_output_is_refused_before_any_file_is_written() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_01.txt");
+    std::fs::create_dir(folder.path().join("folder.png")).unwrap();
+    for depth in ["missing/d.png", "folder.png"] {
+        let output = run(
+            folder.path(),
+            &[
+                "-input",
+                scene.to_str().unwrap(),
+                "-output",
+                "c.png",
+                "-depth",
+                "9",
+                "10",
+                depth,
+            ],
+        );
+        assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+        assert!(
+            stderr(&output).contains("cannot write"),
+            "{}",
+            stderr(&output)
+        );
+        assert_eq!(
+            files_in(folder.path()),
+            ["folder.png"],
+            "c.png must not be written"
+        );
+    }
 }
 
 #[test]

@@ -72,7 +72,10 @@ fn assert_shows_current_view(harness: &Harness<'static, ViewerApp>) {
     let (frame, view) = shown(harness);
     assert_eq!(view, *app.view());
     let expected = render(&app.loaded_scene().scene, &view).unwrap();
-    assert_eq!(frame, expected);
+    assert!(
+        frame == expected,
+        "the frame on screen is not the library's render of the view"
+    );
 }
 
 #[test]
@@ -203,8 +206,11 @@ fn export_writes_colour_and_depth_with_the_expected_pixels() {
     let both = image::open(folder.path().join("shot_both.png"))
         .unwrap()
         .to_rgb8();
-    assert_eq!(colour, frame.colour_image());
-    assert_eq!(depth, frame.depth_image(view.depth_range));
+    assert!(colour == frame.colour_image(), "exported colour pixels");
+    assert!(
+        depth == frame.depth_image(view.depth_range),
+        "exported depth pixels"
+    );
     assert_eq!(both.dimensions(), (2 * view.width_px, view.height_px));
 }
 
@@ -272,7 +278,7 @@ fn broken_scene_shows_its_error_and_keeps_the_previous_frame() {
         Some(scene_path("scene1_02.txt"))
     );
     let (after, _) = shown(&harness);
-    assert_eq!(before, after);
+    assert!(before == after, "the previous frame stays");
 
     // Fixing the file and opening it again clears the error.
     std::fs::write(&broken, std::fs::read(scene_path("scene1_01.txt")).unwrap()).unwrap();
@@ -291,5 +297,69 @@ fn resizing_the_window_re_renders_at_the_new_size() {
     settle(&mut harness);
     let (_, after) = shown(&harness);
     assert!(after.width_px < before.width_px && after.height_px < before.height_px);
+    assert_shows_current_view(&harness);
+}
+
+/// Steps the UI until `condition` holds (file events arrive on another thread).
+fn wait_until(harness: &mut Harness<'static, ViewerApp>, condition: impl Fn(&ViewerApp) -> bool) {
+    let deadline = Instant::now() + Duration::from_secs(20);
+    while !condition(harness.state()) {
+        assert!(Instant::now() < deadline, "condition not reached");
+        harness.step();
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+#[test]
+fn live_reload_keeps_the_last_good_scene_when_the_file_turns_into_garbage() {
+    let folder = tempfile::tempdir().unwrap();
+    let live = folder.path().join("live.txt");
+    std::fs::copy(scene_path("scene1_02.txt"), &live).unwrap();
+    let mut harness = viewer(Some(live.clone()));
+    let (before, _) = shown(&harness);
+
+    std::fs::write(&live, b"OrthographicCamera {\n center 0 0 \xff\xfe garbage").unwrap();
+    wait_until(&mut harness, |app| app.scene_error().is_some());
+    let error = harness.state().scene_error().unwrap().to_owned();
+    assert!(
+        error.starts_with(&format!("{}:2:", live.display())),
+        "{error}"
+    );
+    assert_eq!(harness.state().loaded_scene().scene.spheres.len(), 5);
+    settle(&mut harness);
+    // The error banner takes some height, so the frame is re-rendered, from the last good scene.
+    assert_shows_current_view(&harness);
+    let (after, _) = shown(&harness);
+    let hits = |frame: &Frame| {
+        frame
+            .sphere
+            .iter()
+            .filter(|&&s| s != raytracer::render::NO_HIT)
+            .count()
+    };
+    assert!(
+        hits(&after) > hits(&before) / 2,
+        "the last good scene stays on screen"
+    );
+
+    // Saving a good file again reloads it and clears the error.
+    std::fs::write(&live, std::fs::read(scene_path("scene1_01.txt")).unwrap()).unwrap();
+    wait_until(&mut harness, |app| {
+        app.scene_error().is_none() && app.loaded_scene().scene.spheres.len() == 1
+    });
+    settle(&mut harness);
+    assert_shows_current_view(&harness);
+}
+
+#[test]
+fn reload_button_reads_the_file_again() {
+    let folder = tempfile::tempdir().unwrap();
+    let file = folder.path().join("scene.txt");
+    std::fs::copy(scene_path("scene1_01.txt"), &file).unwrap();
+    let mut harness = viewer(Some(file.clone()));
+    std::fs::write(&file, std::fs::read(scene_path("scene1_02.txt")).unwrap()).unwrap();
+    click(&mut harness, "Reload");
+    settle(&mut harness);
+    assert_eq!(harness.state().loaded_scene().scene.spheres.len(), 5);
     assert_shows_current_view(&harness);
 }

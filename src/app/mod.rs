@@ -10,6 +10,7 @@
 pub mod dialogs;
 pub mod job;
 pub mod panels;
+pub mod reload;
 pub mod state;
 
 use std::path::{Path, PathBuf};
@@ -76,6 +77,7 @@ pub struct ViewerApp {
     dialog: Option<PendingDialog>,
     dialog_note: Option<&'static str>,
     export_job: Option<Receiver<Result<Vec<PathBuf>, String>>>,
+    watcher: Option<reload::FileWatcher>,
     ctx: egui::Context,
 }
 
@@ -117,6 +119,7 @@ impl ViewerApp {
             dialog: None,
             dialog_note: dialog_unavailable_reason(),
             export_job: None,
+            watcher: None,
             ctx: cc.egui_ctx.clone(),
         };
         let startup_scene = request.input.or_else(|| app.settings.last_scene.clone());
@@ -184,16 +187,12 @@ impl ViewerApp {
     }
 
     /// Loads the scene at `path`; on failure the error is shown and the previous scene stays.
+    /// The file is then watched and reloaded when it changes on disk.
     pub fn open(&mut self, path: &Path) {
         let size = (self.view.width_px, self.view.height_px);
         match LoadedScene::load(path, size) {
             Ok(loaded) => {
-                self.loaded = loaded;
-                self.view = self.loaded.file_view;
-                self.view.width_px = size.0;
-                self.view.height_px = size.1;
-                self.scene_epoch += 1;
-                self.scene_error = None;
+                self.adopt(loaded, false);
                 self.settings.last_scene = Some(path.to_path_buf());
                 self.path_text = path.display().to_string();
                 self.ctx
@@ -201,9 +200,58 @@ impl ViewerApp {
                         "raytracer — {}",
                         path.display()
                     )));
+                let ctx = self.ctx.clone();
+                self.watcher = match reload::FileWatcher::watch(path, move || ctx.request_repaint())
+                {
+                    Ok(watcher) => Some(watcher),
+                    Err(error) => {
+                        self.message = Some((format!("live reload is off: {error}"), true));
+                        None
+                    }
+                };
             }
             Err(error) => self.scene_error = Some(error.to_string()),
         }
+    }
+
+    /// Reads the open file again. A broken file shows its error and the last good scene stays;
+    /// a good one replaces the scene and keeps the user's camera unless it was still the file's.
+    pub fn reload(&mut self) {
+        let Some(path) = self.loaded.path.clone() else {
+            self.message = Some((
+                "the embedded default scene has no file to reload".into(),
+                false,
+            ));
+            return;
+        };
+        let size = (self.view.width_px, self.view.height_px);
+        match LoadedScene::load(&path, size) {
+            Ok(loaded) => {
+                let still_file_view = View {
+                    width_px: self.loaded.file_view.width_px,
+                    height_px: self.loaded.file_view.height_px,
+                    ..self.view
+                } == self.loaded.file_view;
+                self.adopt(loaded, !still_file_view);
+                self.message = Some((format!("reloaded {}", path.display()), false));
+            }
+            Err(error) => self.scene_error = Some(error.to_string()),
+        }
+    }
+
+    /// Puts `loaded` on screen; `keep_view` keeps the current camera and depth range.
+    fn adopt(&mut self, loaded: LoadedScene, keep_view: bool) {
+        let (width_px, height_px) = (self.view.width_px, self.view.height_px);
+        self.loaded = loaded;
+        if !keep_view {
+            self.view = View {
+                width_px,
+                height_px,
+                ..self.loaded.file_view
+            };
+        }
+        self.scene_epoch += 1;
+        self.scene_error = None;
     }
 
     /// Restores the file's camera and initial depth range, keeping the image size.
@@ -392,10 +440,12 @@ impl ViewerApp {
     fn handle_input(&mut self, ctx: &egui::Context) {
         let open = KeyboardShortcut::new(Modifiers::COMMAND, Key::O);
         let save = KeyboardShortcut::new(Modifiers::COMMAND, Key::S);
-        let (open_pressed, save_pressed, dropped) = ctx.input_mut(|input| {
+        let reload = KeyboardShortcut::new(Modifiers::COMMAND, Key::R);
+        let (open_pressed, save_pressed, reload_pressed, dropped) = ctx.input_mut(|input| {
             (
                 input.consume_shortcut(&open),
                 input.consume_shortcut(&save),
+                input.consume_shortcut(&reload),
                 input
                     .raw
                     .dropped_files
@@ -409,6 +459,14 @@ impl ViewerApp {
         }
         if save_pressed {
             self.open_dialog(DialogKind::Export);
+        }
+        if reload_pressed {
+            self.reload();
+        }
+        match self.watcher.as_ref().map(reload::FileWatcher::poll) {
+            Some(reload::WatchState::Changed) => self.reload(),
+            Some(reload::WatchState::Settling(wait)) => ctx.request_repaint_after(wait),
+            _ => {}
         }
         if let Some(path) = dropped {
             self.open(&path);
@@ -430,6 +488,15 @@ impl ViewerApp {
                 .clicked()
             {
                 self.open_dialog(DialogKind::Export);
+            }
+            if ui
+                .button("Reload")
+                .on_hover_text(
+                    "Read the scene file again (Ctrl+R); it also reloads by itself when it changes",
+                )
+                .clicked()
+            {
+                self.reload();
             }
             if ui
                 .button("Reset view")

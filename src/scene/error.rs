@@ -108,6 +108,9 @@ pub enum ParseErrorKind {
         /// The block's keyword.
         block: &'static str,
     },
+    /// The file holds nothing but whitespace.
+    #[error("the file is empty: a scene needs at least an OrthographicCamera block")]
+    Empty,
     /// The file has no camera.
     #[error("the scene has no OrthographicCamera block")]
     MissingCamera,

@@ -256,6 +256,9 @@ impl<'a> Parser<'a> {
             }
         }
         let Some(camera) = camera else {
+            if !(background.is_some() || materials.is_some() || group_seen) {
+                return error(Location { line: 1, column: 1 }, ParseErrorKind::Empty);
+            }
             return error(self.lexer.here(), ParseErrorKind::MissingCamera);
         };
         let materials = materials.unwrap_or_default();

@@ -346,6 +346,20 @@ fn binary_garbage_is_not_text() {
 }
 
 #[test]
+fn empty_files_say_so() {
+    for text in ["", "   \n\t\n"] {
+        assert_eq!(
+            fail(text),
+            (
+                1,
+                1,
+                "the file is empty: a scene needs at least an OrthographicCamera block".into()
+            )
+        );
+    }
+}
+
+#[test]
 fn long_tokens_are_shortened_in_messages() {
     let long = "x".repeat(500);
     let (_, _, message) = fail(&long);
