@@ -62,7 +62,10 @@ impl Mode {
     }
 
     fn render(self, scene: &Scene, view: &View) -> Frame {
-        let quality = |precision| Quality { precision };
+        let quality = |precision| Quality {
+            precision,
+            ..Default::default()
+        };
         match self {
             Mode::F64 => render_with(scene, view, &quality(Precision::F64)),
             Mode::F32 => render_with(scene, view, &quality(Precision::F32)),
@@ -320,7 +323,10 @@ fn time_modes() -> Result<Vec<Timing>, Box<dyn std::error::Error>> {
         let mut view = View::of_camera(&scene.camera, size_px, size_px, DepthRange::new(0.0, 1.0));
         view.depth_range = initial_depth_range(&scene, &view);
         let time = |precision| {
-            let quality = Quality { precision };
+            let quality = Quality {
+                precision,
+                ..Default::default()
+            };
             median_ms(|| {
                 std::hint::black_box(render_with(&scene, &view, &quality).ok());
             })
@@ -330,6 +336,7 @@ fn time_modes() -> Result<Vec<Timing>, Box<dyn std::error::Error>> {
             &view,
             &Quality {
                 precision: Precision::Auto,
+                ..Default::default()
             },
         )?
         .precision;

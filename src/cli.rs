@@ -12,7 +12,10 @@ use std::path::PathBuf;
 
 use crate::depth::DepthRange;
 use crate::export::ImageFormat;
-use crate::render::{MAX_PIXELS, MAX_SIDE_PX, Precision, Quality, check_image_size};
+use crate::render::sampling::SamplingError;
+use crate::render::{
+    Filter, MAX_PIXELS, MAX_SIDE_PX, Precision, Quality, Sampler, Sampling, check_image_size,
+};
 
 /// One flag: its spelling, how many values follow it, and its line in the usage text.
 struct FlagSpec {
@@ -46,6 +49,41 @@ const FLAGS: &[FlagSpec] = &[
         name: "-precision",
         values: 1,
         usage: "-precision f64|f32|auto  per-pixel arithmetic (default f64: exact)",
+    },
+    FlagSpec {
+        name: "-uniform_samples",
+        values: 1,
+        usage: "-uniform_samples N       supersample on an n×n grid (N = n²)",
+    },
+    FlagSpec {
+        name: "-jittered_samples",
+        values: 1,
+        usage: "-jittered_samples N      one random sample in each cell of an n×n grid (N = n²)",
+    },
+    FlagSpec {
+        name: "-random_samples",
+        values: 1,
+        usage: "-random_samples N        N random samples per pixel",
+    },
+    FlagSpec {
+        name: "-box_filter",
+        values: 1,
+        usage: "-box_filter R            reconstruction filter, half-width R pixels (default 0.5)",
+    },
+    FlagSpec {
+        name: "-tent_filter",
+        values: 1,
+        usage: "-tent_filter R           tent filter of radius R pixels",
+    },
+    FlagSpec {
+        name: "-gaussian_filter",
+        values: 1,
+        usage: "-gaussian_filter SIGMA   Gaussian filter, sigma in pixels (support 2·sigma)",
+    },
+    FlagSpec {
+        name: "-stats",
+        values: 0,
+        usage: "-stats                   print timings and counts after rendering",
     },
     FlagSpec {
         name: "-help",
@@ -151,6 +189,12 @@ pub enum UsageError {
     /// A precision that is not f64, f32 or auto.
     #[error("-precision: expected f64, f32 or auto, found '{0}'")]
     BadPrecision(String),
+    /// Two flags that exclude each other.
+    #[error("{0} and {1} exclude each other: give one")]
+    Conflicting(&'static str, &'static str),
+    /// Unusable sampling settings.
+    #[error("{0}")]
+    BadSampling(#[from] SamplingError),
 }
 
 /// The depth image to write.
@@ -177,6 +221,8 @@ pub struct RenderRequest {
     pub depth_output: Option<DepthOutput>,
     /// Precision and other quality knobs.
     pub quality: Quality,
+    /// Print timings and counts after rendering.
+    pub stats: bool,
 }
 
 /// Opening the viewer.
@@ -306,8 +352,70 @@ impl RawArgs {
             depth_output,
             quality: Quality {
                 precision: precision.unwrap_or_default(),
+                sampling: self.sampling()?,
             },
+            stats: self.values.contains_key("-stats"),
         }))
+    }
+
+    /// The one flag of `names` that is given, if any; two of them are a conflict.
+    fn one_of(&self, names: &[&'static str]) -> Result<Option<&'static str>, UsageError> {
+        let given: Vec<&'static str> = names
+            .iter()
+            .copied()
+            .filter(|name| self.values.contains_key(name))
+            .collect();
+        match given.as_slice() {
+            [] => Ok(None),
+            [one] => Ok(Some(one)),
+            [first, second, ..] => Err(UsageError::Conflicting(first, second)),
+        }
+    }
+
+    /// Supersampling from the course's sampler and filter flags; `None` without either.
+    fn sampling(&self) -> Result<Option<Sampling>, UsageError> {
+        let sampler_flag =
+            self.one_of(&["-uniform_samples", "-jittered_samples", "-random_samples"])?;
+        let filter_flag = self.one_of(&["-box_filter", "-tent_filter", "-gaussian_filter"])?;
+        if sampler_flag.is_none() && filter_flag.is_none() {
+            return Ok(None);
+        }
+        let (sampler, samples) = match sampler_flag {
+            Some(flag) => {
+                let text = self.text(flag, 0)?;
+                let samples = text.parse::<u32>().map_err(|_| UsageError::BadNumber {
+                    flag,
+                    what: "a whole number of samples",
+                    found: text.to_owned(),
+                })?;
+                let sampler = match flag {
+                    "-uniform_samples" => Sampler::Uniform,
+                    "-jittered_samples" => Sampler::Jittered,
+                    _ => Sampler::Random,
+                };
+                (sampler, samples)
+            }
+            None => (Sampler::Uniform, 1),
+        };
+        let filter = match filter_flag {
+            Some(flag) => {
+                let size = self.finite(flag, 0, "a size in pixels")? as f32;
+                match flag {
+                    "-box_filter" => Filter::Box { radius: size },
+                    "-tent_filter" => Filter::Tent { radius: size },
+                    _ => Filter::Gaussian { sigma: size },
+                }
+            }
+            None => Filter::PIXEL_BOX,
+        };
+        let sampling = Sampling {
+            sampler,
+            samples,
+            filter,
+            seed: 0,
+        };
+        sampling.validate()?;
+        Ok(Some(sampling))
     }
 
     fn value(&self, flag: &str, index: usize) -> Option<&OsString> {
@@ -408,6 +516,7 @@ mod tests {
                     path: "depth.tga".into()
                 }),
                 quality: Quality::default(),
+                stats: false,
             })
         );
     }
@@ -431,6 +540,28 @@ mod tests {
             panic!("expected a render request");
         };
         assert_eq!(request.quality.precision, Precision::Auto);
+    }
+
+    #[test]
+    fn course_sampling_flags_give_a_sampling() {
+        let Command::Render(request) =
+            parse("-input a.txt -output x.png -jittered_samples 16 -gaussian_filter 0.8 -stats")
+                .unwrap()
+        else {
+            panic!("expected a render request");
+        };
+        let sampling = request.quality.sampling.unwrap();
+        assert_eq!(sampling.sampler, Sampler::Jittered);
+        assert_eq!(sampling.samples, 16);
+        assert_eq!(sampling.filter, Filter::Gaussian { sigma: 0.8 });
+        assert!(request.stats);
+        let Command::Render(request) = parse("-input a.txt -output x.png").unwrap() else {
+            panic!("expected a render request");
+        };
+        assert_eq!(
+            request.quality.sampling, None,
+            "no flags: one centre sample"
+        );
     }
 
     #[test]

@@ -34,6 +34,38 @@ pub struct RunReport {
     pub render: Duration,
     /// Time to encode and write the images.
     pub write: Duration,
+    /// Image size.
+    pub size_px: (u32, u32),
+    /// Samples per pixel (1 without supersampling).
+    pub samples_per_pixel: u32,
+    /// Worker threads rendering used.
+    pub threads: usize,
+    /// Sphere/disc tests performed.
+    pub disc_tests: u64,
+    /// The precision used.
+    pub precision: crate::render::Precision,
+}
+
+impl RunReport {
+    /// The `-stats` lines: one `name: value` per line.
+    pub fn stats_lines(&self) -> String {
+        let ms = |d: Duration| format!("{:.3}", d.as_secs_f64() * 1e3);
+        [
+            ("parse_ms", ms(self.parse)),
+            ("render_ms", ms(self.render)),
+            ("write_ms", ms(self.write)),
+            ("spheres", self.sphere_count.to_string()),
+            ("width", self.size_px.0.to_string()),
+            ("height", self.size_px.1.to_string()),
+            ("samples_per_pixel", self.samples_per_pixel.to_string()),
+            ("threads", self.threads.to_string()),
+            ("disc_tests", self.disc_tests.to_string()),
+            ("precision", self.precision.to_string()),
+        ]
+        .iter()
+        .map(|(name, value)| format!("{name}: {value}\n"))
+        .collect()
+    }
 }
 
 /// The depth range used when only a colour image is asked for (it does not affect the output).
@@ -89,5 +121,10 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
         parse,
         render,
         write: started.elapsed(),
+        size_px: (request.width_px, request.height_px),
+        samples_per_pixel: request.quality.sampling.map_or(1, |s| s.samples),
+        threads: rayon::current_num_threads(),
+        disc_tests: frame.disc_tests,
+        precision: frame.precision,
     })
 }

@@ -31,7 +31,12 @@ fn main() -> ExitCode {
             ExitCode::SUCCESS
         }
         Command::Render(request) => match raytracer::headless::run(&request) {
-            Ok(_) => ExitCode::SUCCESS,
+            Ok(report) => {
+                if request.stats {
+                    print!("{}", report.stats_lines());
+                }
+                ExitCode::SUCCESS
+            }
             Err(error) => {
                 eprintln!("raytracer: {error}");
                 ExitCode::from(1)

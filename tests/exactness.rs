@@ -141,6 +141,7 @@ fn assert_exact(name: &str, scene: &Scene, view: &View) {
         view,
         &Quality {
             precision: Precision::Auto,
+            ..Default::default()
         },
     )
     .unwrap();
@@ -282,6 +283,7 @@ fn extreme_narrow_depth_range_far_away() {
         &view,
         &Quality {
             precision: Precision::F32,
+            ..Default::default()
         },
     )
     .unwrap();
@@ -296,6 +298,7 @@ fn extreme_narrow_depth_range_far_away() {
         &view,
         &Quality {
             precision: Precision::Auto,
+            ..Default::default()
         },
     )
     .unwrap();
@@ -381,6 +384,7 @@ fn seeded_cases_agree_with_the_reference_and_have_no_nan() {
             &view,
             &Quality {
                 precision: Precision::F32,
+                ..Default::default()
             },
         )
         .unwrap();

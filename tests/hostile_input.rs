@@ -32,7 +32,14 @@ fn exercise(bytes: &[u8]) -> bool {
             let mut view = View::of_camera(&scene.camera, 24, 16, DepthRange::new(0.0, 1.0));
             view.depth_range = raytracer::explore::initial_depth_range(&scene, &view);
             for precision in Precision::ALL {
-                if let Ok(frame) = render_with(&scene, &view, &Quality { precision }) {
+                if let Ok(frame) = render_with(
+                    &scene,
+                    &view,
+                    &Quality {
+                        precision,
+                        ..Default::default()
+                    },
+                ) {
                     assert!(frame.t.iter().all(|t| !t.is_nan()), "NaN t");
                     let _ = frame.depth_image(view.depth_range);
                 }

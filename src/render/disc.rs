@@ -19,7 +19,6 @@ use std::ops::{Add, Mul, Sub};
 
 use rayon::prelude::*;
 
-use super::precision::f32_is_safe;
 use super::{Frame, NO_HIT, Precision, View, ViewError};
 use crate::camera::{CameraBasis, PixelGrid};
 use crate::depth::quantize_f32;
@@ -276,7 +275,8 @@ fn rasterise_band<R: Real>(
     grid: &PixelGrid,
     first_row: usize,
     out: BandOut<'_, R>,
-) {
+) -> u64 {
+    let mut disc_tests = 0u64;
     let width = grid.width_px as usize;
     let height = grid.height_px as usize;
     let pixel_size = R::from_f64(grid.pixel_size_world);
@@ -307,6 +307,7 @@ fn rasterise_band<R: Real>(
             let Some((first, last)) = column_span(grid, disc.u, chord_sq.max(0.0).sqrt()) else {
                 continue;
             };
+            disc_tests += (last - first + 1) as u64;
             let disc_in = discs_in[index as usize];
             let dv_in = v_in - disc_in.v;
             let dv_sq = dv_in * dv_in;
@@ -364,6 +365,7 @@ fn rasterise_band<R: Real>(
             }
         }
     }
+    disc_tests
 }
 
 /// Decides pixel `x` of the row at screen v in f64: `disc` against the sphere already there.
@@ -392,23 +394,8 @@ fn decide_in_f64<R: Real>(
     }
 }
 
-/// Renders with projected discs in the per-pixel precision `R` (see the module docs). With
-/// `auto`, switches to f32 when [`f32_is_safe`] says the frame allows it.
-pub fn render_discs_in<R: Real>(
-    scene: &Scene,
-    view: &View,
-    auto: bool,
-) -> Result<Frame, ViewError> {
-    let basis = view.validate()?;
-    let grid = view.grid();
-    let discs = project_discs(scene, view, &basis);
-    if auto && f32_is_safe(&discs, &grid, view.depth_range) {
-        return rasterise_frame::<f32>(scene, view, &grid, &discs);
-    }
-    rasterise_frame::<R>(scene, view, &grid, &discs)
-}
-
-fn rasterise_frame<R: Real>(
+/// Renders one centre sample per pixel from projected `discs`, per-pixel arithmetic in `R`.
+pub(crate) fn rasterise_frame<R: Real>(
     scene: &Scene,
     view: &View,
     grid: &PixelGrid,
@@ -429,10 +416,11 @@ fn rasterise_frame<R: Real>(
     let height = view.height_px as usize;
     let mut t = vec![f64::INFINITY; width * height];
     let mut sphere = vec![NO_HIT; width * height];
-    t.par_chunks_mut(width * BAND_ROWS)
+    let disc_tests = t
+        .par_chunks_mut(width * BAND_ROWS)
         .zip(sphere.par_chunks_mut(width * BAND_ROWS))
         .enumerate()
-        .for_each(|(band, (t_band, sphere_band))| {
+        .map(|(band, (t_band, sphere_band))| {
             let list = &bands.indices[bands.offsets[band]..bands.offsets[band + 1]];
             let first_row = band * BAND_ROWS;
             match R::as_self_slice(t_band) {
@@ -442,7 +430,7 @@ fn rasterise_frame<R: Real>(
                         sphere: sphere_band,
                         t_error: &mut [],
                     };
-                    rasterise_band(discs, &discs_in, list, &grid, first_row, out);
+                    rasterise_band(discs, &discs_in, list, &grid, first_row, out)
                 }
                 None => {
                     let mut scratch = vec![R::INFINITY; t_band.len()];
@@ -452,14 +440,18 @@ fn rasterise_frame<R: Real>(
                         sphere: sphere_band,
                         t_error: &mut t_error,
                     };
-                    rasterise_band(discs, &discs_in, list, &grid, first_row, out);
+                    let tests = rasterise_band(discs, &discs_in, list, &grid, first_row, out);
                     for (out, value) in t_band.iter_mut().zip(&scratch) {
                         *out = value.to_f64();
                     }
+                    tests
                 }
             }
-        });
-    Ok(frame_from_hits(scene, view, t, sphere, R::PRECISION))
+        })
+        .sum::<u64>();
+    let mut frame = frame_from_hits(scene, view, t, sphere, R::PRECISION);
+    frame.disc_tests = disc_tests;
+    Ok(frame)
 }
 
 /// Completes a frame from per-pixel t and sphere indices: colour from the sphere's material or
@@ -488,6 +480,8 @@ pub(crate) fn frame_from_hits(
         t,
         sphere,
         precision,
+        depth_grey: None,
+        disc_tests: 0,
     }
 }
 

@@ -25,6 +25,11 @@ pub struct Frame {
     pub sphere: Vec<u32>,
     /// The per-pixel precision used (`F64` or `F32`; `Auto` is resolved before rendering).
     pub precision: super::Precision,
+    /// Supersampled frames: the filtered depth grey per pixel (in [0, 1], top row first) and the
+    /// range it was mapped with. The raw `t` stays one centre sample per pixel.
+    pub depth_grey: Option<(DepthRange, Vec<f32>)>,
+    /// Sphere/disc tests performed (pixel–disc and sample–disc).
+    pub disc_tests: u64,
 }
 
 impl Frame {
@@ -45,10 +50,21 @@ impl Frame {
         })
     }
 
-    /// The 8-bit depth image over `range` (grey in all three channels), top row first.
+    /// The 8-bit depth image over `range` (grey in all three channels), top row first. A
+    /// supersampled frame uses its filtered greys when `range` is the one they were made with.
     pub fn depth_image(&self, range: DepthRange) -> RgbImage {
+        let filtered = self
+            .depth_grey
+            .as_ref()
+            .filter(|(grey_range, _)| *grey_range == range)
+            .map(|(_, grey)| grey);
         RgbImage::from_fn(self.width_px, self.height_px, |x, y| {
-            Rgb([range.grey_u8(self.t[self.storage_index(x, y)]); 3])
+            let index = self.storage_index(x, y);
+            let grey = match filtered {
+                Some(grey) => crate::depth::quantize_f32(grey[index]),
+                None => range.grey_u8(self.t[index]),
+            };
+            Rgb([grey; 3])
         })
     }
 

@@ -15,21 +15,26 @@ mod frame;
 pub mod high_precision;
 pub mod precision;
 pub mod reference;
+pub mod sampling;
 mod view;
 pub mod worker;
 
 pub use frame::{Frame, NO_HIT};
 pub use precision::Precision;
+pub use sampling::{Filter, Sampler, Sampling};
 pub use view::{MAX_PIXELS, MAX_SIDE_PX, View, ViewError, check_image_size};
 
 use crate::scene::Scene;
 
 /// How to render: the knobs that trade speed for accuracy.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 #[cfg_attr(feature = "gui", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "gui", serde(default))]
 pub struct Quality {
     /// Per-pixel arithmetic precision.
     pub precision: Precision,
+    /// Supersampling; `None` is one sample at each pixel centre (course-exact).
+    pub sampling: Option<Sampling>,
 }
 
 /// Renders `scene` through `view` in exact (f64) precision: colour, t and sphere per pixel.
@@ -39,11 +44,30 @@ pub fn render(scene: &Scene, view: &View) -> Result<Frame, ViewError> {
 }
 
 /// Renders with the given quality. `Precision::Auto` resolves per frame
-/// ([`precision::f32_is_safe`]); the frame records the precision used.
+/// ([`precision::f32_is_safe`]); the frame records the precision used. With sampling, the colour
+/// and the depth greys are supersampled ([`sampling`]) and t stays the centre sample.
 pub fn render_with(scene: &Scene, view: &View, quality: &Quality) -> Result<Frame, ViewError> {
-    match quality.precision {
-        Precision::F64 => disc::render_discs_in::<f64>(scene, view, false),
-        Precision::F32 => disc::render_discs_in::<f32>(scene, view, false),
-        Precision::Auto => disc::render_discs_in::<f64>(scene, view, true),
+    if let Some(sampling) = &quality.sampling {
+        sampling.validate()?;
     }
+    let basis = view.validate()?;
+    let grid = view.grid();
+    let discs = disc::project_discs(scene, view, &basis);
+    let use_f32 = match quality.precision {
+        Precision::F64 => false,
+        Precision::F32 => true,
+        Precision::Auto => precision::f32_is_safe(&discs, &grid, view.depth_range),
+    };
+    let mut frame = if use_f32 {
+        disc::rasterise_frame::<f32>(scene, view, &grid, &discs)?
+    } else {
+        disc::rasterise_frame::<f64>(scene, view, &grid, &discs)?
+    };
+    if let Some(sampling) = &quality.sampling {
+        let supersampled = sampling::supersample(scene, &discs, &grid, view.depth_range, sampling);
+        frame.colour = supersampled.colour;
+        frame.depth_grey = Some((view.depth_range, supersampled.depth_grey));
+        frame.disc_tests += supersampled.disc_tests;
+    }
+    Ok(frame)
 }

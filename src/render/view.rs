@@ -15,7 +15,7 @@ pub const MAX_SIDE_PX: u32 = 16_384;
 pub const MAX_PIXELS: u64 = 64 * 1024 * 1024;
 
 /// Why a [`View`] cannot be rendered.
-#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ViewError {
     /// Direction or up are unusable.
     #[error(transparent)]
@@ -40,6 +40,9 @@ pub enum ViewError {
     /// A depth-range end is not finite.
     #[error("depth range ends must be finite")]
     BadDepthRange,
+    /// Supersampling settings are unusable.
+    #[error(transparent)]
+    Sampling(#[from] super::sampling::SamplingError),
 }
 
 /// Checks an image size against [`MAX_SIDE_PX`] and [`MAX_PIXELS`].
