@@ -363,3 +363,47 @@ fn reload_button_reads_the_file_again() {
     assert_eq!(harness.state().loaded_scene().scene.spheres.len(), 5);
     assert_shows_current_view(&harness);
 }
+
+#[test]
+fn supersampling_shows_a_preview_while_moving_then_refines() {
+    let mut harness = viewer(Some(scene_path("scene1_02.txt")));
+    let quality = raytracer::render::Quality {
+        sampling: Some(raytracer::render::Sampling {
+            sampler: raytracer::render::Sampler::Jittered,
+            samples: 16,
+            filter: raytracer::render::Filter::Tent { radius: 1.0 },
+            seed: 0,
+        }),
+        ..Default::default()
+    };
+    harness.state_mut().settings_mut().quality = quality;
+    settle(&mut harness);
+    let refined = |harness: &Harness<'static, ViewerApp>| {
+        let app = harness.state();
+        let (frame, view) = shown(harness);
+        assert!(!app.showing_preview());
+        let expected =
+            raytracer::render::render_with(&app.loaded_scene().scene, &view, &quality).unwrap();
+        assert!(
+            frame == expected,
+            "the refined frame is the supersampled render"
+        );
+    };
+    refined(&harness);
+
+    // Move: the first frame of the new view is a one-sample preview.
+    harness
+        .get_by_role_and_label(Role::Slider, "centre x")
+        .set_value_accesskit(0.4);
+    harness.step();
+    wait_until(&mut harness, |app| {
+        app.shown_frame()
+            .is_some_and(|(_, view)| view.center_world.x == 0.4)
+    });
+    assert!(harness.state().showing_preview(), "a preview first");
+    let (preview, view) = shown(&harness);
+    assert!(preview == render(&harness.state().loaded_scene().scene, &view).unwrap());
+    // Still: refined to the chosen quality.
+    settle(&mut harness);
+    refined(&harness);
+}

@@ -30,6 +30,9 @@ use crate::cli::ViewerRequest;
 use crate::export::{ImageFormat, write_frame_images};
 use crate::render::{Frame, Quality, View, check_image_size};
 
+/// How long the view must stay unchanged before a preview is refined to the chosen quality.
+pub const REFINE_DELAY: Duration = Duration::from_millis(150);
+
 /// Image size used until the first layout tells the real one.
 const INITIAL_SIZE_PX: (u32, u32) = (512, 512);
 
@@ -78,6 +81,10 @@ pub struct ViewerApp {
     dialog_note: Option<&'static str>,
     export_job: Option<Receiver<Result<Vec<PathBuf>, String>>>,
     watcher: Option<reload::FileWatcher>,
+    /// When the view, scene or quality last changed (for progressive refinement).
+    last_change: std::time::Instant,
+    /// What the last change was made to.
+    last_wanted: Option<(View, u64, Quality)>,
     ctx: egui::Context,
 }
 
@@ -120,6 +127,8 @@ impl ViewerApp {
             dialog_note: dialog_unavailable_reason(),
             export_job: None,
             watcher: None,
+            last_change: std::time::Instant::now(),
+            last_wanted: None,
             ctx: cc.egui_ctx.clone(),
         };
         let startup_scene = request.input.or_else(|| app.settings.last_scene.clone());
@@ -529,8 +538,27 @@ impl ViewerApp {
         });
     }
 
+    /// Progressive refinement: while the view keeps changing, one sample per pixel (a preview);
+    /// once it has been still for [`REFINE_DELAY`], the chosen quality.
     fn submit_if_changed(&mut self) {
-        let wanted = (self.view, self.scene_epoch, self.settings.quality);
+        let chosen = (self.view, self.scene_epoch, self.settings.quality);
+        if self.last_wanted != Some(chosen) {
+            self.last_wanted = Some(chosen);
+            self.last_change = std::time::Instant::now();
+        }
+        let still_for = self.last_change.elapsed();
+        let refine = self.settings.quality.sampling.is_none() || still_for >= REFINE_DELAY;
+        let quality = if refine {
+            self.settings.quality
+        } else {
+            self.ctx
+                .request_repaint_after(REFINE_DELAY.saturating_sub(still_for));
+            Quality {
+                sampling: None,
+                ..self.settings.quality
+            }
+        };
+        let wanted = (self.view, self.scene_epoch, quality);
         if self.submitted == Some(wanted) {
             return;
         }
@@ -539,10 +567,17 @@ impl ViewerApp {
                 scene: Arc::clone(&self.loaded.scene),
                 view: self.view,
                 scene_epoch: self.scene_epoch,
-                quality: self.settings.quality,
+                quality,
             });
             self.submitted = Some(wanted);
         }
+    }
+
+    /// Whether the frame on screen is a one-sample preview of a supersampled quality.
+    pub fn showing_preview(&self) -> bool {
+        self.shown.as_ref().is_some_and(|s| {
+            s.quality.sampling.is_none() && self.settings.quality.sampling.is_some()
+        })
     }
 }
 
@@ -570,6 +605,16 @@ impl eframe::App for ViewerApp {
                 .as_ref()
                 .map(|s| [s.frame.width_px, s.frame.height_px]),
             precision: self.shown.as_ref().map(|s| s.frame.precision),
+            stage: self.shown.as_ref().map(|s| match s.quality.sampling {
+                _ if self.showing_preview() => "preview (1 sample)".to_owned(),
+                Some(sampling) => format!(
+                    "{} {} samples, {}",
+                    sampling.samples,
+                    sampling.sampler.name(),
+                    sampling.filter
+                ),
+                None => "1 sample".to_owned(),
+            }),
             sphere_count: self.loaded.scene.spheres.len(),
             scene_name: &scene_name,
             busy,

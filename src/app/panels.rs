@@ -5,7 +5,8 @@ use egui::{Color32, Rect, RichText, Sense, TextureHandle, Ui, Vec2};
 
 use super::state::{ExportFormat, ExportSettings};
 use crate::explore::SliderRanges;
-use crate::render::{MAX_SIDE_PX, Precision, Quality, View};
+use crate::render::sampling::MAX_FILTER_SIZE;
+use crate::render::{Filter, MAX_SIDE_PX, Precision, Quality, Sampler, Sampling, View};
 
 /// Space between the two images, in points.
 const IMAGE_GAP_POINTS: f32 = 8.0;
@@ -90,12 +91,72 @@ pub fn quality_ui(ui: &mut Ui, quality: &mut Quality) {
             ui.radio_value(&mut quality.precision, precision, precision.name())
                 .on_hover_text(match precision {
                     Precision::F64 => "64-bit: exact at every extreme",
-                    Precision::F32 => "32-bit: fast; exact only inside its safe range",
+                    Precision::F32 => {
+                        "32-bit arithmetic; exact coverage, depth exact only inside its safe range"
+                    }
                     Precision::Auto => "f32 where it is safe for the frame, else f64",
                 });
         }
     });
+    let mut samples = quality.sampling.map_or(1, |s| s.samples);
+    ui.horizontal(|ui| {
+        let label = ui.label("samples per pixel");
+        egui::ComboBox::from_id_salt("samples per pixel")
+            .selected_text(samples.to_string())
+            .show_ui(ui, |ui| {
+                for option in SAMPLE_CHOICES {
+                    ui.selectable_value(&mut samples, option, option.to_string());
+                }
+            })
+            .response
+            .labelled_by(label.id);
+    });
+    if samples == 1 {
+        quality.sampling = None;
+        return;
+    }
+    let sampling = quality.sampling.get_or_insert(Sampling {
+        sampler: Sampler::Jittered,
+        samples,
+        filter: Filter::Tent { radius: 1.0 },
+        seed: 0,
+    });
+    sampling.samples = samples;
+    ui.horizontal(|ui| {
+        ui.label("sampler");
+        for sampler in Sampler::ALL {
+            ui.radio_value(&mut sampling.sampler, sampler, sampler.name());
+        }
+    });
+    ui.horizontal(|ui| {
+        ui.label("filter");
+        let size = sampling.filter.size();
+        for filter in [
+            Filter::Box { radius: size },
+            Filter::Tent { radius: size },
+            Filter::Gaussian { sigma: size },
+        ] {
+            if ui
+                .radio(sampling.filter.name() == filter.name(), filter.name())
+                .clicked()
+            {
+                sampling.filter = filter;
+            }
+        }
+        let mut size = sampling.filter.size();
+        let label = ui.label("size px");
+        ui.add(
+            egui::DragValue::new(&mut size)
+                .range(0.1..=MAX_FILTER_SIZE)
+                .speed(0.05),
+        )
+        .labelled_by(label.id);
+        sampling.filter = sampling.filter.with_size(size);
+    });
 }
+
+/// Samples-per-pixel choices offered (squares, so every sampler accepts them).
+pub const SAMPLE_CHOICES: [u32; 7] = [1, 4, 9, 16, 25, 64, 256];
 
 /// What the file section asked for.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
@@ -283,6 +344,8 @@ pub struct StatusLine<'a> {
     pub scene_name: &'a str,
     /// Precision the frame on screen was rendered in.
     pub precision: Option<Precision>,
+    /// What is on screen: "preview" or the refined quality.
+    pub stage: Option<String>,
     /// A render is in flight.
     pub busy: bool,
     /// Message of the last action (export result, view problem), with whether it is an error.
@@ -303,6 +366,10 @@ pub fn status_bar_ui(ui: &mut Ui, status: &StatusLine<'_>) {
         }
         if let Some(precision) = status.precision {
             ui.label(precision.name());
+            ui.separator();
+        }
+        if let Some(stage) = &status.stage {
+            ui.label(stage);
             ui.separator();
         }
         let plural = if status.sphere_count == 1 { "" } else { "s" };
