@@ -1,0 +1,40 @@
+//! Writes a seeded random scene of N spheres (the benchmarks' workload) as a scene file:
+//!
+//! ```sh
+//! cargo run --release --example generate -- 1000000 scenes/generated_1e6.txt [seed]
+//! ```
+//!
+//! The same (count, seed) always gives the same file; see `raytracer::generate::random_scene`.
+
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    let arguments: Vec<String> = std::env::args().skip(1).collect();
+    let (Some(count), Some(path)) = (arguments.first(), arguments.get(1)) else {
+        eprintln!("usage: generate COUNT FILE [SEED]");
+        return ExitCode::from(2);
+    };
+    let Ok(count) = count.parse::<usize>() else {
+        eprintln!("generate: COUNT must be a whole number, found '{count}'");
+        return ExitCode::from(2);
+    };
+    let seed = match arguments.get(2).map(|s| s.parse::<u64>()) {
+        None => 1,
+        Some(Ok(seed)) => seed,
+        Some(Err(_)) => {
+            eprintln!("generate: SEED must be a whole number");
+            return ExitCode::from(2);
+        }
+    };
+    let text = raytracer::generate::scene_to_text(&raytracer::generate::random_scene(seed, count));
+    match raytracer::export::write_atomically(std::path::Path::new(path), text.as_bytes()) {
+        Ok(()) => {
+            eprintln!("wrote {count} spheres (seed {seed}) to {path}, {} bytes", text.len());
+            ExitCode::SUCCESS
+        }
+        Err(error) => {
+            eprintln!("generate: {error}");
+            ExitCode::from(1)
+        }
+    }
+}

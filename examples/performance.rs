@@ -1,0 +1,260 @@
+//! The measurements behind `docs/performance.md` and `docs/performance.svg`:
+//!
+//! ```sh
+//! cargo run --release --example performance
+//! ```
+//!
+//! All figures come from this one run (medians of several repetitions), so ratios compare like
+//! with like on a shared, noisy machine. Peak memory of the million-sphere case is measured in a
+//! child process of its own (`VmHWM` of /proc/self/status).
+
+use std::fmt::Write as _;
+use std::path::Path;
+use std::process::Command;
+use std::time::Instant;
+
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
+use plotters::prelude::*;
+use raytracer::depth::DepthRange;
+use raytracer::export::{ImageFormat, encode};
+use raytracer::explore::initial_depth_range;
+use raytracer::generate::{random_scene, scene_to_text};
+use raytracer::render::reference::render_reference;
+use raytracer::render::{View, render};
+use raytracer::scene::{Scene, parse_scene};
+
+fn median_ms(runs: usize, mut run: impl FnMut()) -> f64 {
+    run(); // warm-up
+    let mut times: Vec<f64> = (0..runs)
+        .map(|_| {
+            let started = Instant::now();
+            run();
+            started.elapsed().as_secs_f64() * 1e3
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[times.len() / 2]
+}
+
+fn view_of(scene: &Scene, side: u32) -> View {
+    let mut view = View::of_camera(&scene.camera, side, side, DepthRange::new(0.0, 1.0));
+    view.depth_range = initial_depth_range(scene, &view);
+    view
+}
+
+/// The whole command: parse, render, encode a TGA (written to memory; the disk is not measured).
+fn whole_command(text: &str, side: u32, oracle: bool) {
+    let scene = parse_scene(text).expect("valid scene");
+    let view = view_of(&scene, side);
+    let frame = if oracle { render_reference(&scene, &view) } else { render(&scene, &view) }.expect("valid view");
+    std::hint::black_box(encode(&frame.colour_image(), ImageFormat::Tga).expect("encodes"));
+}
+
+fn peak_memory_mb() -> Option<f64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kb: f64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kb / 1024.0)
+}
+
+/// Child mode: parse and render a million spheres once, print peak memory.
+fn million_child() {
+    let text = scene_to_text(&random_scene(1, 1_000_000));
+    let scene = parse_scene(&text).expect("valid scene");
+    drop(text);
+    let view = view_of(&scene, 1024);
+    std::hint::black_box(render(&scene, &view).expect("valid view"));
+    println!("{:.1}", peak_memory_mb().unwrap_or(f64::NAN));
+}
+
+struct Course {
+    name: String,
+    render_ms: f64,
+    oracle_ms: f64,
+    command_ms: f64,
+    oracle_command_ms: f64,
+}
+
+struct Generated {
+    count: usize,
+    megabytes: f64,
+    parse_ms: f64,
+    render_ms: f64,
+    brute_ms: Option<f64>,
+    viewer_ms: f64,
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    if std::env::args().nth(1).as_deref() == Some("--million-child") {
+        million_child();
+        return Ok(());
+    }
+    let mut course = Vec::new();
+    for n in 1..=7 {
+        let text = std::fs::read_to_string(format!("scenes/scene1_0{n}.txt"))?;
+        let scene = parse_scene(&text)?;
+        let view = view_of(&scene, 2000);
+        let entry = Course {
+            name: format!("scene1_0{n}"),
+            render_ms: median_ms(15, || {
+                std::hint::black_box(render(&scene, &view).ok());
+            }),
+            oracle_ms: median_ms(3, || {
+                std::hint::black_box(render_reference(&scene, &view).ok());
+            }),
+            command_ms: median_ms(9, || whole_command(&text, 2000, false)),
+            oracle_command_ms: median_ms(3, || whole_command(&text, 2000, true)),
+        };
+        eprintln!("{}: {:.2} ms render, {:.0} ms oracle", entry.name, entry.render_ms, entry.oracle_ms);
+        course.push(entry);
+    }
+
+    let mut generated = Vec::new();
+    for count in [10usize, 1_000, 100_000, 1_000_000] {
+        let text = scene_to_text(&random_scene(1, count));
+        let runs = if count >= 100_000 { 3 } else { 9 };
+        let parse_ms = median_ms(runs, || {
+            std::hint::black_box(parse_scene(&text).ok());
+        });
+        let scene = parse_scene(&text)?;
+        let view = view_of(&scene, 1024);
+        let render_ms = median_ms(runs, || {
+            std::hint::black_box(render(&scene, &view).ok());
+        });
+        let brute_ms = (count <= 1_000).then(|| {
+            median_ms(1, || {
+                std::hint::black_box(render_reference(&scene, &view).ok());
+            })
+        });
+        let job = raytracer::app::job::ViewerJob {
+            scene: std::sync::Arc::new(scene.clone()),
+            view,
+            scene_epoch: 0,
+            quality: Default::default(),
+        };
+        let viewer_ms = median_ms(runs, || {
+            std::hint::black_box(raytracer::app::job::prepare_frame(&job).ok());
+        });
+        eprintln!("{count}: parse {parse_ms:.1} ms, render {render_ms:.2} ms");
+        generated.push(Generated {
+            count,
+            megabytes: text.len() as f64 / 1e6,
+            parse_ms,
+            render_ms,
+            brute_ms,
+            viewer_ms,
+        });
+    }
+    let own = std::env::current_exe()?;
+    let child = Command::new(own).arg("--million-child").output()?;
+    let peak_mb: f64 = String::from_utf8_lossy(&child.stdout).trim().parse().unwrap_or(f64::NAN);
+
+    write_plot(&generated, Path::new("docs/performance.svg"))?;
+    std::fs::write("docs/performance.md", report(&course, &generated, peak_mb))?;
+    eprintln!("wrote docs/performance.md and docs/performance.svg");
+    Ok(())
+}
+
+fn report(course: &[Course], generated: &[Generated], peak_mb: f64) -> String {
+    let mut md = String::new();
+    let threads = rayon::current_num_threads();
+    let _ = writeln!(md, "# Performance\n");
+    let _ = writeln!(
+        md,
+        "Generated by `cargo run --release --example performance` (do not edit by hand): medians of \
+         repeated runs, all in one run, {threads} worker threads. The machine is shared and noisy; \
+         compare ratios within a table. The criterion benchmarks (`cargo bench`) measure the same \
+         workloads with confidence intervals.\n"
+    );
+    let _ = writeln!(md, "## Course scenes at 2000×2000\n");
+    let _ = writeln!(md, "*render*: the disc renderer, all cores. *oracle*: the straightforward loop — one ray per pixel against every sphere, one thread. *command*: parse + render + encode the TGA (in memory).\n");
+    let _ = writeln!(md, "| scene | render ms | oracle ms | render speed-up | command ms | oracle command ms | command speed-up |\n|---|---|---|---|---|---|---|");
+    for c in course {
+        let _ = writeln!(
+            md,
+            "| {} | {:.2} | {:.0} | {:.1}× | {:.2} | {:.0} | {:.1}× |",
+            c.name,
+            c.render_ms,
+            c.oracle_ms,
+            c.oracle_ms / c.render_ms,
+            c.command_ms,
+            c.oracle_command_ms,
+            c.oracle_command_ms / c.command_ms
+        );
+    }
+    let _ = writeln!(md, "\n## Generated scenes at 1024×1024\n");
+    let _ = writeln!(md, "Seeded scenes of `raytracer::generate::random_scene` (`cargo run --release --example generate -- N FILE`). *viewer*: render + both textures, the viewer's work per frame.\n");
+    let _ = writeln!(md, "| spheres | text MB | parse ms | parse MB/s | render ms | brute force ms | viewer frame ms |\n|---|---|---|---|---|---|---|");
+    for g in generated {
+        let _ = writeln!(
+            md,
+            "| {} | {:.2} | {:.1} | {:.0} | {:.2} | {} | {:.2} |",
+            g.count,
+            g.megabytes,
+            g.parse_ms,
+            g.megabytes / (g.parse_ms / 1e3),
+            g.render_ms,
+            g.brute_ms.map_or("—".to_owned(), |ms| format!("{ms:.0}")),
+            g.viewer_ms
+        );
+    }
+    let _ = writeln!(md, "\nPeak memory of parsing and rendering 1,000,000 spheres at 1024×1024 (text, scene, discs, bins, frame; own process): **{peak_mb:.0} MB**.\n");
+    let _ = writeln!(md, "![render time against sphere count](performance.svg)");
+    md
+}
+
+fn write_plot(generated: &[Generated], path: &Path) -> Result<(), Box<dyn std::error::Error>> {
+    let root = SVGBackend::new(path, (800, 500)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let t_max = generated
+        .iter()
+        .flat_map(|g| [g.render_ms, g.brute_ms.unwrap_or(0.0), g.parse_ms])
+        .fold(1.0, f64::max);
+    let t_min = generated.iter().map(|g| g.render_ms.min(g.parse_ms)).fold(f64::INFINITY, f64::min);
+    let mut chart = ChartBuilder::on(&root)
+        .caption("1024×1024 frame time against sphere count", ("sans-serif", 20))
+        .margin(15)
+        .x_label_area_size(40)
+        .y_label_area_size(60)
+        .build_cartesian_2d((5.0..2e6f64).log_scale(), (t_min * 0.5..t_max * 2.0).log_scale())?;
+    chart
+        .configure_mesh()
+        .x_desc("spheres (log)")
+        .y_desc("milliseconds (log)")
+        .x_label_formatter(&|v| format!("{v:.0e}"))
+        .draw()?;
+    let series: [(&str, RGBColor, Vec<(f64, f64)>); 3] = [
+        (
+            "render (binned discs, all cores)",
+            RGBColor(40, 170, 80),
+            generated.iter().map(|g| (g.count as f64, g.render_ms)).collect(),
+        ),
+        (
+            "brute force (every sphere per pixel, one thread)",
+            RGBColor(200, 40, 40),
+            generated.iter().filter_map(|g| g.brute_ms.map(|b| (g.count as f64, b))).collect(),
+        ),
+        (
+            "parse",
+            RGBColor(30, 110, 220),
+            generated.iter().map(|g| (g.count as f64, g.parse_ms)).collect(),
+        ),
+    ];
+    for (label, colour, points) in series {
+        chart
+            .draw_series(LineSeries::new(points.clone(), colour.stroke_width(2)))?
+            .label(label)
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], colour.stroke_width(2)));
+        chart.draw_series(points.into_iter().map(|p| Circle::new(p, 4, colour.filled())))?;
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperLeft)
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()?;
+    root.present()?;
+    Ok(())
+}
