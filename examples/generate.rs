@@ -29,7 +29,10 @@ fn main() -> ExitCode {
     let text = raytracer::generate::scene_to_text(&raytracer::generate::random_scene(seed, count));
     match raytracer::export::write_atomically(std::path::Path::new(path), text.as_bytes()) {
         Ok(()) => {
-            eprintln!("wrote {count} spheres (seed {seed}) to {path}, {} bytes", text.len());
+            eprintln!(
+                "wrote {count} spheres (seed {seed}) to {path}, {} bytes",
+                text.len()
+            );
             ExitCode::SUCCESS
         }
         Err(error) => {

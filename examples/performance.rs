@@ -18,8 +18,8 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 use plotters::prelude::*;
 use raytracer::depth::DepthRange;
-use raytracer::export::{ImageFormat, encode};
 use raytracer::explore::initial_depth_range;
+use raytracer::export::{ImageFormat, encode};
 use raytracer::generate::{random_scene, scene_to_text};
 use raytracer::render::reference::render_reference;
 use raytracer::render::{View, render};
@@ -48,7 +48,12 @@ fn view_of(scene: &Scene, side: u32) -> View {
 fn whole_command(text: &str, side: u32, oracle: bool) {
     let scene = parse_scene(text).expect("valid scene");
     let view = view_of(&scene, side);
-    let frame = if oracle { render_reference(&scene, &view) } else { render(&scene, &view) }.expect("valid view");
+    let frame = if oracle {
+        render_reference(&scene, &view)
+    } else {
+        render(&scene, &view)
+    }
+    .expect("valid view");
     std::hint::black_box(encode(&frame.colour_image(), ImageFormat::Tga).expect("encodes"));
 }
 
@@ -107,7 +112,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             command_ms: median_ms(9, || whole_command(&text, 2000, false)),
             oracle_command_ms: median_ms(3, || whole_command(&text, 2000, true)),
         };
-        eprintln!("{}: {:.2} ms render, {:.0} ms oracle", entry.name, entry.render_ms, entry.oracle_ms);
+        eprintln!(
+            "{}: {:.2} ms render, {:.0} ms oracle",
+            entry.name, entry.render_ms, entry.oracle_ms
+        );
         course.push(entry);
     }
 
@@ -149,7 +157,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     let own = std::env::current_exe()?;
     let child = Command::new(own).arg("--million-child").output()?;
-    let peak_mb: f64 = String::from_utf8_lossy(&child.stdout).trim().parse().unwrap_or(f64::NAN);
+    let peak_mb: f64 = String::from_utf8_lossy(&child.stdout)
+        .trim()
+        .parse()
+        .unwrap_or(f64::NAN);
 
     write_plot(&generated, Path::new("docs/performance.svg"))?;
     std::fs::write("docs/performance.md", report(&course, &generated, peak_mb))?;
@@ -169,8 +180,14 @@ fn report(course: &[Course], generated: &[Generated], peak_mb: f64) -> String {
          workloads with confidence intervals.\n"
     );
     let _ = writeln!(md, "## Course scenes at 2000×2000\n");
-    let _ = writeln!(md, "*render*: the disc renderer, all cores. *oracle*: the straightforward loop — one ray per pixel against every sphere, one thread. *command*: parse + render + encode the TGA (in memory).\n");
-    let _ = writeln!(md, "| scene | render ms | oracle ms | render speed-up | command ms | oracle command ms | command speed-up |\n|---|---|---|---|---|---|---|");
+    let _ = writeln!(
+        md,
+        "*render*: the disc renderer, all cores. *oracle*: the straightforward loop — one ray per pixel against every sphere, one thread. *command*: parse + render + encode the TGA (in memory).\n"
+    );
+    let _ = writeln!(
+        md,
+        "| scene | render ms | oracle ms | render speed-up | command ms | oracle command ms | command speed-up |\n|---|---|---|---|---|---|---|"
+    );
     for c in course {
         let _ = writeln!(
             md,
@@ -185,8 +202,14 @@ fn report(course: &[Course], generated: &[Generated], peak_mb: f64) -> String {
         );
     }
     let _ = writeln!(md, "\n## Generated scenes at 1024×1024\n");
-    let _ = writeln!(md, "Seeded scenes of `raytracer::generate::random_scene` (`cargo run --release --example generate -- N FILE`). *viewer*: render + both textures, the viewer's work per frame.\n");
-    let _ = writeln!(md, "| spheres | text MB | parse ms | parse MB/s | render ms | brute force ms | viewer frame ms |\n|---|---|---|---|---|---|---|");
+    let _ = writeln!(
+        md,
+        "Seeded scenes of `raytracer::generate::random_scene` (`cargo run --release --example generate -- N FILE`). *viewer*: render + both textures, the viewer's work per frame.\n"
+    );
+    let _ = writeln!(
+        md,
+        "| spheres | text MB | parse ms | parse MB/s | render ms | brute force ms | viewer frame ms |\n|---|---|---|---|---|---|---|"
+    );
     for g in generated {
         let _ = writeln!(
             md,
@@ -200,7 +223,10 @@ fn report(course: &[Course], generated: &[Generated], peak_mb: f64) -> String {
             g.viewer_ms
         );
     }
-    let _ = writeln!(md, "\nPeak memory of parsing and rendering 1,000,000 spheres at 1024×1024 (text, scene, discs, bins, frame; own process): **{peak_mb:.0} MB**.\n");
+    let _ = writeln!(
+        md,
+        "\nPeak memory of parsing and rendering 1,000,000 spheres at 1024×1024 (text, scene, discs, bins, frame; own process): **{peak_mb:.0} MB**.\n"
+    );
     let _ = writeln!(md, "![render time against sphere count](performance.svg)");
     md
 }
@@ -212,13 +238,22 @@ fn write_plot(generated: &[Generated], path: &Path) -> Result<(), Box<dyn std::e
         .iter()
         .flat_map(|g| [g.render_ms, g.brute_ms.unwrap_or(0.0), g.parse_ms])
         .fold(1.0, f64::max);
-    let t_min = generated.iter().map(|g| g.render_ms.min(g.parse_ms)).fold(f64::INFINITY, f64::min);
+    let t_min = generated
+        .iter()
+        .map(|g| g.render_ms.min(g.parse_ms))
+        .fold(f64::INFINITY, f64::min);
     let mut chart = ChartBuilder::on(&root)
-        .caption("1024×1024 frame time against sphere count", ("sans-serif", 20))
+        .caption(
+            "1024×1024 frame time against sphere count",
+            ("sans-serif", 20),
+        )
         .margin(15)
         .x_label_area_size(40)
         .y_label_area_size(60)
-        .build_cartesian_2d((5.0..2e6f64).log_scale(), (t_min * 0.5..t_max * 2.0).log_scale())?;
+        .build_cartesian_2d(
+            (5.0..2e6f64).log_scale(),
+            (t_min * 0.5..t_max * 2.0).log_scale(),
+        )?;
     chart
         .configure_mesh()
         .x_desc("spheres (log)")
@@ -229,25 +264,40 @@ fn write_plot(generated: &[Generated], path: &Path) -> Result<(), Box<dyn std::e
         (
             "render (binned discs, all cores)",
             RGBColor(40, 170, 80),
-            generated.iter().map(|g| (g.count as f64, g.render_ms)).collect(),
+            generated
+                .iter()
+                .map(|g| (g.count as f64, g.render_ms))
+                .collect(),
         ),
         (
             "brute force (every sphere per pixel, one thread)",
             RGBColor(200, 40, 40),
-            generated.iter().filter_map(|g| g.brute_ms.map(|b| (g.count as f64, b))).collect(),
+            generated
+                .iter()
+                .filter_map(|g| g.brute_ms.map(|b| (g.count as f64, b)))
+                .collect(),
         ),
         (
             "parse",
             RGBColor(30, 110, 220),
-            generated.iter().map(|g| (g.count as f64, g.parse_ms)).collect(),
+            generated
+                .iter()
+                .map(|g| (g.count as f64, g.parse_ms))
+                .collect(),
         ),
     ];
     for (label, colour, points) in series {
         chart
             .draw_series(LineSeries::new(points.clone(), colour.stroke_width(2)))?
             .label(label)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], colour.stroke_width(2)));
-        chart.draw_series(points.into_iter().map(|p| Circle::new(p, 4, colour.filled())))?;
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 18, y)], colour.stroke_width(2))
+            });
+        chart.draw_series(
+            points
+                .into_iter()
+                .map(|p| Circle::new(p, 4, colour.filled())),
+        )?;
     }
     chart
         .configure_series_labels()

@@ -183,9 +183,18 @@ fn mark_pareto(points: &mut [Measured]) {
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let scenes: Vec<(String, Scene)> = vec![
-        ("scene1_02".into(), load_scene(Path::new("scenes/scene1_02.txt"))?),
-        ("scene1_06".into(), load_scene(Path::new("scenes/scene1_06.txt"))?),
-        ("torus knot (400)".into(), load_scene(Path::new("scenes/showcase_torus_knot.txt"))?),
+        (
+            "scene1_02".into(),
+            load_scene(Path::new("scenes/scene1_02.txt"))?,
+        ),
+        (
+            "scene1_06".into(),
+            load_scene(Path::new("scenes/scene1_06.txt"))?,
+        ),
+        (
+            "torus knot (400)".into(),
+            load_scene(Path::new("scenes/showcase_torus_knot.txt"))?,
+        ),
         ("random (10,000)".into(), random_scene(2, 10_000)),
     ];
     let settings = settings();
@@ -210,7 +219,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .iter()
             .map(|setting| {
                 let m = measure(scene, &view, &reference, setting);
-                eprintln!("{name}: {} {:.2} ms, error {:.3}", m.setting.name, m.time_ms, m.mean_error);
+                eprintln!(
+                    "{name}: {} {:.2} ms, error {:.3}",
+                    m.setting.name, m.time_ms, m.mean_error
+                );
                 m
             })
             .collect();
@@ -233,14 +245,29 @@ fn report(results: &[(String, Vec<Measured>)]) -> String {
          cores, in one run on one machine. Errors are against a reference of 1024 jittered samples \
          per pixel with a box filter over the pixel (the pixel's area average), exact precision:\n"
     );
-    let _ = writeln!(md, "* **mean / max error** — colour error in 8-bit levels, mean over pixels and channels / largest;");
-    let _ = writeln!(md, "* **wrong** — pixels off by more than 8 levels in some channel;");
-    let _ = writeln!(md, "* **depth** — mean error of the 8-bit depth image in grey levels;");
-    let _ = writeln!(md, "* **front** — on the Pareto front (no other setting is both faster and more accurate).\n");
+    let _ = writeln!(
+        md,
+        "* **mean / max error** — colour error in 8-bit levels, mean over pixels and channels / largest;"
+    );
+    let _ = writeln!(
+        md,
+        "* **wrong** — pixels off by more than 8 levels in some channel;"
+    );
+    let _ = writeln!(
+        md,
+        "* **depth** — mean error of the 8-bit depth image in grey levels;"
+    );
+    let _ = writeln!(
+        md,
+        "* **front** — on the Pareto front (no other setting is both faster and more accurate).\n"
+    );
     let _ = writeln!(md, "![time against error](tradeoff.svg)\n");
     for (name, measured) in results {
         let _ = writeln!(md, "## {name}\n");
-        let _ = writeln!(md, "| setting | ms | mean error | max error | wrong | depth | front |\n|---|---|---|---|---|---|---|");
+        let _ = writeln!(
+            md,
+            "| setting | ms | mean error | max error | wrong | depth | front |\n|---|---|---|---|---|---|---|"
+        );
         let mut sorted = measured.clone();
         sorted.sort_by(|a, b| a.time_ms.total_cmp(&b.time_ms));
         for m in sorted {
@@ -261,17 +288,20 @@ fn report(results: &[(String, Vec<Measured>)]) -> String {
     md
 }
 
-fn write_plot(results: &[(String, Vec<Measured>)], path: &Path) -> Result<(), Box<dyn std::error::Error>> {
+fn write_plot(
+    results: &[(String, Vec<Measured>)],
+    path: &Path,
+) -> Result<(), Box<dyn std::error::Error>> {
     let root = SVGBackend::new(path, (1200, 900)).into_drawing_area();
     root.fill(&WHITE)?;
     let panels = root.split_evenly((2, 2));
     for (panel, (name, measured)) in panels.iter().zip(results) {
-        let (t_low, t_high) = measured
-            .iter()
-            .fold((f64::INFINITY, 0f64), |(lo, hi), m| (lo.min(m.time_ms), hi.max(m.time_ms)));
-        let (e_low, e_high) = measured
-            .iter()
-            .fold((f64::INFINITY, 0f64), |(lo, hi), m| (lo.min(m.mean_error), hi.max(m.mean_error)));
+        let (t_low, t_high) = measured.iter().fold((f64::INFINITY, 0f64), |(lo, hi), m| {
+            (lo.min(m.time_ms), hi.max(m.time_ms))
+        });
+        let (e_low, e_high) = measured.iter().fold((f64::INFINITY, 0f64), |(lo, hi), m| {
+            (lo.min(m.mean_error), hi.max(m.mean_error))
+        });
         let mut chart = ChartBuilder::on(panel)
             .caption(name, ("sans-serif", 18))
             .margin(10)
@@ -296,7 +326,11 @@ fn write_plot(results: &[(String, Vec<Measured>)], path: &Path) -> Result<(), Bo
             },
         };
         chart.draw_series(measured.iter().map(|m| {
-            Circle::new((m.time_ms, m.mean_error.max(1e-3)), 4, colour_of(m).filled())
+            Circle::new(
+                (m.time_ms, m.mean_error.max(1e-3)),
+                4,
+                colour_of(m).filled(),
+            )
         }))?;
         let mut front: Vec<&Measured> = measured.iter().filter(|m| m.pareto).collect();
         front.sort_by(|a, b| a.time_ms.total_cmp(&b.time_ms));
