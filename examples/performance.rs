@@ -231,6 +231,9 @@ fn report(course: &[Course], generated: &[Generated], peak_mb: f64) -> String {
     md
 }
 
+/// A plotted line: name, colour, (sphere count, ms) points.
+type Series<'a> = (&'a str, RGBColor, Vec<(f64, f64)>);
+
 fn write_plot(generated: &[Generated], path: &Path) -> Result<(), Box<dyn std::error::Error>> {
     let root = SVGBackend::new(path, (800, 500)).into_drawing_area();
     root.fill(&WHITE)?;
@@ -260,7 +263,7 @@ fn write_plot(generated: &[Generated], path: &Path) -> Result<(), Box<dyn std::e
         .y_desc("milliseconds (log)")
         .x_label_formatter(&|v| format!("{v:.0e}"))
         .draw()?;
-    let series: [(&str, RGBColor, Vec<(f64, f64)>); 3] = [
+    let series: [Series; 3] = [
         (
             "render (binned discs, all cores)",
             RGBColor(40, 170, 80),

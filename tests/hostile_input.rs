@@ -158,7 +158,7 @@ fn mutate(text: &str, rng: &mut SplitMix64) -> Vec<u8> {
 #[test]
 fn mutated_course_scenes_never_panic() {
     let scenes = course_scenes();
-    let mut rng = SplitMix64::new(0x5CE_E5);
+    let mut rng = SplitMix64::new(0x0005_CEE5);
     let mut parsed = 0;
     for case in 0..6_000 {
         let bytes = mutate(&scenes[case % scenes.len()], &mut rng);

@@ -74,14 +74,13 @@ fn interior_pixels_equal_the_one_sample_render_and_edges_are_mixtures() {
                 } else {
                     // An edge pixel: each channel lies between the colours around it.
                     let colour = aa.colour[index];
-                    for channel in 0..3 {
+                    for (channel, &value) in colour.iter().enumerate() {
                         let values = around.iter().map(|&i| one.colour[i][channel]);
                         let (low, high) =
                             values.fold((255u8, 0u8), |(l, h), v| (l.min(v), h.max(v)));
                         assert!(
-                            (low..=high).contains(&colour[channel]),
-                            "{filter}: edge ({x}, {y}) channel {channel}: {} not in {low}..={high}",
-                            colour[channel]
+                            (low..=high).contains(&value),
+                            "{filter}: edge ({x}, {y}) channel {channel}: {value} not in {low}..={high}"
                         );
                     }
                     let is_palette = around.iter().any(|&i| one.colour[i] == colour);
