@@ -10,7 +10,8 @@ use std::collections::BTreeMap;
 use std::ffi::OsString;
 use std::path::PathBuf;
 
-use crate::depth::DepthRange;
+use crate::depth::{DepthColourMap, DepthRange};
+use crate::depth_file::RawDepthFormat;
 use crate::export::ImageFormat;
 use crate::render::sampling::SamplingError;
 use crate::render::{
@@ -44,6 +45,21 @@ const FLAGS: &[FlagSpec] = &[
         name: "-depth",
         values: 3,
         usage: "-depth DMIN DMAX FILE    write the depth image: t = DMIN white … DMAX black",
+    },
+    FlagSpec {
+        name: "-depth_colormap",
+        values: 1,
+        usage: "-depth_colormap MAP      depth image colours: grey (default), turbo or viridis",
+    },
+    FlagSpec {
+        name: "-depth16",
+        values: 3,
+        usage: "-depth16 DMIN DMAX FILE  write the depth as a 16-bit grey PNG over DMIN … DMAX",
+    },
+    FlagSpec {
+        name: "-depth_raw",
+        values: 1,
+        usage: "-depth_raw FILE          write raw t as 32-bit floats (.pfm or .exr), +inf = no hit",
     },
     FlagSpec {
         name: "-precision",
@@ -104,7 +120,7 @@ pub fn usage() -> String {
     let mut text = String::from(
         "raytracer: ray-casts 6.837 assignment-1 scenes (orthographic camera, spheres)\n\n\
          usage:\n  raytracer [-input FILE]                     open the viewer (default scene without -input)\n  \
-         raytracer -input FILE [-size W H] [-output FILE] [-depth DMIN DMAX FILE]\n                                              render without a window\n\nflags:\n",
+         raytracer -input FILE [-size W H] [-output FILE] [-depth DMIN DMAX FILE] [more outputs]\n                                              render without a window\n\nflags:\n",
     );
     for flag in FLAGS {
         text.push_str("  ");
@@ -165,8 +181,12 @@ pub enum UsageError {
     },
     /// An output whose extension names no supported format.
     #[error(
-        "{flag}: '{path}' has an unknown image format; use one of {}",
-        ImageFormat::EXTENSIONS
+        "{flag}: '{path}' has an unknown format; use one of {}",
+        match *flag {
+            "-depth_raw" => RawDepthFormat::EXTENSIONS,
+            "-depth16" => ".png",
+            _ => ImageFormat::EXTENSIONS,
+        }
     )]
     UnknownFormat {
         /// The flag.
@@ -174,9 +194,12 @@ pub enum UsageError {
         /// The path as given.
         path: String,
     },
-    /// Both outputs name the same file.
-    #[error("-output and -depth name the same file '{0}'")]
+    /// Two outputs name the same file.
+    #[error("two outputs name the same file '{0}'")]
     SameOutput(String),
+    /// A depth colour map that does not exist.
+    #[error("-depth_colormap: expected grey, turbo or viridis, found '{0}'")]
+    BadColourMap(String),
     /// An argument that is not valid Unicode where text is needed.
     #[error("{flag}: value is not valid text")]
     NotText {
@@ -184,7 +207,7 @@ pub enum UsageError {
         flag: &'static str,
     },
     /// Rendering needs a scene.
-    #[error("-output and -depth need -input FILE")]
+    #[error("-output, -depth, -depth16 and -depth_raw need -input FILE")]
     MissingInput,
     /// A precision that is not f64, f32 or auto.
     #[error("-precision: expected f64, f32 or auto, found '{0}'")]
@@ -219,6 +242,12 @@ pub struct RenderRequest {
     pub colour_output: Option<PathBuf>,
     /// Depth image destination and range.
     pub depth_output: Option<DepthOutput>,
+    /// Colour map of the depth image (`-depth_colormap`; grey by default).
+    pub depth_colour_map: DepthColourMap,
+    /// 16-bit grey depth PNG destination and range (`-depth16`).
+    pub depth16_output: Option<DepthOutput>,
+    /// Raw t destination (`-depth_raw`, `.pfm` or `.exr`).
+    pub depth_raw_output: Option<PathBuf>,
     /// Precision and other quality knobs.
     pub quality: Quality,
     /// Print timings and counts after rendering.
@@ -310,21 +339,28 @@ impl RawArgs {
             None => None,
         };
         let colour_output = self.output_path("-output", 0)?;
-        let depth_output = match self.values.get("-depth") {
-            Some(_) => Some(DepthOutput {
-                range: DepthRange::new(
-                    self.finite("-depth", 0, "a number (DMIN)")?,
-                    self.finite("-depth", 1, "a number (DMAX)")?,
-                ),
-                path: self.output_path("-depth", 2)?.unwrap_or_default(),
-            }),
-            None => None,
-        };
-        if let (Some(colour), Some(depth)) = (&colour_output, &depth_output)
-            && *colour == depth.path
-        {
-            return Err(UsageError::SameOutput(colour.display().to_string()));
+        let depth_output = self.depth_output("-depth")?;
+        let depth16_output = self.depth_output("-depth16")?;
+        let depth_raw_output = self.output_path("-depth_raw", 0)?;
+        let outputs: Vec<&PathBuf> = colour_output
+            .iter()
+            .chain(depth_output.iter().map(|d| &d.path))
+            .chain(depth16_output.iter().map(|d| &d.path))
+            .chain(depth_raw_output.iter())
+            .collect();
+        for (index, path) in outputs.iter().enumerate() {
+            if outputs[..index].contains(path) {
+                return Err(UsageError::SameOutput(path.display().to_string()));
+            }
         }
+        let depth_colour_map = match self.values.get("-depth_colormap") {
+            Some(_) => {
+                let text = self.text("-depth_colormap", 0)?;
+                DepthColourMap::from_name(text)
+                    .ok_or_else(|| UsageError::BadColourMap(text.to_owned()))?
+            }
+            None => DepthColourMap::Grey,
+        };
         let precision = match self.values.get("-precision") {
             Some(_) => {
                 let text = self.text("-precision", 0)?;
@@ -335,7 +371,7 @@ impl RawArgs {
             }
             None => None,
         };
-        if colour_output.is_none() && depth_output.is_none() {
+        if outputs.is_empty() {
             return Ok(Command::View(ViewerRequest {
                 input,
                 size_px,
@@ -350,6 +386,9 @@ impl RawArgs {
             height_px,
             colour_output,
             depth_output,
+            depth_colour_map,
+            depth16_output,
+            depth_raw_output,
             quality: Quality {
                 precision: precision.unwrap_or_default(),
                 sampling: self.sampling()?,
@@ -469,15 +508,37 @@ impl RawArgs {
         Ok((width, height))
     }
 
+    /// A `-depth`-style output: DMIN DMAX FILE.
+    fn depth_output(&self, flag: &'static str) -> Result<Option<DepthOutput>, UsageError> {
+        if !self.values.contains_key(flag) {
+            return Ok(None);
+        }
+        Ok(Some(DepthOutput {
+            range: DepthRange::new(
+                self.finite(flag, 0, "a number (DMIN)")?,
+                self.finite(flag, 1, "a number (DMAX)")?,
+            ),
+            path: self.output_path(flag, 2)?.unwrap_or_default(),
+        }))
+    }
+
+    /// An output path whose extension names a format the flag writes.
     fn output_path(&self, flag: &'static str, index: usize) -> Result<Option<PathBuf>, UsageError> {
         let Some(value) = self.value(flag, index) else {
             return Ok(None);
         };
         let path = PathBuf::from(value);
-        ImageFormat::from_path(&path).map_err(|_| UsageError::UnknownFormat {
-            flag,
-            path: path.display().to_string(),
-        })?;
+        let known = match flag {
+            "-depth_raw" => RawDepthFormat::from_path(&path).is_some(),
+            "-depth16" => matches!(ImageFormat::from_path(&path), Ok(ImageFormat::Png)),
+            _ => ImageFormat::from_path(&path).is_ok(),
+        };
+        if !known {
+            return Err(UsageError::UnknownFormat {
+                flag,
+                path: path.display().to_string(),
+            });
+        }
         Ok(Some(path))
     }
 }
@@ -515,6 +576,9 @@ mod tests {
                     range: DepthRange::new(9.0, 10.0),
                     path: "depth.tga".into()
                 }),
+                depth_colour_map: DepthColourMap::Grey,
+                depth16_output: None,
+                depth_raw_output: None,
                 quality: Quality::default(),
                 stats: false,
             })
@@ -612,7 +676,14 @@ mod tests {
                 "-input a.txt -depth 1 inf d.tga",
                 "expected a number (DMAX), found 'inf'",
             ),
-            ("-input a.txt -output x.jpg", "unknown image format"),
+            ("-input a.txt -output x.jpg", "unknown format"),
+            ("-input a.txt -depth_raw x.png", "use one of .pfm, .exr"),
+            ("-input a.txt -depth16 0 1 x.tga", "use one of .png"),
+            ("-input a.txt -output x.png -depth16 0 1 x.png", "same file"),
+            (
+                "-input a.txt -depth_raw d.pfm -depth_colormap jet",
+                "expected grey, turbo or viridis, found 'jet'",
+            ),
             ("-input a.txt -output x.tga -output y.tga", "given twice"),
             ("-input a.txt -output x.tga -depth 1 2 x.tga", "same file"),
             ("-output x.tga", "need -input"),
@@ -625,6 +696,26 @@ mod tests {
             let error = parse(line).expect_err(line).to_string();
             assert!(error.contains(message), "{line}: {error}");
         }
+    }
+
+    #[test]
+    fn depth_outputs_and_colour_map() {
+        let Command::Render(request) =
+            parse("-input a.txt -depth_raw t.exr -depth16 -1 2.5 d16.png -depth_colormap viridis")
+                .unwrap()
+        else {
+            panic!("a render request");
+        };
+        assert_eq!(request.depth_raw_output, Some("t.exr".into()));
+        assert_eq!(
+            request.depth16_output,
+            Some(DepthOutput {
+                range: DepthRange::new(-1.0, 2.5),
+                path: "d16.png".into()
+            })
+        );
+        assert_eq!(request.depth_colour_map, DepthColourMap::Viridis);
+        assert!(request.colour_output.is_none() && request.depth_output.is_none());
     }
 
     #[test]

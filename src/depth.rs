@@ -8,6 +8,12 @@
 //!   of the ramp as the range shrinks to zero width); no division by zero.
 //!
 //! The mapping is computed in f64 from an f64 t, so narrow ranges far away stay exact.
+//!
+//! Besides grey, the depth image can go through a perceptual colour map ([`DepthColourMap`]:
+//! turbo, viridis) applied to the same grey value (near = the map's bright/warm end). In colour
+//! maps, pixels with no hit are black, which neither map contains, so "nothing there" never looks
+//! like "far away". The course's grey image keeps no-hit black (SPEC); the viewer can mark no-hit
+//! pixels in [`NO_HIT_MARK`] on screen.
 
 /// The range of t mapped onto the grey ramp.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -40,6 +46,104 @@ impl DepthRange {
     /// 8-bit grey of a hit at `t`.
     pub fn grey_u8(&self, t: f64) -> u8 {
         quantize_f64(self.grey(t))
+    }
+}
+
+/// How t values become the depth image's colours.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "gui", derive(serde::Serialize, serde::Deserialize))]
+pub enum DepthColourMap {
+    /// The course's grey ramp: near white, far black, no hit black.
+    #[default]
+    Grey,
+    /// Google's turbo rainbow: near dark red, far dark blue; no hit black.
+    Turbo,
+    /// Matplotlib's viridis: near yellow, far dark purple; no hit black.
+    Viridis,
+}
+
+impl DepthColourMap {
+    /// Every map, in the order menus list them.
+    pub const ALL: [Self; 3] = [Self::Grey, Self::Turbo, Self::Viridis];
+
+    /// The name used on the command line (`-depth_colormap`) and in menus.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Grey => "grey",
+            Self::Turbo => "turbo",
+            Self::Viridis => "viridis",
+        }
+    }
+
+    /// The map a name stands for (as [`Self::name`] spells it; `gray` is accepted too).
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name {
+            "grey" | "gray" => Some(Self::Grey),
+            "turbo" => Some(Self::Turbo),
+            "viridis" => Some(Self::Viridis),
+            _ => None,
+        }
+    }
+
+    /// The 8-bit colour of a grey value `grey` in [0, 1] (1 = near). Grey quantises by
+    /// truncation exactly as [`DepthRange::grey_u8`] does, so the grey map is the course's image.
+    pub fn rgb_of_grey(self, grey: f64) -> [u8; 3] {
+        // Turbo's darkest tenth is nearly black, which would read as "no hit": the far end
+        // starts at its blue instead.
+        let (gradient, far_end) = match self {
+            Self::Grey => return [quantize_f64(grey); 3],
+            Self::Turbo => (colorous::TURBO, TURBO_FAR_END),
+            Self::Viridis => (colorous::VIRIDIS, 0.0),
+        };
+        let grey = if grey.is_nan() {
+            0.0
+        } else {
+            grey.clamp(0.0, 1.0)
+        };
+        let colour = gradient.eval_continuous(far_end + (1.0 - far_end) * grey);
+        [colour.r, colour.g, colour.b]
+    }
+
+    /// The colour of a pixel whose nearest hit is at `t` (`+∞`: no hit) over `range`.
+    /// No-hit pixels are `no_hit` (use [`Self::file_no_hit`] for files).
+    pub fn rgb(self, range: &DepthRange, t: f64, no_hit: [u8; 3]) -> [u8; 3] {
+        if t == f64::INFINITY || t.is_nan() {
+            no_hit
+        } else {
+            self.rgb_of_grey(range.grey(t))
+        }
+    }
+
+    /// What a no-hit pixel looks like in a written file: black (the course's choice for grey;
+    /// in the colour maps black is no value of the map).
+    pub const fn file_no_hit(self) -> [u8; 3] {
+        [0, 0, 0]
+    }
+}
+
+impl std::fmt::Display for DepthColourMap {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// Where on colorous's turbo gradient the far end of the depth range lies.
+const TURBO_FAR_END: f64 = 0.1;
+
+/// The on-screen colour of no-hit pixels when the viewer marks them (a dark blue that the grey
+/// ramp never produces).
+pub const NO_HIT_MARK: [u8; 3] = [24, 36, 96];
+
+/// 16-bit quantisation by truncation, `clamp(floor(c·65535), 0, 65535)`, for 16-bit depth PNGs.
+/// NaN maps to 0.
+pub fn quantize_u16(c: f64) -> u16 {
+    let scaled = (c * 65535.0).floor();
+    if scaled >= 65535.0 {
+        u16::MAX
+    } else if scaled >= 0.0 {
+        scaled as u16
+    } else {
+        0
     }
 }
 
@@ -115,6 +219,52 @@ mod tests {
         assert_eq!(range.grey_u8(mid), 127);
         assert_eq!(range.grey_u8(99_999.996), 255);
         assert_eq!(range.grey_u8(100_000.001_5), 0);
+    }
+
+    #[test]
+    fn colour_maps_keep_grey_exact_and_no_hit_apart() {
+        let range = DepthRange::new(9.0, 10.0);
+        for t in [8.0, 9.0, 9.3, 9.999, 10.0, 11.0] {
+            assert_eq!(
+                DepthColourMap::Grey.rgb(&range, t, [0; 3]),
+                [range.grey_u8(t); 3]
+            );
+        }
+        for map in [DepthColourMap::Turbo, DepthColourMap::Viridis] {
+            let near = map.rgb(&range, 9.0, [0; 3]);
+            let far = map.rgb(&range, 10.0, [0; 3]);
+            assert_ne!(near, far, "{map}");
+            // No value of the map is black: no hit stays distinguishable from far.
+            for step in 0..=1000 {
+                assert_ne!(
+                    map.rgb_of_grey(f64::from(step) / 1000.0),
+                    [0, 0, 0],
+                    "{map}"
+                );
+            }
+            assert_eq!(map.rgb(&range, f64::INFINITY, map.file_no_hit()), [0, 0, 0]);
+            assert_eq!(map.rgb_of_grey(f64::NAN), map.rgb_of_grey(0.0));
+        }
+        // Turbo's far end is blue, its near end red; viridis's near end is yellow.
+        let [r, _, b] = DepthColourMap::Turbo.rgb_of_grey(0.0);
+        assert!(b > r);
+        let [r, g, b] = DepthColourMap::Viridis.rgb_of_grey(1.0);
+        assert!(r > 200 && g > 200 && b < 100);
+        // The grey ramp never produces the no-hit mark.
+        assert!((0..=255).all(|g| [g; 3] != NO_HIT_MARK));
+        for map in DepthColourMap::ALL {
+            assert_eq!(DepthColourMap::from_name(map.name()), Some(map));
+        }
+        assert_eq!(DepthColourMap::from_name("jet"), None);
+    }
+
+    #[test]
+    fn sixteen_bit_quantisation_truncates_and_clamps() {
+        assert_eq!(quantize_u16(1.0), 65535);
+        assert_eq!(quantize_u16(0.5), 32767);
+        assert_eq!(quantize_u16(-1.0), 0);
+        assert_eq!(quantize_u16(f64::NAN), 0);
+        assert_eq!(quantize_u16(2.0), 65535);
     }
 
     #[test]

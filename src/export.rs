@@ -109,6 +109,21 @@ fn folder_of(path: &Path) -> &Path {
 /// `path` is not a folder, and a temporary file can be created (and is removed) in its folder.
 pub fn check_writable(path: &Path) -> Result<(), ExportError> {
     ImageFormat::from_path(path)?;
+    check_folder_writable(path)
+}
+
+/// [`check_writable`] for a raw depth file (`.pfm`, `.exr`).
+pub fn check_writable_raw(path: &Path) -> Result<(), ExportError> {
+    if crate::depth_file::RawDepthFormat::from_path(path).is_none() {
+        return Err(ExportError::UnknownFormat {
+            path: path.to_path_buf(),
+        });
+    }
+    check_folder_writable(path)
+}
+
+/// `path` is not a folder and a temporary file can be created (and is removed) beside it.
+fn check_folder_writable(path: &Path) -> Result<(), ExportError> {
     let io_error = |source| ExportError::Io {
         path: path.to_path_buf(),
         source,

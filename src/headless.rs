@@ -5,7 +5,8 @@ use std::time::{Duration, Instant};
 
 use crate::cli::RenderRequest;
 use crate::depth::DepthRange;
-use crate::export::{ExportError, check_writable, write_image};
+use crate::depth_file::{write_depth_png16, write_raw_depth};
+use crate::export::{ExportError, check_writable, check_writable_raw, write_image};
 use crate::render::{View, ViewError, render_with};
 use crate::scene::{LoadError, Scene, load_scene};
 
@@ -74,11 +75,13 @@ const UNUSED_DEPTH_RANGE: DepthRange = DepthRange {
     max_t: 1.0,
 };
 
-/// The view a request renders: the scene's camera at the requested size and depth range.
+/// The view a request renders: the scene's camera at the requested size and depth range (of
+/// `-depth`, else of `-depth16`).
 pub fn request_view(scene: &Scene, request: &RenderRequest) -> View {
     let range = request
         .depth_output
         .as_ref()
+        .or(request.depth16_output.as_ref())
         .map_or(UNUSED_DEPTH_RANGE, |depth| depth.range);
     View::of_camera(&scene.camera, request.width_px, request.height_px, range)
 }
@@ -86,12 +89,16 @@ pub fn request_view(scene: &Scene, request: &RenderRequest) -> View {
 /// Runs a headless render request. Every output is checked for writability first, so a run that
 /// cannot write all its files writes none.
 pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
-    let outputs = request
+    let image_outputs = request
         .colour_output
         .iter()
-        .chain(request.depth_output.iter().map(|depth| &depth.path));
-    for path in outputs {
+        .chain(request.depth_output.iter().map(|depth| &depth.path))
+        .chain(request.depth16_output.iter().map(|depth| &depth.path));
+    for path in image_outputs {
         check_writable(path)?;
+    }
+    if let Some(path) = &request.depth_raw_output {
+        check_writable_raw(path)?;
     }
     let started = Instant::now();
     let scene = load_scene(&request.input)?;
@@ -103,18 +110,27 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
     let render = started.elapsed();
 
     let started = Instant::now();
+    let map = request.depth_colour_map;
     let outputs: [Option<(&Path, _)>; 2] = [
         request
             .colour_output
             .as_deref()
             .map(|path| (path, frame.colour_image())),
-        request
-            .depth_output
-            .as_ref()
-            .map(|depth| (depth.path.as_path(), frame.depth_image(depth.range))),
+        request.depth_output.as_ref().map(|depth| {
+            (
+                depth.path.as_path(),
+                frame.depth_image_mapped(depth.range, map, map.file_no_hit()),
+            )
+        }),
     ];
     for (path, image) in outputs.into_iter().flatten() {
         write_image(path, &image)?;
+    }
+    if let Some(depth) = &request.depth16_output {
+        write_depth_png16(&frame, depth.range, &depth.path)?;
+    }
+    if let Some(path) = &request.depth_raw_output {
+        write_raw_depth(&frame, path)?;
     }
     Ok(RunReport {
         sphere_count: scene.spheres.len(),

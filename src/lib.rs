@@ -19,9 +19,15 @@
 //! * [`camera`]: orthonormal basis, camera space, pixel grid
 //! * [`intersect`]: the careful general ray–sphere routine (the tests' reference)
 //! * [`render`]: [`render::View`], [`render::Frame`], the fast disc path and the oracle loop
-//! * [`depth`]: the t → grey mapping and 8-bit quantisation
+//! * [`depth`]: the t → grey mapping, colour maps (turbo, viridis), 8- and 16-bit quantisation
 //! * [`export`]: TGA/PNG writers, atomic writes
+//! * [`depth_file`]: lossless depth (PFM, OpenEXR) and 16-bit depth PNGs
+//! * [`reproduce`]: everything one export writes, the scene of the current view and the command
+//!   that renders the same pictures again
 //! * [`explore`]: slider ranges and depth ranges derived from a scene
+//! * [`navigate`]: pan, zoom at a point, orbit and "frame all" as math on a view
+//! * [`depth_tuning`]: histogram of visible t and auto depth range
+//! * [`probe`]: what one pixel of a frame shows (position, t, sphere, material)
 //! * [`cli`]: command-line flags → typed request; [`headless`]: running that request
 //! * `app` (feature `gui`): the desktop viewer
 
@@ -35,12 +41,17 @@ pub mod app;
 pub mod camera;
 pub mod cli;
 pub mod depth;
+pub mod depth_file;
+pub mod depth_tuning;
 pub mod explore;
 pub mod export;
 pub mod generate;
 pub mod headless;
 pub mod intersect;
+pub mod navigate;
+pub mod probe;
 pub mod render;
+pub mod reproduce;
 pub mod scene;
 
 /// The scene the viewer shows when no file is given (also in `assets/default_scene.txt`).

@@ -3,7 +3,7 @@
 
 use image::{Rgb, RgbImage};
 
-use crate::depth::DepthRange;
+use crate::depth::{DepthColourMap, DepthRange};
 
 /// Sphere index of pixels that no sphere covers.
 pub const NO_HIT: u32 = u32::MAX;
@@ -68,10 +68,44 @@ impl Frame {
         })
     }
 
+    /// The 8-bit depth image over `range` through a colour map, top row first; no-hit pixels
+    /// are `no_hit`. With [`DepthColourMap::Grey`] and black for no hit this is
+    /// [`Self::depth_image`]. A supersampled frame maps its filtered greys (no hit decided by the
+    /// centre sample).
+    pub fn depth_image_mapped(
+        &self,
+        range: DepthRange,
+        map: DepthColourMap,
+        no_hit: [u8; 3],
+    ) -> RgbImage {
+        let filtered = self
+            .depth_grey
+            .as_ref()
+            .filter(|(grey_range, _)| *grey_range == range)
+            .map(|(_, grey)| grey);
+        RgbImage::from_fn(self.width_px, self.height_px, |x, y| {
+            let index = self.storage_index(x, y);
+            let t = self.t[index];
+            Rgb(match filtered {
+                Some(grey) if map == DepthColourMap::Grey && no_hit == [0; 3] => {
+                    [crate::depth::quantize_f32(grey[index]); 3]
+                }
+                Some(_) | None if t == f64::INFINITY || t.is_nan() => no_hit,
+                Some(grey) => map.rgb_of_grey(f64::from(grey[index])),
+                None => map.rgb(&range, t, no_hit),
+            })
+        })
+    }
+
     /// Colour and depth images side by side in one picture (colour left), as users share them.
     pub fn side_by_side_image(&self, range: DepthRange) -> RgbImage {
+        self.side_by_side_mapped(range, DepthColourMap::Grey)
+    }
+
+    /// [`Self::side_by_side_image`] with the depth through a colour map (no hit black).
+    pub fn side_by_side_mapped(&self, range: DepthRange, map: DepthColourMap) -> RgbImage {
         let colour = self.colour_image();
-        let depth = self.depth_image(range);
+        let depth = self.depth_image_mapped(range, map, map.file_no_hit());
         RgbImage::from_fn(self.width_px * 2, self.height_px, |x, y| {
             if x < self.width_px {
                 *colour.get_pixel(x, y)

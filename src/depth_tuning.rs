@@ -1,0 +1,180 @@
+//! Depth tuning from what a frame shows: the distribution of visible t (a histogram the viewer
+//! draws under the depth image) and "auto range", a depth range fitted to the visible t with an
+//! optional percentile cut against outliers.
+//!
+//! "Visible t" is the t of every pixel that hits a sphere in the frame (no-hit pixels, `+∞`,
+//! are left out). Both functions work on the frame's raw, one-sample-per-pixel t.
+
+use crate::depth::DepthRange;
+use crate::render::Frame;
+
+/// Largest accepted percentile cut for [`auto_range`] (each end), in percent.
+pub const MAX_PERCENTILE_CUT: f64 = 49.0;
+
+/// The visible t of a frame (finite values only), in storage order.
+pub fn visible_t(frame: &Frame) -> Vec<f64> {
+    frame.t.iter().copied().filter(|t| t.is_finite()).collect()
+}
+
+/// A depth range that brackets the visible t of `frame`: from the `cut_percent` percentile to
+/// the `100 − cut_percent` percentile (0 gives the exact nearest and farthest visible t). The
+/// percentile is the nearest-rank one: the value at index `round(p/100 · (n − 1))` of the sorted
+/// t. `None` when no pixel hits anything. `cut_percent` is clamped to
+/// `[0, MAX_PERCENTILE_CUT]` (NaN counts as 0).
+pub fn auto_range(frame: &Frame, cut_percent: f64) -> Option<DepthRange> {
+    let mut t = visible_t(frame);
+    if t.is_empty() {
+        return None;
+    }
+    let cut = if cut_percent.is_nan() {
+        0.0
+    } else {
+        cut_percent.clamp(0.0, MAX_PERCENTILE_CUT)
+    };
+    let last = t.len() - 1;
+    let rank = |percent: f64| ((percent / 100.0) * last as f64).round() as usize;
+    let low_index = rank(cut).min(last);
+    let high_index = rank(100.0 - cut).clamp(low_index, last);
+    let (_, &mut low, _) = t.select_nth_unstable_by(low_index, f64::total_cmp);
+    let (_, &mut high, _) = t.select_nth_unstable_by(high_index, f64::total_cmp);
+    Some(DepthRange::new(low, high))
+}
+
+/// Counts of visible t in equal-width bins over `[t_low, t_high]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DepthHistogram {
+    /// Left edge of the first bin (the nearest visible t).
+    pub t_low: f64,
+    /// Right edge of the last bin (the farthest visible t).
+    pub t_high: f64,
+    /// Pixels per bin; bin `i` spans `[t_low + i·w, t_low + (i+1)·w)` with the last bin closed.
+    pub counts: Vec<u32>,
+    /// Pixels with no hit (not in any bin).
+    pub no_hit: u32,
+}
+
+impl DepthHistogram {
+    /// The histogram of `frame`'s visible t in `bins` bins (at least 1). `None` when no pixel
+    /// hits anything. When every visible t is the same, all of them fall in one bin of a range
+    /// of zero width.
+    pub fn new(frame: &Frame, bins: usize) -> Option<Self> {
+        let bins = bins.max(1);
+        let mut low = f64::INFINITY;
+        let mut high = f64::NEG_INFINITY;
+        let mut no_hit = 0u32;
+        for &t in &frame.t {
+            if t.is_finite() {
+                low = low.min(t);
+                high = high.max(t);
+            } else {
+                no_hit = no_hit.saturating_add(1);
+            }
+        }
+        if low > high {
+            return None;
+        }
+        let mut counts = vec![0u32; bins];
+        let width = high - low;
+        for &t in frame.t.iter().filter(|t| t.is_finite()) {
+            let bin = if width > 0.0 {
+                // In [0, bins]; the farthest t lands in the last bin.
+                (((t - low) / width) * bins as f64) as usize
+            } else {
+                0
+            };
+            let count = &mut counts[bin.min(bins - 1)];
+            *count = count.saturating_add(1);
+        }
+        Some(Self {
+            t_low: low,
+            t_high: high,
+            counts,
+            no_hit,
+        })
+    }
+
+    /// Width of one bin in t.
+    pub fn bin_width(&self) -> f64 {
+        (self.t_high - self.t_low) / self.counts.len() as f64
+    }
+
+    /// The largest count (for scaling a plot); 0 for an empty histogram.
+    pub fn max_count(&self) -> u32 {
+        self.counts.iter().copied().max().unwrap_or(0)
+    }
+
+    /// Visible pixels counted.
+    pub fn total(&self) -> u64 {
+        self.counts.iter().map(|&c| u64::from(c)).sum()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::{NO_HIT, Precision};
+
+    fn frame_of(t: Vec<f64>) -> Frame {
+        let n = t.len();
+        Frame {
+            width_px: n as u32,
+            height_px: 1,
+            colour: vec![[0; 3]; n],
+            sphere: t
+                .iter()
+                .map(|t| if t.is_finite() { 0 } else { NO_HIT })
+                .collect(),
+            t,
+            precision: Precision::F64,
+            depth_grey: None,
+            disc_tests: 0,
+        }
+    }
+
+    #[test]
+    fn auto_range_brackets_the_visible_t() {
+        let frame = frame_of(vec![f64::INFINITY, 3.0, -1.5, 7.25, 2.0, f64::INFINITY]);
+        assert_eq!(auto_range(&frame, 0.0), Some(DepthRange::new(-1.5, 7.25)));
+        assert_eq!(
+            auto_range(&frame, f64::NAN),
+            Some(DepthRange::new(-1.5, 7.25))
+        );
+        assert_eq!(auto_range(&frame_of(vec![f64::INFINITY; 4]), 1.0), None);
+    }
+
+    #[test]
+    fn percentile_cut_drops_outliers() {
+        // 1000 values 0..999 plus two far outliers.
+        let mut t: Vec<f64> = (0..1000).map(f64::from).collect();
+        t.push(1e6);
+        t.push(-1e6);
+        let frame = frame_of(t);
+        let range = auto_range(&frame, 1.0).unwrap();
+        // Nearest rank: index round(0.01 · 1001) = 10 → value 9; index 991 → value 990.
+        assert_eq!(range, DepthRange::new(9.0, 990.0));
+        let whole = auto_range(&frame, 0.0).unwrap();
+        assert_eq!(whole, DepthRange::new(-1e6, 1e6));
+        // The cut is clamped: 80% behaves as 49%.
+        assert_eq!(auto_range(&frame, 80.0), auto_range(&frame, 49.0));
+        let middle = auto_range(&frame, 49.0).unwrap();
+        assert!(middle.min_t <= middle.max_t);
+    }
+
+    #[test]
+    fn histogram_counts_every_visible_pixel_once() {
+        let t = vec![0.0, 0.1, 0.5, 0.99, 1.0, f64::INFINITY, 1.0];
+        let histogram = DepthHistogram::new(&frame_of(t), 4).unwrap();
+        assert_eq!(histogram.t_low, 0.0);
+        assert_eq!(histogram.t_high, 1.0);
+        assert_eq!(histogram.counts, vec![2, 0, 1, 3]);
+        assert_eq!(histogram.no_hit, 1);
+        assert_eq!(histogram.total(), 6);
+        assert_eq!(histogram.max_count(), 3);
+        assert_eq!(histogram.bin_width(), 0.25);
+        // One distinct t: one full bin.
+        let flat = DepthHistogram::new(&frame_of(vec![2.0; 5]), 8).unwrap();
+        assert_eq!(flat.counts[0], 5);
+        assert_eq!(flat.total(), 5);
+        assert!(DepthHistogram::new(&frame_of(vec![f64::INFINITY]), 8).is_none());
+    }
+}

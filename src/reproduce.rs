@@ -1,0 +1,413 @@
+//! Reproducible exports: everything one export from the viewer writes, and how to make the same
+//! pictures again from the command line.
+//!
+//! An export to base path `dir/name.png` writes
+//! * `name_colour.png`, `name_depth.png` (the depth through the chosen colour map) and optionally
+//!   `name_both.png` (the two side by side);
+//! * optionally the lossless depth `name_depth.pfm` / `name_depth.exr` (raw t) or the 16-bit
+//!   `name_depth16.png`;
+//! * `name_scene.txt`: the scene with the **current view's camera** (centre, direction, up, size),
+//!   numbers written exactly, so the export does not depend on the original file staying as it
+//!   was ("save view as scene" writes the same text);
+//! * `name_command.sh`: the `raytracer` command line that renders `name_scene.txt` into the same
+//!   colour and depth files, byte for byte (same size, depth range, colour map, precision and
+//!   supersampling flags). It `cd`s to its own folder, so it runs from anywhere.
+
+use std::path::{Path, PathBuf};
+
+use crate::depth::DepthColourMap;
+use crate::depth_file::{RawDepthFormat, write_depth_png16, write_raw_depth};
+use crate::export::{ExportError, ExportPaths, ImageFormat, write_atomically, write_image};
+use crate::generate::scene_to_text;
+use crate::render::{Filter, Frame, Quality, View};
+use crate::scene::{OrthographicCamera, Scene};
+
+/// Extra depth output of an export, besides the 8-bit depth image.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "gui", derive(serde::Serialize, serde::Deserialize))]
+pub enum ExtraDepth {
+    /// Nothing more.
+    #[default]
+    None,
+    /// 16-bit grey PNG over the depth range (`name_depth16.png`).
+    Png16,
+    /// Raw t as 32-bit floats (`name_depth.pfm` or `name_depth.exr`).
+    Raw(RawDepthFormat),
+}
+
+/// What one export writes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExportPlan {
+    /// Base path; see [`ExportPaths::new`].
+    pub base_path: PathBuf,
+    /// Format of the 8-bit images when the base path's extension names none.
+    pub format: ImageFormat,
+    /// Also write colour and depth side by side.
+    pub side_by_side: bool,
+    /// Colour map of the depth image.
+    pub colour_map: DepthColourMap,
+    /// Lossless or 16-bit depth, if any.
+    pub extra_depth: ExtraDepth,
+}
+
+/// Every file of one export.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ExportFiles {
+    /// The 8-bit images.
+    pub images: ExportPaths,
+    /// `name_depth16.png`.
+    pub depth16: PathBuf,
+    /// `name_depth.pfm` or `.exr` (the extension follows the chosen format).
+    pub depth_raw: Option<PathBuf>,
+    /// `name_scene.txt`.
+    pub scene: PathBuf,
+    /// `name_command.sh`.
+    pub command: PathBuf,
+}
+
+impl ExportFiles {
+    /// The files `plan` writes.
+    pub fn of(plan: &ExportPlan) -> Self {
+        let images = ExportPaths::new(&plan.base_path, plan.format);
+        let sibling = |suffix: &str| {
+            let name = images
+                .colour
+                .file_name()
+                .map(|n| n.to_string_lossy().into_owned())
+                .unwrap_or_default();
+            let stem = name.rsplit_once("_colour.").map_or("raytracer", |(s, _)| s);
+            images.colour.with_file_name(format!("{stem}_{suffix}"))
+        };
+        Self {
+            depth16: sibling("depth16.png"),
+            depth_raw: match plan.extra_depth {
+                ExtraDepth::Raw(format) => Some(sibling(&format!("depth.{}", format.extension()))),
+                _ => None,
+            },
+            scene: sibling("scene.txt"),
+            command: sibling("command.sh"),
+            images,
+        }
+    }
+}
+
+/// `scene` with its camera replaced by `view`'s (image size and depth range are not part of a
+/// scene file).
+pub fn scene_with_view(scene: &Scene, view: &View) -> Scene {
+    Scene {
+        camera: OrthographicCamera {
+            center_world: view.center_world,
+            direction_world: view.direction_world,
+            up_world: view.up_world,
+            size_world: view.size_world,
+        },
+        ..scene.clone()
+    }
+}
+
+/// "Save view as scene": writes `scene` with `view`'s camera to `path` (atomically), numbers in
+/// Rust's shortest round-trip form so parsing it gives exactly this camera back.
+pub fn save_view_as_scene(scene: &Scene, view: &View, path: &Path) -> Result<(), ExportError> {
+    write_atomically(
+        path,
+        scene_to_text(&scene_with_view(scene, view)).as_bytes(),
+    )
+}
+
+/// The command-line arguments (after the program name) that render `files.scene` into the same
+/// colour and depth files as the export, file names relative to the export's folder.
+pub fn command_arguments(
+    plan: &ExportPlan,
+    files: &ExportFiles,
+    view: &View,
+    quality: &Quality,
+) -> Vec<String> {
+    let name = |path: &Path| {
+        path.file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default()
+    };
+    let range = view.depth_range;
+    let mut arguments: Vec<String> = vec![
+        "-input".into(),
+        name(&files.scene),
+        "-size".into(),
+        view.width_px.to_string(),
+        view.height_px.to_string(),
+        "-output".into(),
+        name(&files.images.colour),
+        "-depth".into(),
+        range.min_t.to_string(),
+        range.max_t.to_string(),
+        name(&files.images.depth),
+    ];
+    if plan.colour_map != DepthColourMap::Grey {
+        arguments.extend(["-depth_colormap".into(), plan.colour_map.name().into()]);
+    }
+    match (plan.extra_depth, &files.depth_raw) {
+        (ExtraDepth::Png16, _) => arguments.extend([
+            "-depth16".into(),
+            range.min_t.to_string(),
+            range.max_t.to_string(),
+            name(&files.depth16),
+        ]),
+        (ExtraDepth::Raw(_), Some(path)) => {
+            arguments.extend(["-depth_raw".into(), name(path)]);
+        }
+        _ => {}
+    }
+    if quality.precision != crate::render::Precision::F64 {
+        arguments.extend(["-precision".into(), quality.precision.name().into()]);
+    }
+    if let Some(sampling) = quality.sampling {
+        arguments.extend([
+            format!("-{}_samples", sampling.sampler.name()),
+            sampling.samples.to_string(),
+        ]);
+        if sampling.filter != Filter::PIXEL_BOX {
+            arguments.extend([
+                format!("-{}_filter", sampling.filter.name()),
+                sampling.filter.size().to_string(),
+            ]);
+        }
+    }
+    arguments
+}
+
+/// Quotes a word for a POSIX shell (single quotes; words of safe characters stay bare).
+pub fn shell_quote(word: &str) -> String {
+    let safe = !word.is_empty()
+        && word
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_.,/+=:".contains(c));
+    if safe {
+        word.to_owned()
+    } else {
+        format!("'{}'", word.replace('\'', r"'\''"))
+    }
+}
+
+/// The `name_command.sh` text for `arguments`.
+pub fn command_script(arguments: &[String]) -> String {
+    let words: Vec<String> = arguments.iter().map(|a| shell_quote(a)).collect();
+    format!(
+        "#!/bin/sh\n# Renders this export's colour and depth images again from its scene file.\n\
+         cd \"$(dirname \"$0\")\" || exit 1\nexec raytracer {}\n",
+        words.join(" ")
+    )
+}
+
+/// Writes every file of `plan` for `frame`, rendered from `scene` through `view` at `quality`.
+/// Returns the paths written. Each file is written atomically; the first failure stops the export
+/// and is returned (files already written stay, each complete).
+pub fn write_export(
+    scene: &Scene,
+    view: &View,
+    quality: &Quality,
+    frame: &Frame,
+    plan: &ExportPlan,
+) -> Result<Vec<PathBuf>, ExportError> {
+    let files = ExportFiles::of(plan);
+    let range = view.depth_range;
+    let map = plan.colour_map;
+    write_image(&files.images.colour, &frame.colour_image())?;
+    write_image(
+        &files.images.depth,
+        &frame.depth_image_mapped(range, map, map.file_no_hit()),
+    )?;
+    let mut written = vec![files.images.colour.clone(), files.images.depth.clone()];
+    if plan.side_by_side {
+        write_image(
+            &files.images.side_by_side,
+            &frame.side_by_side_mapped(range, map),
+        )?;
+        written.push(files.images.side_by_side.clone());
+    }
+    match (plan.extra_depth, &files.depth_raw) {
+        (ExtraDepth::Png16, _) => {
+            write_depth_png16(frame, range, &files.depth16)?;
+            written.push(files.depth16.clone());
+        }
+        (ExtraDepth::Raw(_), Some(path)) => {
+            write_raw_depth(frame, path)?;
+            written.push(path.clone());
+        }
+        _ => {}
+    }
+    save_view_as_scene(scene, view, &files.scene)?;
+    written.push(files.scene.clone());
+    let arguments = command_arguments(plan, &files, view, quality);
+    write_atomically(&files.command, command_script(&arguments).as_bytes())?;
+    set_executable(&files.command);
+    written.push(files.command.clone());
+    Ok(written)
+}
+
+/// Marks the command script executable where the platform has such a bit (best effort: the
+/// script also runs as `sh name_command.sh`).
+fn set_executable(path: &Path) {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        if let Ok(metadata) = std::fs::metadata(path) {
+            let mut permissions = metadata.permissions();
+            permissions.set_mode(permissions.mode() | 0o111);
+            let _ = std::fs::set_permissions(path, permissions);
+        }
+    }
+    #[cfg(not(unix))]
+    let _ = path;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::depth::DepthRange;
+    use crate::render::{Precision, Sampler, Sampling, render_with};
+    use crate::scene::{load_scene, parse_scene};
+
+    #[test]
+    fn shell_quoting() {
+        assert_eq!(shell_quote("a_b-1.png"), "a_b-1.png");
+        assert_eq!(shell_quote("-0.25"), "-0.25");
+        assert_eq!(shell_quote("my view.png"), "'my view.png'");
+        assert_eq!(shell_quote("it's"), r"'it'\''s'");
+        assert_eq!(shell_quote(""), "''");
+    }
+
+    #[test]
+    fn saved_view_parses_back_to_the_same_camera() {
+        let scene = parse_scene(include_str!("../scenes/scene1_03.txt")).unwrap();
+        let mut view = View::of_camera(&scene.camera, 10, 10, DepthRange::new(0.0, 1.0));
+        view.center_world += glam::DVec3::new(0.1, 1.0 / 3.0, -7e-9);
+        view.size_world = std::f64::consts::PI;
+        view.direction_world = glam::DVec3::new(0.3, -0.2, -1.0 / 7.0);
+        let folder = tempfile::tempdir().unwrap();
+        let path = folder.path().join("view.txt");
+        save_view_as_scene(&scene, &view, &path).unwrap();
+        let back = load_scene(&path).unwrap();
+        assert_eq!(back, scene_with_view(&scene, &view));
+        assert_eq!(back.camera.center_world, view.center_world);
+        assert_eq!(back.camera.size_world, view.size_world);
+    }
+
+    #[test]
+    fn command_names_every_setting() {
+        let plan = ExportPlan {
+            base_path: PathBuf::from("shots/my view.png"),
+            format: ImageFormat::Png,
+            side_by_side: true,
+            colour_map: DepthColourMap::Turbo,
+            extra_depth: ExtraDepth::Raw(RawDepthFormat::Exr),
+        };
+        let files = ExportFiles::of(&plan);
+        assert_eq!(files.scene, Path::new("shots/my view_scene.txt"));
+        assert_eq!(files.command, Path::new("shots/my view_command.sh"));
+        assert_eq!(
+            files.depth_raw.as_deref(),
+            Some(Path::new("shots/my view_depth.exr"))
+        );
+        let scene = parse_scene(include_str!("../scenes/scene1_01.txt")).unwrap();
+        let view = View::of_camera(&scene.camera, 64, 48, DepthRange::new(9.0, 10.5));
+        let quality = Quality {
+            precision: Precision::Auto,
+            sampling: Some(Sampling {
+                sampler: Sampler::Jittered,
+                samples: 16,
+                filter: Filter::Tent { radius: 1.5 },
+                seed: 0,
+            }),
+        };
+        let arguments = command_arguments(&plan, &files, &view, &quality);
+        let line = arguments.join(" ");
+        assert!(
+            line.starts_with("-input my view_scene.txt -size 64 48"),
+            "{line}"
+        );
+        for part in [
+            "-depth 9 10.5 my view_depth.png",
+            "-depth_colormap turbo",
+            "-depth_raw my view_depth.exr",
+            "-precision auto",
+            "-jittered_samples 16",
+            "-tent_filter 1.5",
+        ] {
+            assert!(line.contains(part), "{part} in {line}");
+        }
+        let script = command_script(&arguments);
+        assert!(script.contains("'my view_scene.txt'"), "{script}");
+        // The arguments are a valid command line.
+        assert!(crate::cli::parse_command(arguments).is_ok());
+    }
+
+    #[test]
+    fn export_writes_every_file_and_the_command_reproduces_them() {
+        let scene = parse_scene(include_str!("../scenes/scene1_02.txt")).unwrap();
+        let mut view = View::of_camera(&scene.camera, 48, 32, DepthRange::new(8.5, 11.0));
+        view.center_world.x += 0.37;
+        let quality = Quality::default();
+        let frame = render_with(&scene, &view, &quality).unwrap();
+        let folder = tempfile::tempdir().unwrap();
+        for (colour_map, extra_depth) in [
+            (DepthColourMap::Grey, ExtraDepth::Png16),
+            (
+                DepthColourMap::Viridis,
+                ExtraDepth::Raw(RawDepthFormat::Pfm),
+            ),
+        ] {
+            let plan = ExportPlan {
+                base_path: folder
+                    .path()
+                    .join(format!("shot {}.tga", colour_map.name())),
+                format: ImageFormat::Png,
+                side_by_side: true,
+                colour_map,
+                extra_depth,
+            };
+            let written = write_export(&scene, &view, &quality, &frame, &plan).unwrap();
+            assert_eq!(written.len(), 6, "{written:?}");
+            assert!(written.iter().all(|p| p.exists()));
+            // Run the command's arguments (from the export folder) into a second folder.
+            let files = ExportFiles::of(&plan);
+            let arguments = command_arguments(&plan, &files, &view, &quality);
+            let again = tempfile::tempdir().unwrap();
+            let rebased: Vec<String> = arguments
+                .iter()
+                .enumerate()
+                .map(|(i, a)| {
+                    let is_input = i > 0 && arguments[i - 1] == "-input";
+                    if a.ends_with(".tga") || a.ends_with(".png") || a.ends_with(".pfm") {
+                        again.path().join(a).display().to_string()
+                    } else if is_input {
+                        folder.path().join(a).display().to_string()
+                    } else {
+                        a.clone()
+                    }
+                })
+                .collect();
+            let crate::cli::Command::Render(request) = crate::cli::parse_command(rebased).unwrap()
+            else {
+                panic!("a render command");
+            };
+            crate::headless::run(&request).unwrap();
+            for path in [&files.images.colour, &files.images.depth]
+                .into_iter()
+                .chain(files.depth_raw.as_ref())
+            {
+                let name = path.file_name().unwrap();
+                assert_eq!(
+                    std::fs::read(path).unwrap(),
+                    std::fs::read(again.path().join(name)).unwrap(),
+                    "{name:?} is reproduced byte for byte"
+                );
+            }
+            if extra_depth == ExtraDepth::Png16 {
+                let name = files.depth16.file_name().unwrap();
+                assert_eq!(
+                    std::fs::read(&files.depth16).unwrap(),
+                    std::fs::read(again.path().join(name)).unwrap()
+                );
+            }
+        }
+    }
+}
