@@ -195,3 +195,90 @@ fn help_prints_usage_and_exits_zero() {
     let text = String::from_utf8_lossy(&output.stdout);
     assert!(text.contains("-depth DMIN DMAX FILE"), "{text}");
 }
+
+#[test]
+fn lossless_depth_files_hold_the_exact_t() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene_file = scene_path("scene1_03.txt");
+    let output = run(
+        folder.path(),
+        &[
+            "-input",
+            scene_file.to_str().unwrap(),
+            "-size",
+            "40",
+            "30",
+            "-depth_raw",
+            "t.pfm",
+            "-depth16",
+            "8",
+            "12",
+            "d16.png",
+            "-depth_colormap",
+            "turbo",
+            "-depth",
+            "8",
+            "12",
+            "d.png",
+        ],
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    let exr = run(
+        folder.path(),
+        &[
+            "-input",
+            scene_file.to_str().unwrap(),
+            "-size",
+            "40",
+            "30",
+            "-depth_raw",
+            "t.exr",
+        ],
+    );
+    assert!(exr.status.success(), "{}", stderr(&exr));
+    assert_eq!(files_in(folder.path()), ["d.png", "d16.png", "t.exr", "t.pfm"]);
+
+    let scene = raytracer::scene::load_scene(&scene_file).unwrap();
+    let view = raytracer::render::View::of_camera(
+        &scene.camera,
+        40,
+        30,
+        raytracer::depth::DepthRange::new(8.0, 12.0),
+    );
+    let frame = raytracer::render::render(&scene, &view).unwrap();
+    for name in ["t.pfm", "t.exr"] {
+        let raw = raytracer::depth_file::read_raw_depth(&folder.path().join(name)).unwrap();
+        assert_eq!((raw.width_px, raw.height_px), (40, 30), "{name}");
+        let mut hits = 0;
+        // Both are top row first.
+        for (index, (&got, &t)) in raw.t.iter().zip(&frame.t).enumerate() {
+            let expected = t as f32;
+            assert!(
+                got == expected || (got.is_infinite() && expected.is_infinite()),
+                "{name} pixel {index}: {got} vs {expected}"
+            );
+            hits += usize::from(got.is_finite());
+        }
+        assert!(hits > 0 && hits < 40 * 30, "{name}: hits and misses");
+    }
+    let png16 = image::open(folder.path().join("d16.png")).unwrap();
+    assert!(matches!(png16, image::DynamicImage::ImageLuma16(_)));
+    let turbo = image::open(folder.path().join("d.png")).unwrap().to_rgb8();
+    assert!(
+        turbo.pixels().any(|p| p[0] != p[1] || p[1] != p[2]),
+        "a colour map gives colours"
+    );
+}
+
+#[test]
+fn a_raw_depth_file_of_unknown_format_is_a_usage_error() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_01.txt");
+    let output = run(
+        folder.path(),
+        &["-input", scene.to_str().unwrap(), "-depth_raw", "t.tiff"],
+    );
+    assert_eq!(output.status.code(), Some(2), "{}", stderr(&output));
+    assert!(stderr(&output).contains("unknown format"), "{}", stderr(&output));
+    assert!(files_in(folder.path()).is_empty());
+}
