@@ -236,7 +236,10 @@ fn lossless_depth_files_hold_the_exact_t() {
         ],
     );
     assert!(exr.status.success(), "{}", stderr(&exr));
-    assert_eq!(files_in(folder.path()), ["d.png", "d16.png", "t.exr", "t.pfm"]);
+    assert_eq!(
+        files_in(folder.path()),
+        ["d.png", "d16.png", "t.exr", "t.pfm"]
+    );
 
     let scene = raytracer::scene::load_scene(&scene_file).unwrap();
     let view = raytracer::render::View::of_camera(
@@ -279,6 +282,10 @@ fn a_raw_depth_file_of_unknown_format_is_a_usage_error() {
         &["-input", scene.to_str().unwrap(), "-depth_raw", "t.tiff"],
     );
     assert_eq!(output.status.code(), Some(2), "{}", stderr(&output));
-    assert!(stderr(&output).contains("unknown format"), "{}", stderr(&output));
+    assert!(
+        stderr(&output).contains("unknown format"),
+        "{}",
+        stderr(&output)
+    );
     assert!(files_in(folder.path()).is_empty());
 }

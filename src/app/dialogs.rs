@@ -13,6 +13,8 @@ pub enum DialogKind {
     Open,
     /// "Export to".
     Export,
+    /// "Save view as scene".
+    SaveScene,
 }
 
 /// A dialog that is open (or whose answer has not been read yet).
@@ -83,6 +85,11 @@ pub fn spawn_dialog(
                     .add_filter("PNG", &["png"])
                     .add_filter("TGA", &["tga"])
                     .set_title("Export images")
+                    .set_file_name(suggested_name)
+                    .save_file(),
+                DialogKind::SaveScene => dialog
+                    .add_filter("6.837 scene", &["txt"])
+                    .set_title("Save view as scene")
                     .set_file_name(suggested_name)
                     .save_file(),
             };

@@ -7,6 +7,8 @@ use std::sync::Arc;
 use egui::{Color32, ColorImage};
 use rayon::prelude::*;
 
+use crate::depth::DepthColourMap;
+use crate::depth_tuning::DepthHistogram;
 use crate::render::worker::{RenderResult, RenderWorker};
 use crate::render::{Frame, Quality, View, ViewError, render_with};
 use crate::scene::Scene;
@@ -22,7 +24,30 @@ pub struct ViewerJob {
     pub scene_epoch: u64,
     /// Precision and other quality knobs.
     pub quality: Quality,
+    /// How the depth texture is coloured.
+    pub depth_style: DepthStyle,
 }
+
+/// How the depth texture is coloured: the map and the colour of no-hit pixels.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct DepthStyle {
+    /// Grey, turbo or viridis.
+    pub colour_map: DepthColourMap,
+    /// Colour of pixels where no ray hits.
+    pub no_hit_rgb: [u8; 3],
+}
+
+impl Default for DepthStyle {
+    fn default() -> Self {
+        Self {
+            colour_map: DepthColourMap::Grey,
+            no_hit_rgb: [0; 3],
+        }
+    }
+}
+
+/// Bins of the histogram of visible t drawn under the depth image.
+pub const HISTOGRAM_BINS: usize = 128;
 
 /// A rendered frame with the pixels of its two textures.
 #[derive(Debug, Clone)]
@@ -31,8 +56,10 @@ pub struct PreparedFrame {
     pub frame: Arc<Frame>,
     /// Colour image pixels.
     pub colour: ColorImage,
-    /// Depth image pixels (grey over the view's depth range).
+    /// Depth image pixels (the view's depth range through the job's colour map).
     pub depth: ColorImage,
+    /// Distribution of the visible t, `None` when no pixel hits.
+    pub histogram: Option<DepthHistogram>,
 }
 
 /// The worker's output for one job.
@@ -54,18 +81,33 @@ pub fn prepare_frame(job: &ViewerJob) -> JobOutput {
             .collect(),
     );
     let range = job.view.depth_range;
-    let depth = ColorImage::new(
-        size,
-        frame
-            .t
-            .par_iter()
-            .map(|&t| Color32::from_gray(range.grey_u8(t)))
-            .collect(),
-    );
+    let DepthStyle {
+        colour_map,
+        no_hit_rgb,
+    } = job.depth_style;
+    let depth = if frame.depth_grey.is_some() {
+        // Supersampled: the filtered greys, as the exported depth image has them.
+        let image = frame.depth_image_mapped(range, colour_map, no_hit_rgb);
+        ColorImage::from_rgb(size, image.as_raw())
+    } else {
+        ColorImage::new(
+            size,
+            frame
+                .t
+                .par_iter()
+                .map(|&t| {
+                    let [r, g, b] = colour_map.rgb(&range, t, no_hit_rgb);
+                    Color32::from_rgb(r, g, b)
+                })
+                .collect(),
+        )
+    };
+    let histogram = DepthHistogram::new(&frame, HISTOGRAM_BINS);
     Ok(PreparedFrame {
         frame: Arc::new(frame),
         colour,
         depth,
+        histogram,
     })
 }
 

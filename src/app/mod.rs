@@ -4,10 +4,18 @@
 //!
 //! * [`state`]: the loaded scene, the persisted settings
 //! * [`job`]: the render worker's job (render + texture pixels off the UI thread)
-//! * [`panels`]: the `*_ui` functions
+//! * [`images`]: the two images, their pointer gestures, the probe's lines
+//! * [`depth_tools`]: the depth histogram with draggable ends, colour map and auto range
+//! * [`panels`]: the side panel's sections and the status bar
 //! * [`dialogs`]: native file dialogs on their own threads
+//! * [`reload`]: watching the open file for changes
+//!
+//! Navigation (mouse and keyboard) turns gestures into [`crate::navigate`] calls; the probe is
+//! [`crate::probe`]; exports go through [`crate::reproduce`].
 
+pub mod depth_tools;
 pub mod dialogs;
+pub mod images;
 pub mod job;
 pub mod panels;
 pub mod reload;
@@ -19,16 +27,34 @@ use std::sync::mpsc::{Receiver, TryRecvError, channel};
 use std::time::Duration;
 
 use egui::{Key, KeyboardShortcut, Modifiers, TextureHandle, TextureOptions};
+use glam::DVec2;
 
 use self::dialogs::{
     DialogAnswer, DialogKind, PendingDialog, dialog_unavailable_reason, spawn_dialog,
 };
-use self::job::{JobResult, ViewerJob, ViewerWorker, prepare_frame, start_worker};
-use self::panels::{ShownImages, StatusLine};
+use self::images::{Footer, ImageGestures, ORBIT_RAD_PER_POINT, ShownImages};
+use self::job::{DepthStyle, JobResult, ViewerJob, ViewerWorker, prepare_frame, start_worker};
+use self::panels::StatusLine;
 use self::state::{ExportFormat, LoadedScene, Settings};
 use crate::cli::ViewerRequest;
-use crate::export::{ImageFormat, write_frame_images};
+use crate::depth_tuning::{DepthHistogram, auto_range};
+use crate::export::ImageFormat;
+use crate::navigate;
+use crate::probe::{Probe, probe};
 use crate::render::{Frame, Quality, View, check_image_size};
+use crate::reproduce::{ExportPlan, save_view_as_scene, write_export};
+
+/// Keyboard pan step, as a fraction of the image's shorter side.
+pub const KEY_PAN_FRACTION: f64 = 0.1;
+
+/// Keyboard orbit step (Shift+arrow), radians.
+pub const KEY_ORBIT_RAD: f64 = std::f64::consts::PI / 36.0;
+
+/// Keyboard zoom step: `+` divides the size by this, `-` multiplies it.
+pub const KEY_ZOOM_FACTOR: f64 = 1.25;
+
+/// What the worker is asked for: a view of a scene load at a quality, its depth drawn in a style.
+type Wanted = (View, u64, Quality, DepthStyle);
 
 /// How long the view must stay unchanged before a preview is refined to the chosen quality.
 pub const REFINE_DELAY: Duration = Duration::from_millis(150);
@@ -59,8 +85,10 @@ struct Shown {
     view: View,
     scene_epoch: u64,
     quality: Quality,
+    depth_style: DepthStyle,
     colour: TextureHandle,
     depth: TextureHandle,
+    histogram: Option<DepthHistogram>,
     render_ms: f64,
 }
 
@@ -72,19 +100,24 @@ pub struct ViewerApp {
     scene_epoch: u64,
     view: View,
     worker: Option<ViewerWorker>,
-    submitted: Option<(View, u64, Quality)>,
+    submitted: Option<Wanted>,
     shown: Option<Shown>,
     scene_error: Option<String>,
     message: Option<(String, bool)>,
     path_text: String,
     dialog: Option<PendingDialog>,
     dialog_note: Option<&'static str>,
-    export_job: Option<Receiver<Result<Vec<PathBuf>, String>>>,
+    /// A background write (export or saved scene): the success or failure message.
+    export_job: Option<Receiver<Result<String, String>>>,
     watcher: Option<reload::FileWatcher>,
     /// When the view, scene or quality last changed (for progressive refinement).
     last_change: std::time::Instant,
     /// What the last change was made to.
-    last_wanted: Option<(View, u64, Quality)>,
+    last_wanted: Option<Wanted>,
+    /// The pointer's position on an image (image pixels, y up), if over one.
+    hover_px: Option<DVec2>,
+    /// The pinned probe position (image pixels, y up).
+    pinned_px: Option<DVec2>,
     ctx: egui::Context,
 }
 
@@ -129,6 +162,8 @@ impl ViewerApp {
             watcher: None,
             last_change: std::time::Instant::now(),
             last_wanted: None,
+            hover_px: None,
+            pinned_px: None,
             ctx: cc.egui_ctx.clone(),
         };
         let startup_scene = request.input.or_else(|| app.settings.last_scene.clone());
@@ -163,11 +198,114 @@ impl ViewerApp {
     /// True when the frame on screen is the current view of the current scene at the current
     /// quality.
     pub fn frame_is_current(&self) -> bool {
+        let style = self.depth_style();
         self.shown.as_ref().is_some_and(|s| {
             s.view == self.view
                 && s.scene_epoch == self.scene_epoch
                 && s.quality == self.settings.quality
+                && s.depth_style == style
         })
+    }
+
+    /// The persisted settings.
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// How the depth texture is coloured now.
+    fn depth_style(&self) -> DepthStyle {
+        DepthStyle {
+            colour_map: self.settings.depth.colour_map,
+            no_hit_rgb: self.settings.depth.no_hit_rgb(),
+        }
+    }
+
+    /// The histogram of visible t of the frame on screen.
+    pub fn histogram(&self) -> Option<&DepthHistogram> {
+        self.shown.as_ref().and_then(|s| s.histogram.as_ref())
+    }
+
+    /// Probes the frame on screen at image position `px` (pixels, y up).
+    pub fn probe_at(&self, px: DVec2) -> Option<Probe> {
+        let shown = self.shown.as_ref()?;
+        if shown.scene_epoch != self.scene_epoch || !(px.x >= 0.0 && px.y >= 0.0) {
+            return None;
+        }
+        let (x_px, y_up_px) = (px.x.floor() as u32, px.y.floor() as u32);
+        probe(&self.loaded.scene, &shown.view, &shown.frame, x_px, y_up_px)
+    }
+
+    /// The pointer's position on an image (image pixels, y up), if it is over one.
+    pub fn hover_px(&self) -> Option<DVec2> {
+        self.hover_px
+    }
+
+    /// The probe of the pixel under the pointer.
+    pub fn hover_probe(&self) -> Option<Probe> {
+        self.hover_px.and_then(|px| self.probe_at(px))
+    }
+
+    /// The probe of the pinned pixel.
+    pub fn pinned_probe(&self) -> Option<Probe> {
+        self.pinned_px.and_then(|px| self.probe_at(px))
+    }
+
+    /// "Auto range": fits the depth range to the t visible in the frame on screen, ignoring
+    /// the settings' percentage at each end. Says so when no sphere is visible.
+    pub fn auto_range(&mut self) {
+        let cut = self.settings.depth.auto_cut_percent;
+        match self.shown.as_ref().and_then(|s| auto_range(&s.frame, cut)) {
+            Some(range) => self.view.depth_range = range,
+            None => {
+                self.message = Some(("auto range: no sphere is visible".into(), false));
+            }
+        }
+    }
+
+    /// "Frame all": fits centre and size to the scene's bounds (direction and up stay).
+    pub fn frame_all(&mut self) {
+        self.view = navigate::frame_all(&self.loaded.scene, &self.view);
+    }
+
+    /// Applies pointer gestures on the images: pan, orbit, zoom, hover and pin.
+    pub fn apply_gestures(&mut self, gestures: &ImageGestures) {
+        if gestures.pan_px != DVec2::ZERO {
+            self.view = navigate::pan(&self.view, gestures.pan_px);
+        }
+        if gestures.orbit_points != DVec2::ZERO {
+            let turn = gestures.orbit_points * ORBIT_RAD_PER_POINT;
+            self.orbit(turn.x, turn.y);
+        }
+        if let Some((factor, anchor_px)) = gestures.zoom {
+            self.view = navigate::zoom_at(&self.view, factor, anchor_px);
+        }
+        self.hover_px = gestures.hover_px;
+        if let Some(px) = gestures.clicked_px {
+            self.pinned_px = Some(px);
+        }
+        if gestures.unpin {
+            self.pinned_px = None;
+        }
+    }
+
+    /// The probe's lines: the pinned pixel, then the hovered one.
+    fn probe_lines(&self) -> Vec<String> {
+        let mut lines = Vec::new();
+        for (name, probe) in [
+            ("pinned", self.pinned_probe()),
+            ("hover", self.hover_probe()),
+        ] {
+            if let Some(probe) = probe {
+                lines.extend(describe_probe(name, &probe));
+            }
+        }
+        lines
+    }
+
+    /// Orbits around the scene's centre: `yaw_rad` as a drag to the right, `pitch_rad` up.
+    fn orbit(&mut self, yaw_rad: f64, pitch_rad: f64) {
+        let pivot = navigate::orbit_pivot(&self.loaded.scene);
+        self.view = navigate::orbit(&self.view, pivot, yaw_rad, pitch_rad);
     }
 
     /// The error of the last scene that failed to load, if shown.
@@ -290,6 +428,14 @@ impl ViewerApp {
                 return;
             }
         }
+        let plan = ExportPlan {
+            base_path,
+            format,
+            side_by_side: export.side_by_side,
+            colour_map: self.settings.depth.colour_map,
+            extra_depth: export.extra_depth,
+        };
+        let quality = self.settings.quality;
         // Reuse the frame on screen when it is exactly what would be exported.
         let ready = self
             .shown
@@ -304,36 +450,56 @@ impl ViewerApp {
             scene: Arc::clone(&self.loaded.scene),
             view,
             scene_epoch: self.scene_epoch,
-            quality: self.settings.quality,
+            quality,
+            depth_style: DepthStyle::default(),
         };
+        self.write_in_background("exporting…", move || {
+            let frame = match ready {
+                Some(frame) => frame,
+                None => prepare_frame(&job).map_err(|e| e.to_string())?.frame,
+            };
+            let written = write_export(&job.scene, &view, &quality, &frame, &plan)
+                .map_err(|e| e.to_string())?;
+            let names: Vec<String> = written.iter().map(|p| p.display().to_string()).collect();
+            Ok(format!("exported {}", names.join(", ")))
+        });
+    }
+
+    /// "Save view as scene": writes the scene with the current camera to `path` (in the
+    /// background; the outcome appears in the status bar).
+    pub fn save_view_to(&mut self, path: PathBuf) {
+        let scene = Arc::clone(&self.loaded.scene);
+        let view = self.view;
+        self.write_in_background("saving the view…", move || {
+            save_view_as_scene(&scene, &view, &path).map_err(|e| e.to_string())?;
+            Ok(format!("saved the view as {}", path.display()))
+        });
+    }
+
+    /// Runs `write` on a thread of its own; its message lands in the status bar.
+    fn write_in_background(
+        &mut self,
+        running: &str,
+        write: impl FnOnce() -> Result<String, String> + Send + 'static,
+    ) {
+        if self.export_job.is_some() {
+            self.message = Some(("wait: a file is still being written".into(), true));
+            return;
+        }
         let (sender, receiver) = channel();
         let ctx = self.ctx.clone();
         let spawned = std::thread::Builder::new()
             .name("export".into())
             .spawn(move || {
-                let frame = match ready {
-                    Some(frame) => Ok(frame),
-                    None => prepare_frame(&job).map(|p| p.frame),
-                };
-                let outcome = frame.map_err(|e| e.to_string()).and_then(|frame| {
-                    write_frame_images(
-                        &frame,
-                        view.depth_range,
-                        &base_path,
-                        format,
-                        export.side_by_side,
-                    )
-                    .map_err(|e| e.to_string())
-                });
-                let _ = sender.send(outcome);
+                let _ = sender.send(write());
                 ctx.request_repaint();
             });
         match spawned {
             Ok(_) => {
                 self.export_job = Some(receiver);
-                self.message = Some(("exporting…".into(), false));
+                self.message = Some((running.into(), false));
             }
-            Err(error) => self.message = Some((format!("export: cannot start: {error}"), true)),
+            Err(error) => self.message = Some((format!("cannot start writing: {error}"), true)),
         }
     }
 
@@ -359,10 +525,14 @@ impl ViewerApp {
                         shown.view = job.view;
                         shown.scene_epoch = scene_epoch;
                         shown.quality = job.quality;
+                        shown.depth_style = job.depth_style;
+                        shown.histogram = prepared.histogram;
                         shown.render_ms = render_ms;
                     }
                     None => {
                         self.shown = Some(Shown {
+                            depth_style: job.depth_style,
+                            histogram: prepared.histogram,
                             colour: ctx.load_texture(
                                 "colour",
                                 prepared.colour,
@@ -406,19 +576,22 @@ impl ViewerApp {
                     self.settings.export.path = path.display().to_string();
                     self.export_to(path);
                 }
+                DialogAnswer::Chosen(DialogKind::SaveScene, path) => {
+                    self.dialog = None;
+                    self.settings.export.scene_path = path.display().to_string();
+                    self.save_view_to(path);
+                }
                 DialogAnswer::Cancelled(_) => self.dialog = None,
             }
         }
         if let Some(receiver) = &self.export_job {
             match receiver.try_recv() {
-                Ok(Ok(paths)) => {
-                    let names: Vec<String> =
-                        paths.iter().map(|p| p.display().to_string()).collect();
-                    self.message = Some((format!("exported {}", names.join(", ")), false));
+                Ok(Ok(done)) => {
+                    self.message = Some((done, false));
                     self.export_job = None;
                 }
                 Ok(Err(error)) => {
-                    self.message = Some((format!("export failed: {error}"), true));
+                    self.message = Some((format!("writing failed: {error}"), true));
                     self.export_job = None;
                 }
                 Err(TryRecvError::Empty) => {}
@@ -438,7 +611,11 @@ impl ViewerApp {
         if self.dialog.is_some() {
             return;
         }
-        match spawn_dialog(kind, &self.ctx, &self.settings.export.path) {
+        let suggested = match kind {
+            DialogKind::SaveScene => &self.settings.export.scene_path,
+            _ => &self.settings.export.path,
+        };
+        match spawn_dialog(kind, &self.ctx, suggested) {
             Ok(dialog) => self.dialog = Some(dialog),
             Err(error) => {
                 self.message = Some((format!("cannot open a file dialog: {error}"), true))
@@ -480,6 +657,72 @@ impl ViewerApp {
         if let Some(path) = dropped {
             self.open(&path);
         }
+        self.navigation_keys(ctx);
+    }
+
+    /// Keyboard navigation while no text field or slider has the keyboard: arrows move the
+    /// camera, Shift+arrows orbit, `+`/`-` zoom at the image centre, F frames all, Home resets,
+    /// A fits the depth range, Escape unpins the probe.
+    fn navigation_keys(&mut self, ctx: &egui::Context) {
+        if ctx.memory(|memory| memory.focused().is_some()) {
+            return;
+        }
+        let (shift, pressed) = ctx.input(|input| {
+            let keys = [
+                Key::ArrowLeft,
+                Key::ArrowRight,
+                Key::ArrowUp,
+                Key::ArrowDown,
+                Key::Plus,
+                Key::Equals,
+                Key::Minus,
+                Key::F,
+                Key::Home,
+                Key::A,
+                Key::Escape,
+            ];
+            let pressed: Vec<Key> = keys
+                .into_iter()
+                .filter(|&key| input.key_pressed(key))
+                .collect();
+            (input.modifiers.shift, pressed)
+        });
+        let (width, height) = (
+            f64::from(self.view.width_px),
+            f64::from(self.view.height_px),
+        );
+        let step_px = KEY_PAN_FRACTION * width.min(height);
+        let centre_px = DVec2::new(0.5 * width, 0.5 * height);
+        for key in pressed {
+            let arrow = match key {
+                Key::ArrowLeft => Some(DVec2::NEG_X),
+                Key::ArrowRight => Some(DVec2::X),
+                Key::ArrowUp => Some(DVec2::Y),
+                Key::ArrowDown => Some(DVec2::NEG_Y),
+                _ => None,
+            };
+            match (key, arrow) {
+                (_, Some(direction)) if shift => {
+                    let turn = direction * KEY_ORBIT_RAD;
+                    self.orbit(turn.x, turn.y);
+                }
+                // The camera moves along the arrow: the picture moves the other way.
+                (_, Some(direction)) => {
+                    self.view = navigate::pan(&self.view, -direction * step_px);
+                }
+                (Key::Plus | Key::Equals, _) => {
+                    self.view = navigate::zoom_at(&self.view, 1.0 / KEY_ZOOM_FACTOR, centre_px);
+                }
+                (Key::Minus, _) => {
+                    self.view = navigate::zoom_at(&self.view, KEY_ZOOM_FACTOR, centre_px);
+                }
+                (Key::F, _) => self.frame_all(),
+                (Key::Home, _) => self.reset_view(),
+                (Key::A, _) => self.auto_range(),
+                (Key::Escape, _) => self.pinned_px = None,
+                _ => {}
+            }
+        }
     }
 
     fn toolbar_ui(&mut self, ui: &mut egui::Ui) {
@@ -508,13 +751,31 @@ impl ViewerApp {
                 self.reload();
             }
             if ui
+                .button("Frame all")
+                .on_hover_text("Fit centre and size to the whole scene (F)")
+                .clicked()
+            {
+                self.frame_all();
+            }
+            if ui
                 .button("Reset view")
-                .on_hover_text("Back to the file's camera")
+                .on_hover_text("Back to the file's camera (Home)")
                 .clicked()
             {
                 self.reset_view();
             }
-            ui.toggle_value(&mut self.settings.show_controls, "Controls");
+            if ui
+                .button("Save view as scene…")
+                .on_hover_text("Write the scene with the current camera to a file")
+                .clicked()
+            {
+                self.open_dialog(DialogKind::SaveScene);
+            }
+            ui.toggle_value(&mut self.settings.show_controls, "Controls")
+                .on_hover_text(
+                    "Drag an image to pan, wheel to zoom, right-drag or Shift-drag to orbit; \
+                     arrows, Shift+arrows, + and - do the same from the keyboard",
+                );
         });
     }
 
@@ -522,12 +783,24 @@ impl ViewerApp {
         egui::ScrollArea::vertical().show(ui, |ui| {
             let ranges = self.loaded.ranges(&self.view);
             panels::controls_ui(ui, &mut self.view, &ranges);
+            let depth = depth_tools::depth_tools_ui(ui, &mut self.settings.depth);
+            if depth.auto_range {
+                self.auto_range();
+            }
             ui.separator();
             panels::quality_ui(ui, &mut self.settings.quality);
             ui.separator();
-            let file = panels::file_ui(ui, &mut self.path_text);
+            let file = panels::file_ui(
+                ui,
+                &mut self.path_text,
+                &mut self.settings.export.scene_path,
+            );
             if let Some(path) = file.open_path {
                 self.open(Path::new(path.trim()));
+            }
+            if file.save_view {
+                let path = PathBuf::from(self.settings.export.scene_path.trim());
+                self.save_view_to(path);
             }
             ui.separator();
             let export = panels::export_ui(ui, &mut self.settings.export, self.dialog_note);
@@ -541,7 +814,8 @@ impl ViewerApp {
     /// Progressive refinement: while the view keeps changing, one sample per pixel (a preview);
     /// once it has been still for [`REFINE_DELAY`], the chosen quality.
     fn submit_if_changed(&mut self) {
-        let chosen = (self.view, self.scene_epoch, self.settings.quality);
+        let style = self.depth_style();
+        let chosen = (self.view, self.scene_epoch, self.settings.quality, style);
         if self.last_wanted != Some(chosen) {
             self.last_wanted = Some(chosen);
             self.last_change = std::time::Instant::now();
@@ -558,7 +832,7 @@ impl ViewerApp {
                 ..self.settings.quality
             }
         };
-        let wanted = (self.view, self.scene_epoch, quality);
+        let wanted = (self.view, self.scene_epoch, quality, style);
         if self.submitted == Some(wanted) {
             return;
         }
@@ -568,6 +842,7 @@ impl ViewerApp {
                 view: self.view,
                 scene_epoch: self.scene_epoch,
                 quality,
+                depth_style: style,
             });
             self.submitted = Some(wanted);
         }
@@ -579,6 +854,39 @@ impl ViewerApp {
             s.quality.sampling.is_none() && self.settings.quality.sampling.is_some()
         })
     }
+}
+
+/// Two lines describing a probe: where the pixel is, and what its ray hits.
+pub fn describe_probe(name: &str, probe: &Probe) -> [String; 2] {
+    let short = images::short_number;
+    let at = format!(
+        "{name:<6} pixel ({}, {}) · screen ({}, {})",
+        probe.x_px,
+        probe.y_up_px,
+        short(probe.screen_world.x),
+        short(probe.screen_world.y)
+    );
+    let hit = match &probe.hit {
+        None => "       no hit".to_owned(),
+        Some(hit) => format!(
+            "       t {} · world ({}, {}, {}) · sphere #{} · {}",
+            short(hit.t),
+            short(hit.point_world.x),
+            short(hit.point_world.y),
+            short(hit.point_world.z),
+            hit.sphere_index,
+            match hit.material_index {
+                Some(index) => format!(
+                    "material #{index} ({}, {}, {})",
+                    short(f64::from(hit.diffuse_colour.x)),
+                    short(f64::from(hit.diffuse_colour.y)),
+                    short(f64::from(hit.diffuse_colour.z))
+                ),
+                None => "default material (white)".to_owned(),
+            }
+        ),
+    };
+    [at, hit]
 }
 
 impl eframe::App for ViewerApp {
@@ -630,15 +938,31 @@ impl eframe::App for ViewerApp {
                 .max_size(max_width)
                 .show(ui, |ui| self.side_panel_ui(ui));
         }
+        let probe_lines = self.probe_lines();
+        let style = self.depth_style();
         let shown = self.shown.as_ref().map(|s| ShownImages {
             colour: &s.colour,
             depth: &s.depth,
             size_px: [s.frame.width_px, s.frame.height_px],
             depth_range: s.view.depth_range,
+            histogram: s.histogram.as_ref(),
         });
-        let (width_px, height_px) = egui::CentralPanel::default()
-            .show(ui, |ui| panels::images_ui(ui, shown))
+        let footer = Footer {
+            probe_lines: &probe_lines,
+            pinned: self.pinned_px,
+            depth_range: &mut self.view.depth_range,
+            colour_map: style.colour_map,
+            no_hit_rgb: style.no_hit_rgb,
+        };
+        let gestures = egui::CentralPanel::default()
+            .show(ui, |ui| images::images_ui(ui, shown, footer))
             .inner;
+        self.apply_gestures(&gestures);
+        let (width_px, height_px) = gestures.wanted_px;
+        if (width_px, height_px) != (self.view.width_px, self.view.height_px) {
+            // The same world point stays under the pinned probe only in pixels of this size.
+            self.pinned_px = None;
+        }
         self.view.width_px = width_px;
         self.view.height_px = height_px;
         self.submit_if_changed();

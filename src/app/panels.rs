@@ -1,18 +1,15 @@
-//! The viewer's panels, each a `*_ui` function over plain state: the view controls, the file and
-//! export sections, the two images, and the status bar. No rendering math lives here.
+//! The viewer's side and bottom panels, each a `*_ui` function over plain state: the view
+//! controls, the quality, file and export sections, and the status bar. No rendering math lives
+//! here. (The images are in [`super::images`], the depth tools in [`super::depth_tools`].)
 
-use egui::{Color32, Rect, RichText, Sense, TextureHandle, Ui, Vec2};
+use egui::{RichText, Ui};
 
 use super::state::{ExportFormat, ExportSettings};
+use crate::depth_file::RawDepthFormat;
 use crate::explore::SliderRanges;
 use crate::render::sampling::MAX_FILTER_SIZE;
 use crate::render::{Filter, MAX_SIDE_PX, Precision, Quality, Sampler, Sampling, View};
-
-/// Space between the two images, in points.
-const IMAGE_GAP_POINTS: f32 = 8.0;
-
-/// Height reserved for the caption above each image, in points.
-const CAPTION_POINTS: f32 = 20.0;
+use crate::reproduce::ExtraDepth;
 
 fn widened(range: &std::ops::RangeInclusive<f64>, value: f64) -> std::ops::RangeInclusive<f64> {
     if value.is_finite() {
@@ -48,7 +45,7 @@ pub fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) {
             .max_decimals(6),
     );
     ui.separator();
-    ui.label("Depth range (t: white … black)");
+    ui.label("Depth range (t: near … far)");
     slider(
         ui,
         "depth min",
@@ -163,12 +160,27 @@ pub const SAMPLE_CHOICES: [u32; 7] = [1, 4, 9, 16, 25, 64, 256];
 pub struct FileRequests {
     /// Open the scene at the typed path.
     pub open_path: Option<String>,
+    /// Write the scene with the current camera to the typed path.
+    pub save_view: bool,
 }
 
-/// A typed scene path and an "Open path" button (works without any file dialog).
-pub fn file_ui(ui: &mut Ui, path_text: &mut String) -> FileRequests {
+/// A typed scene path with an "Open path" button, and a path to save the current view as a scene
+/// file to (both work without any file dialog).
+pub fn file_ui(ui: &mut Ui, path_text: &mut String, save_path: &mut String) -> FileRequests {
     let mut requests = FileRequests::default();
     ui.heading("Scene file");
+    ui.horizontal(|ui| {
+        let label = ui.label("view to");
+        ui.add(egui::TextEdit::singleline(save_path).desired_width(150.0))
+            .labelled_by(label.id);
+        if ui
+            .button("Save view as scene")
+            .on_hover_text("write the scene with the current camera (centre, direction, up, size)")
+            .clicked()
+        {
+            requests.save_view = true;
+        }
+    });
     ui.horizontal(|ui| {
         let label = ui.label("path");
         let field = ui
@@ -214,6 +226,28 @@ pub fn export_ui(
     });
     ui.checkbox(&mut settings.side_by_side, "also side by side");
     ui.horizontal(|ui| {
+        let label = ui.label("depth also as");
+        let choices = [
+            (ExtraDepth::None, "nothing more"),
+            (ExtraDepth::Png16, "16-bit PNG"),
+            (ExtraDepth::Raw(RawDepthFormat::Pfm), "raw t, PFM"),
+            (ExtraDepth::Raw(RawDepthFormat::Exr), "raw t, EXR"),
+        ];
+        let selected = choices
+            .iter()
+            .find(|(choice, _)| *choice == settings.extra_depth)
+            .map_or("nothing more", |(_, name)| name);
+        egui::ComboBox::from_id_salt("extra depth")
+            .selected_text(selected)
+            .show_ui(ui, |ui| {
+                for (choice, name) in choices {
+                    ui.selectable_value(&mut settings.extra_depth, choice, name);
+                }
+            })
+            .response
+            .labelled_by(label.id);
+    });
+    ui.horizontal(|ui| {
         let label = ui.label("to");
         ui.add(egui::TextEdit::singleline(&mut settings.path).desired_width(150.0))
             .labelled_by(label.id);
@@ -222,9 +256,13 @@ pub fn export_ui(
         }
     });
     ui.label(
-        RichText::new("writes <name>_colour, <name>_depth (and <name>_both)")
-            .small()
-            .weak(),
+        RichText::new(
+            "writes <name>_colour, <name>_depth (in the colour map on screen), <name>_both, \
+             <name>_scene.txt (the current camera) and <name>_command.sh (the command line \
+             that renders the same files)",
+        )
+        .small()
+        .weak(),
     );
     if let Some(note) = dialog_note {
         ui.label(
@@ -234,102 +272,6 @@ pub fn export_ui(
         );
     }
     requests
-}
-
-/// The textures of the frame on screen and its size in pixels.
-pub struct ShownImages<'a> {
-    /// Colour texture.
-    pub colour: &'a TextureHandle,
-    /// Depth texture.
-    pub depth: &'a TextureHandle,
-    /// Frame size in physical pixels.
-    pub size_px: [u32; 2],
-    /// Depth range the depth texture was mapped with.
-    pub depth_range: crate::depth::DepthRange,
-}
-
-/// The image size (physical pixels) that fills half of the area `available_points` at
-/// `pixels_per_point`: the two images side by side, each below its caption.
-pub fn image_size_px(
-    available_points: Vec2,
-    pixels_per_point: f32,
-    max_texture_side: usize,
-) -> (u32, u32) {
-    let width_points = ((available_points.x - IMAGE_GAP_POINTS) * 0.5).max(1.0);
-    let height_points = (available_points.y - CAPTION_POINTS).max(1.0);
-    let max_side = (max_texture_side as f32).min(MAX_SIDE_PX as f32);
-    let to_px = |points: f32| (points * pixels_per_point).floor().clamp(1.0, max_side) as u32;
-    (to_px(width_points), to_px(height_points))
-}
-
-/// The colour and depth images side by side, each scaled to fit its half while keeping square
-/// pixels (at 1:1 physical pixels when the frame matches the area). Returns the image size in
-/// physical pixels the area asks for.
-pub fn images_ui(ui: &mut Ui, shown: Option<ShownImages<'_>>) -> (u32, u32) {
-    let pixels_per_point = ui.ctx().pixels_per_point();
-    let available = ui.available_size();
-    let max_texture_side = ui.ctx().input(|i| i.max_texture_side);
-    let wanted = image_size_px(available, pixels_per_point, max_texture_side);
-    let half = Vec2::new(
-        ((available.x - IMAGE_GAP_POINTS) * 0.5).max(1.0),
-        (available.y - CAPTION_POINTS).max(1.0),
-    );
-    ui.horizontal_top(|ui| {
-        ui.spacing_mut().item_spacing.x = IMAGE_GAP_POINTS;
-        let captions = match &shown {
-            Some(images) => [
-                "colour".to_owned(),
-                format!(
-                    "depth  (t {} white … {} black)",
-                    short_number(images.depth_range.min_t),
-                    short_number(images.depth_range.max_t)
-                ),
-            ],
-            None => ["colour".to_owned(), "depth".to_owned()],
-        };
-        for (index, caption) in captions.into_iter().enumerate() {
-            ui.vertical(|ui| {
-                ui.set_width(half.x);
-                ui.label(caption);
-                let (area, _) = ui.allocate_exact_size(half, Sense::hover());
-                let Some(images) = &shown else {
-                    ui.painter().rect_filled(area, 0.0, Color32::from_gray(30));
-                    return;
-                };
-                let texture = if index == 0 {
-                    images.colour
-                } else {
-                    images.depth
-                };
-                let frame_points = Vec2::new(images.size_px[0] as f32, images.size_px[1] as f32)
-                    / pixels_per_point;
-                let scale = (area.width() / frame_points.x).min(area.height() / frame_points.y);
-                let size = frame_points * scale;
-                // Snap to the physical pixel grid so a 1:1 frame is shown without resampling.
-                let min =
-                    ((area.min.to_vec2() * pixels_per_point).round() / pixels_per_point).to_pos2();
-                let rect = Rect::from_min_size(min, size);
-                ui.painter().image(
-                    texture.id(),
-                    rect,
-                    Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(1.0, 1.0)),
-                    Color32::WHITE,
-                );
-            });
-        }
-    });
-    wanted
-}
-
-/// A number shortened for captions (up to 6 significant digits).
-pub fn short_number(value: f64) -> String {
-    let text = format!("{value:.6}");
-    let trimmed = text.trim_end_matches('0').trim_end_matches('.');
-    if trimmed.len() > 12 {
-        format!("{value:.4e}")
-    } else {
-        trimmed.to_owned()
-    }
 }
 
 /// What the status bar shows.
@@ -407,29 +349,4 @@ pub fn error_banner_ui(ui: &mut Ui, message: &str) -> bool {
         }
     });
     dismissed
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn render_size_follows_physical_pixels() {
-        // 808 points wide: two images of (808 − 8) / 2 = 400 points; 620 − 20 = 600 points high.
-        let area = Vec2::new(808.0, 620.0);
-        assert_eq!(image_size_px(area, 1.0, 8192), (400, 600));
-        assert_eq!(image_size_px(area, 2.0, 8192), (800, 1200));
-        assert_eq!(image_size_px(area, 1.5, 8192), (600, 900));
-        // Never larger than a texture may be, never empty.
-        assert_eq!(image_size_px(area, 2.0, 1000), (800, 1000));
-        assert_eq!(image_size_px(Vec2::ZERO, 1.0, 8192), (1, 1));
-    }
-
-    #[test]
-    fn short_numbers_for_captions() {
-        assert_eq!(short_number(9.0), "9");
-        assert_eq!(short_number(14.5), "14.5");
-        assert_eq!(short_number(-2.0), "-2");
-        assert_eq!(short_number(1e12), "1.0000e12");
-    }
 }

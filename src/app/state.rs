@@ -4,8 +4,10 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
+use crate::depth::{DepthColourMap, NO_HIT_MARK};
 use crate::explore::{SliderRanges, initial_depth_range};
 use crate::render::View;
+use crate::reproduce::ExtraDepth;
 use crate::scene::{LoadError, Scene, load_scene, parse_scene};
 use crate::{DEFAULT_SCENE_NAME, DEFAULT_SCENE_TEXT};
 
@@ -30,6 +32,7 @@ impl ExportFormat {
 
 /// Export options, remembered between runs.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(default)]
 pub struct ExportSettings {
     /// Where to write: `<stem>_colour.<ext>`, `<stem>_depth.<ext>`, `<stem>_both.<ext>`.
     pub path: String,
@@ -41,6 +44,10 @@ pub struct ExportSettings {
     pub displayed_size: bool,
     /// Export size when not the displayed size.
     pub size_px: [u32; 2],
+    /// Lossless or 16-bit depth written besides the 8-bit images.
+    pub extra_depth: ExtraDepth,
+    /// Where "save view as scene" writes when no dialog is used.
+    pub scene_path: String,
 }
 
 impl Default for ExportSettings {
@@ -51,6 +58,8 @@ impl Default for ExportSettings {
             side_by_side: true,
             displayed_size: true,
             size_px: [1024, 1024],
+            extra_depth: ExtraDepth::None,
+            scene_path: "view.txt".into(),
         }
     }
 }
@@ -67,6 +76,42 @@ pub struct Settings {
     pub export: ExportSettings,
     /// Rendering quality (precision).
     pub quality: crate::render::Quality,
+    /// How the depth image is drawn.
+    pub depth: DepthDisplay,
+}
+
+/// How the depth image is drawn on screen (and exported).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(default)]
+pub struct DepthDisplay {
+    /// Grey (the course's), turbo or viridis.
+    pub colour_map: DepthColourMap,
+    /// Show no-hit pixels in [`NO_HIT_MARK`] on screen instead of black, so they stand apart
+    /// from far ones. Files keep black.
+    pub mark_no_hit: bool,
+    /// "Auto range" ignores this percentage of the visible t at each end (0: min to max).
+    pub auto_cut_percent: f64,
+}
+
+impl Default for DepthDisplay {
+    fn default() -> Self {
+        Self {
+            colour_map: DepthColourMap::Grey,
+            mark_no_hit: true,
+            auto_cut_percent: 1.0,
+        }
+    }
+}
+
+impl DepthDisplay {
+    /// The on-screen colour of no-hit pixels.
+    pub fn no_hit_rgb(&self) -> [u8; 3] {
+        if self.mark_no_hit {
+            NO_HIT_MARK
+        } else {
+            self.colour_map.file_no_hit()
+        }
+    }
 }
 
 impl Default for Settings {
@@ -76,6 +121,7 @@ impl Default for Settings {
             show_controls: true,
             export: ExportSettings::default(),
             quality: crate::render::Quality::default(),
+            depth: DepthDisplay::default(),
         }
     }
 }
