@@ -3,7 +3,7 @@
 //! back as [`ImageGestures`] in image pixels (y up), which the viewer turns into navigation (see
 //! [`crate::navigate`]); nothing here changes the view itself except the histogram's handles.
 
-use egui::{Color32, PointerButton, Pos2, Rect, Sense, Stroke, TextureHandle, Ui, Vec2};
+use egui::{Color32, PointerButton, Pos2, Rect, RichText, Sense, Stroke, TextureHandle, Ui, Vec2};
 use glam::DVec2;
 
 use super::depth_tools::{HISTOGRAM_POINTS, histogram_ui};
@@ -18,7 +18,10 @@ const IMAGE_GAP_POINTS: f32 = 8.0;
 const CAPTION_POINTS: f32 = 20.0;
 
 /// Height reserved under the images for the probe and the histogram, in points.
-pub const FOOTER_POINTS: f32 = HISTOGRAM_POINTS + 8.0;
+pub const FOOTER_POINTS: f32 = HISTOGRAM_POINTS + 24.0;
+
+/// Font size of the probe's lines, in points.
+const PROBE_FONT_POINTS: f32 = 11.0;
 
 /// Scrolling this many points zooms by a factor of two.
 const SCROLL_POINTS_PER_DOUBLING: f64 = 240.0;
@@ -263,7 +266,9 @@ fn probe_ui(ui: &mut Ui, lines: &[String], pinned: bool, gestures: &mut ImageGes
         child.weak("hover an image to probe a pixel; click to pin it");
     }
     for line in lines {
-        child.monospace(line);
+        child.add(
+            egui::Label::new(RichText::new(line).monospace().size(PROBE_FONT_POINTS)).truncate(),
+        );
     }
 }
 

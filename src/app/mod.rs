@@ -856,26 +856,20 @@ impl ViewerApp {
     }
 }
 
-/// Two lines describing a probe: where the pixel is, and what its ray hits.
-pub fn describe_probe(name: &str, probe: &Probe) -> [String; 2] {
+/// Three lines describing a probe: where the pixel is, what its ray hits, and where.
+pub fn describe_probe(name: &str, probe: &Probe) -> Vec<String> {
     let short = images::short_number;
-    let at = format!(
+    let mut lines = vec![format!(
         "{name:<6} pixel ({}, {}) · screen ({}, {})",
         probe.x_px,
         probe.y_up_px,
         short(probe.screen_world.x),
         short(probe.screen_world.y)
-    );
-    let hit = match &probe.hit {
-        None => "       no hit".to_owned(),
-        Some(hit) => format!(
-            "       t {} · world ({}, {}, {}) · sphere #{} · {}",
-            short(hit.t),
-            short(hit.point_world.x),
-            short(hit.point_world.y),
-            short(hit.point_world.z),
-            hit.sphere_index,
-            match hit.material_index {
+    )];
+    match &probe.hit {
+        None => lines.push("       no hit".to_owned()),
+        Some(hit) => {
+            let material = match hit.material_index {
                 Some(index) => format!(
                     "material #{index} ({}, {}, {})",
                     short(f64::from(hit.diffuse_colour.x)),
@@ -883,10 +877,21 @@ pub fn describe_probe(name: &str, probe: &Probe) -> [String; 2] {
                     short(f64::from(hit.diffuse_colour.z))
                 ),
                 None => "default material (white)".to_owned(),
-            }
-        ),
-    };
-    [at, hit]
+            };
+            lines.push(format!(
+                "       t {} · sphere #{} · {material}",
+                short(hit.t),
+                hit.sphere_index
+            ));
+            lines.push(format!(
+                "       hit at world ({}, {}, {})",
+                short(hit.point_world.x),
+                short(hit.point_world.y),
+                short(hit.point_world.z)
+            ));
+        }
+    }
+    lines
 }
 
 impl eframe::App for ViewerApp {

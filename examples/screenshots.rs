@@ -1,0 +1,168 @@
+//! The README's pictures of exploring a scene, rendered from the real viewer driven by
+//! egui_kittest (wgpu; Mesa's lavapipe where there is no GPU). Run through
+//! `scripts/readme-screenshots.sh`, which numbers the marked spots with ImageMagick:
+//!
+//! ```sh
+//! cargo run --example screenshots -- OUT_FOLDER
+//! ```
+//!
+//! Writes `OUT_FOLDER/explore.png` and `OUT_FOLDER/orbit.png`, and for each a `.marks` file of
+//! `x y` lines (pixels): the spots the annotations point at, in the README's order.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use egui::{Event, Modifiers, PointerButton, Pos2, vec2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use raytracer::app::ViewerApp;
+use raytracer::cli::ViewerRequest;
+use raytracer::depth::DepthColourMap;
+use raytracer::depth_file::RawDepthFormat;
+use raytracer::reproduce::ExtraDepth;
+
+type App = Harness<'static, ViewerApp>;
+
+fn settle(harness: &mut App) {
+    let deadline = Instant::now() + Duration::from_secs(120);
+    loop {
+        harness.step();
+        let app = harness.state();
+        if app.frame_is_current() && !app.export_running() {
+            return;
+        }
+        assert!(Instant::now() < deadline, "the viewer did not settle");
+        app.wait_for_worker(Duration::from_millis(20));
+    }
+}
+
+fn centre(harness: &App, label: &str) -> Pos2 {
+    harness.get_by_label(label).rect().center()
+}
+
+fn press(harness: &mut App, pos: Pos2, button: PointerButton, pressed: bool) {
+    harness.event(Event::PointerButton {
+        pos,
+        button,
+        pressed,
+        modifiers: Modifiers::NONE,
+    });
+    harness.step();
+}
+
+fn save(harness: &mut App, folder: &Path, name: &str, marks: &[Pos2]) {
+    harness.run_steps(3);
+    let image = harness.render().expect("the UI renders (wgpu)");
+    image.save(folder.join(format!("{name}.png"))).unwrap();
+    let mut text = String::new();
+    for mark in marks {
+        writeln!(text, "{} {}", mark.x.round(), mark.y.round()).unwrap();
+    }
+    std::fs::write(folder.join(format!("{name}.marks")), text).unwrap();
+    println!("wrote {}", folder.join(format!("{name}.png")).display());
+}
+
+fn main() {
+    let folder =
+        std::path::absolute(std::env::args().nth(1).unwrap_or_else(|| "target".into())).unwrap();
+    std::fs::create_dir_all(&folder).unwrap();
+    // A path relative to the package, so the pictures show no machine's folders.
+    std::env::set_current_dir(env!("CARGO_MANIFEST_DIR")).unwrap();
+    let scene = PathBuf::from("scenes/showcase_torus_knot.txt");
+    let mut harness = Harness::builder()
+        .with_size(vec2(1280.0, 720.0))
+        .wgpu()
+        .build_eframe(move |cc| {
+            ViewerApp::new(
+                cc,
+                ViewerRequest {
+                    input: Some(scene),
+                    ..Default::default()
+                },
+            )
+        });
+    {
+        let settings = harness.state_mut().settings_mut();
+        settings.depth.colour_map = DepthColourMap::Turbo;
+        settings.depth.mark_no_hit = true;
+        settings.export.extra_depth = ExtraDepth::Raw(RawDepthFormat::Exr);
+    }
+    settle(&mut harness);
+    harness.state_mut().auto_range();
+    settle(&mut harness);
+
+    // Pin a pixel on a sphere, then hover another one.
+    let colour = harness.get_by_label("colour image").rect();
+    let (frame, _) = harness.state().shown_frame().unwrap();
+    let size = [frame.width_px as f32, frame.height_px as f32];
+    let to_pos = |x: f32, y_up: f32| {
+        Pos2::new(
+            colour.min.x + x / size[0] * colour.width(),
+            colour.max.y - y_up / size[1] * colour.height(),
+        )
+    };
+    let frame = frame.clone();
+    let hit_near = |fx: f32, fy: f32| {
+        // The hit pixel nearest to the fraction (fx, fy) of the image.
+        let (tx, ty) = (fx * size[0], fy * size[1]);
+        let mut best = (f32::INFINITY, 0.0, 0.0);
+        for y in (0..frame.height_px).step_by(3) {
+            for x in (0..frame.width_px).step_by(3) {
+                if frame.t[frame.index(x, y)].is_finite() {
+                    let d = (x as f32 - tx).hypot(y as f32 - ty);
+                    if d < best.0 {
+                        best = (d, x as f32 + 0.5, y as f32 + 0.5);
+                    }
+                }
+            }
+        }
+        to_pos(best.1, best.2)
+    };
+    let pin = hit_near(0.3, 0.65);
+    harness.hover_at(pin);
+    harness.step();
+    press(&mut harness, pin, PointerButton::Primary, true);
+    press(&mut harness, pin, PointerButton::Primary, false);
+    let hover = hit_near(0.7, 0.4);
+    harness.hover_at(hover);
+    harness.run_steps(3);
+
+    let depth = harness.get_by_label("depth image").rect();
+    let probe_text = centre(&harness, "Unpin") + vec2(60.0, 0.0);
+    let max_handle = centre(&harness, raytracer::app::depth_tools::MAX_HANDLE_LABEL);
+    let legend = Pos2::new(depth.center().x, max_handle.y + 20.0);
+    let marks = [
+        colour.center(),                // 1 drag, wheel, right-drag
+        pin,                            // 2 the pinned probe
+        probe_text,                     // 3 the probe's lines
+        max_handle,                     // 4 a draggable end of the depth range
+        legend,                         // 5 the legend
+        centre(&harness, "Auto range"), // 6 auto range
+        centre(&harness, "turbo"),      // 7 colour maps
+        centre(&harness, "Frame all"),  // 8 frame all, reset, save view
+    ];
+    save(&mut harness, &folder, "explore", &marks);
+
+    // Orbit: a right-drag across the colour image, then frame all.
+    harness.event(Event::PointerGone);
+    let from = colour.center();
+    harness.hover_at(from);
+    harness.step();
+    press(&mut harness, from, PointerButton::Secondary, true);
+    for step in 1..=6 {
+        harness.hover_at(from + vec2(25.0 * step as f32, -12.0 * step as f32));
+        harness.step();
+    }
+    let to = from + vec2(150.0, -72.0);
+    press(&mut harness, to, PointerButton::Secondary, false);
+    harness.event(Event::PointerGone);
+    harness.state_mut().frame_all();
+    harness.state_mut().settings_mut().depth.colour_map = DepthColourMap::Viridis;
+    harness.state_mut().auto_range();
+    settle(&mut harness);
+    harness.state_mut().auto_range();
+    settle(&mut harness);
+    let marks = [from, to];
+    save(&mut harness, &folder, "orbit", &marks);
+}
