@@ -284,5 +284,16 @@ mod tests {
         assert_eq!(frame_all(&scene, &parallel), parallel);
         let good = view(&scene);
         assert_eq!(pan(&good, DVec2::new(f64::NAN, 0.0)), good);
+        for factor in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            assert_eq!(zoom_at(&good, factor, DVec2::ONE), good, "{factor}");
+        }
+        assert_eq!(zoom_at(&good, 2.0, DVec2::splat(f64::NAN)), good);
+        assert_eq!(orbit(&good, DVec3::splat(f64::NAN), 0.1, 0.0), good);
+        assert_eq!(orbit(&good, DVec3::ZERO, f64::INFINITY, 0.0), good);
+        // Extreme factors stop at the edges of the accepted sizes.
+        let huge = zoom_at(&good, 1e300, DVec2::ONE);
+        assert!(huge.size_world <= MAX_MAGNITUDE && huge.validate().is_ok());
+        let tiny = zoom_at(&good, 1e-300, DVec2::ONE);
+        assert!(tiny.size_world > 0.0 && tiny.validate().is_ok());
     }
 }
