@@ -25,3 +25,26 @@ fn embedded_default_scene_parses() {
     let scene = parse_scene(raytracer::DEFAULT_SCENE_TEXT).unwrap();
     assert!(scene.spheres.len() > 10);
 }
+
+#[test]
+fn loading_reports_progress_up_to_one() {
+    use std::sync::Mutex;
+    // A file of several read blocks, so reading reports more than once.
+    let scene = raytracer::generate::random_scene(7, 40_000);
+    let text = raytracer::generate::scene_to_text(&scene);
+    assert!(text.len() > 2 << 20, "{} bytes", text.len());
+    let folder = tempfile::tempdir().unwrap();
+    let path = folder.path().join("big.txt");
+    std::fs::write(&path, &text).unwrap();
+    let seen = Mutex::new(Vec::new());
+    let loaded = raytracer::scene::load_scene_with_progress(&path, &|fraction| {
+        seen.lock().unwrap().push(fraction);
+    })
+    .unwrap();
+    assert_eq!(loaded.spheres.len(), 40_000);
+    let seen = seen.into_inner().unwrap();
+    assert!(seen.len() >= 3, "{seen:?}");
+    assert!(seen.windows(2).all(|pair| pair[0] <= pair[1]), "{seen:?}");
+    assert_eq!(seen.last(), Some(&1.0));
+    assert!(seen.iter().all(|f| (0.0..=1.0).contains(f)));
+}

@@ -9,6 +9,7 @@
 //! * [`panels`]: the side panel's sections and the status bar
 //! * [`dialogs`]: native file dialogs on their own threads
 //! * [`reload`]: watching the open file for changes
+//! * [`loading`]: reading and parsing a scene file off the UI thread, with progress
 //!
 //! Navigation (mouse and keyboard) turns gestures into [`crate::navigate`] calls; the probe is
 //! [`crate::probe`]; exports go through [`crate::reproduce`].
@@ -17,6 +18,7 @@ pub mod depth_tools;
 pub mod dialogs;
 pub mod images;
 pub mod job;
+pub mod loading;
 pub mod panels;
 pub mod reload;
 pub mod state;
@@ -34,6 +36,7 @@ use self::dialogs::{
 };
 use self::images::{Footer, ImageGestures, ORBIT_RAD_PER_POINT, ShownImages};
 use self::job::{DepthStyle, JobResult, ViewerJob, ViewerWorker, prepare_frame, start_worker};
+use self::loading::{LoadKind, LoadState, PendingLoad};
 use self::panels::StatusLine;
 use self::state::{ExportFormat, LoadedScene, Settings};
 use crate::cli::ViewerRequest;
@@ -110,6 +113,8 @@ pub struct ViewerApp {
     /// A background write (export or saved scene): the success or failure message.
     export_job: Option<Receiver<Result<String, String>>>,
     watcher: Option<reload::FileWatcher>,
+    /// A scene file being read and parsed in the background.
+    loading: Option<PendingLoad>,
     /// When the view, scene or quality last changed (for progressive refinement).
     last_change: std::time::Instant,
     /// What the last change was made to.
@@ -160,6 +165,7 @@ impl ViewerApp {
             dialog_note: dialog_unavailable_reason(),
             export_job: None,
             watcher: None,
+            loading: None,
             last_change: std::time::Instant::now(),
             last_wanted: None,
             hover_px: None,
@@ -197,14 +203,16 @@ impl ViewerApp {
 
     /// True when the frame on screen is the current view of the current scene at the current
     /// quality.
+    /// While a scene loads this is false: the frame will change once it is in.
     pub fn frame_is_current(&self) -> bool {
         let style = self.depth_style();
-        self.shown.as_ref().is_some_and(|s| {
-            s.view == self.view
-                && s.scene_epoch == self.scene_epoch
-                && s.quality == self.settings.quality
-                && s.depth_style == style
-        })
+        self.loading.is_none()
+            && self.shown.as_ref().is_some_and(|s| {
+                s.view == self.view
+                    && s.scene_epoch == self.scene_epoch
+                    && s.quality == self.settings.quality
+                    && s.depth_style == style
+            })
     }
 
     /// The persisted settings.
@@ -333,36 +341,16 @@ impl ViewerApp {
         self.worker.as_ref().is_none_or(|w| w.wait_idle(timeout))
     }
 
-    /// Loads the scene at `path`; on failure the error is shown and the previous scene stays.
-    /// The file is then watched and reloaded when it changes on disk.
+    /// Starts loading the scene at `path` in the background; once read, it replaces the scene
+    /// on screen and is watched for changes. On failure the error is shown and the previous scene
+    /// stays. A load started while another runs replaces it.
     pub fn open(&mut self, path: &Path) {
-        let size = (self.view.width_px, self.view.height_px);
-        match LoadedScene::load(path, size) {
-            Ok(loaded) => {
-                self.adopt(loaded, false);
-                self.settings.last_scene = Some(path.to_path_buf());
-                self.path_text = path.display().to_string();
-                self.ctx
-                    .send_viewport_cmd(egui::ViewportCommand::Title(format!(
-                        "raytracer — {}",
-                        path.display()
-                    )));
-                let ctx = self.ctx.clone();
-                self.watcher = match reload::FileWatcher::watch(path, move || ctx.request_repaint())
-                {
-                    Ok(watcher) => Some(watcher),
-                    Err(error) => {
-                        self.message = Some((format!("live reload is off: {error}"), true));
-                        None
-                    }
-                };
-            }
-            Err(error) => self.scene_error = Some(error.to_string()),
-        }
+        self.start_load(path, LoadKind::Open);
     }
 
-    /// Reads the open file again. A broken file shows its error and the last good scene stays;
-    /// a good one replaces the scene and keeps the user's camera unless it was still the file's.
+    /// Reads the open file again (in the background). A broken file shows its error and the last
+    /// good scene stays; a good one replaces the scene and keeps the user's camera unless it was
+    /// still the file's.
     pub fn reload(&mut self) {
         let Some(path) = self.loaded.path.clone() else {
             self.message = Some((
@@ -371,9 +359,55 @@ impl ViewerApp {
             ));
             return;
         };
+        self.start_load(&path, LoadKind::Reload);
+    }
+
+    /// True while a scene file is being read.
+    pub fn loading(&self) -> bool {
+        self.loading.is_some()
+    }
+
+    fn start_load(&mut self, path: &Path, kind: LoadKind) {
         let size = (self.view.width_px, self.view.height_px);
-        match LoadedScene::load(&path, size) {
-            Ok(loaded) => {
+        let ctx = self.ctx.clone();
+        match PendingLoad::start(path, kind, size, move || ctx.request_repaint()) {
+            Ok(pending) => self.loading = Some(pending),
+            Err(error) => {
+                self.scene_error =
+                    Some(format!("{}: cannot start loading: {error}", path.display()));
+            }
+        }
+    }
+
+    /// Takes a finished load: adopts the scene (an open also watches the file) or shows the
+    /// error.
+    fn poll_load(&mut self) {
+        let Some(pending) = &self.loading else {
+            return;
+        };
+        let result = match pending.poll() {
+            LoadState::Running => {
+                if pending.shows_progress() {
+                    self.ctx.request_repaint_after(Duration::from_millis(50));
+                } else {
+                    self.ctx.request_repaint_after(loading::SHOW_PROGRESS_AFTER);
+                }
+                return;
+            }
+            LoadState::Done(result) => result,
+        };
+        let (path, kind) = (pending.path.clone(), pending.kind);
+        self.loading = None;
+        let loaded = match result {
+            Ok(loaded) => loaded,
+            Err(error) => {
+                self.scene_error = Some(error);
+                return;
+            }
+        };
+        match kind {
+            LoadKind::Open => self.adopt_opened(loaded, &path),
+            LoadKind::Reload => {
                 let still_file_view = View {
                     width_px: self.loaded.file_view.width_px,
                     height_px: self.loaded.file_view.height_px,
@@ -382,8 +416,28 @@ impl ViewerApp {
                 self.adopt(loaded, !still_file_view);
                 self.message = Some((format!("reloaded {}", path.display()), false));
             }
-            Err(error) => self.scene_error = Some(error.to_string()),
         }
+    }
+
+    /// Puts a newly opened scene on screen, remembers it and watches its file.
+    fn adopt_opened(&mut self, loaded: LoadedScene, path: &Path) {
+        self.adopt(loaded, false);
+        self.pinned_px = None;
+        self.settings.last_scene = Some(path.to_path_buf());
+        self.path_text = path.display().to_string();
+        self.ctx
+            .send_viewport_cmd(egui::ViewportCommand::Title(format!(
+                "raytracer — {}",
+                path.display()
+            )));
+        let ctx = self.ctx.clone();
+        self.watcher = match reload::FileWatcher::watch(path, move || ctx.request_repaint()) {
+            Ok(watcher) => Some(watcher),
+            Err(error) => {
+                self.message = Some((format!("live reload is off: {error}"), true));
+                None
+            }
+        };
     }
 
     /// Puts `loaded` on screen; `keep_view` keeps the current camera and depth range.
@@ -898,6 +952,7 @@ impl eframe::App for ViewerApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
         self.receive_frame(&ctx);
+        self.poll_load();
         self.poll_background();
         self.handle_input(&ctx);
 
@@ -931,6 +986,11 @@ impl eframe::App for ViewerApp {
             sphere_count: self.loaded.scene.spheres.len(),
             scene_name: &scene_name,
             busy,
+            loading: self
+                .loading
+                .as_ref()
+                .filter(|pending| pending.shows_progress())
+                .map(|pending| (pending.path.display().to_string(), pending.fraction())),
             message: self.message.as_ref().map(|(m, e)| (m.as_str(), *e)),
         };
         egui::Panel::bottom("status").show(ui, |ui| panels::status_bar_ui(ui, &status));

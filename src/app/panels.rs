@@ -290,6 +290,8 @@ pub struct StatusLine<'a> {
     pub stage: Option<String>,
     /// A render is in flight.
     pub busy: bool,
+    /// A scene load that has run long enough to show its progress: its name and share done.
+    pub loading: Option<(String, f32)>,
     /// Message of the last action (export result, view problem), with whether it is an error.
     pub message: Option<(&'a str, bool)>,
 }
@@ -321,6 +323,15 @@ pub fn status_bar_ui(ui: &mut Ui, status: &StatusLine<'_>) {
         if status.busy {
             ui.separator();
             ui.spinner();
+        }
+        if let Some((name, fraction)) = &status.loading {
+            ui.separator();
+            ui.add(
+                egui::ProgressBar::new(*fraction)
+                    .desired_width(160.0)
+                    .show_percentage(),
+            );
+            ui.label(format!("loading {name}"));
         }
         if let Some((message, is_error)) = status.message {
             ui.separator();

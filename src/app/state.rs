@@ -8,7 +8,7 @@ use crate::depth::{DepthColourMap, NO_HIT_MARK};
 use crate::explore::{SliderRanges, initial_depth_range};
 use crate::render::View;
 use crate::reproduce::ExtraDepth;
-use crate::scene::{LoadError, Scene, load_scene, parse_scene};
+use crate::scene::{LoadError, Scene, load_scene_with_progress, parse_scene};
 use crate::{DEFAULT_SCENE_NAME, DEFAULT_SCENE_TEXT};
 
 /// Image formats offered by the export panel.
@@ -165,8 +165,17 @@ impl LoadedScene {
 
     /// Reads a scene file.
     pub fn load(path: &Path, size_px: (u32, u32)) -> Result<Self, LoadError> {
+        Self::load_with_progress(path, size_px, &|_| {})
+    }
+
+    /// Reads a scene file, telling `progress` the share done (0 to 1) as it goes.
+    pub fn load_with_progress(
+        path: &Path,
+        size_px: (u32, u32),
+        progress: &(dyn Fn(f64) + Sync),
+    ) -> Result<Self, LoadError> {
         Ok(Self::new(
-            load_scene(path)?,
+            load_scene_with_progress(path, progress)?,
             Some(path.to_path_buf()),
             size_px,
         ))

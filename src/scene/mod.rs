@@ -35,10 +35,39 @@ pub enum LoadError {
 
 /// Reads and parses a scene file; errors name the path as given.
 pub fn load_scene(path: &Path) -> Result<Scene, LoadError> {
+    load_scene_with_progress(path, &|_| {})
+}
+
+/// Share of a load's progress given to reading the file (the rest is parsing).
+const READ_SHARE: f64 = 0.1;
+
+/// [`load_scene`], telling `progress` the share of the work done (0 to 1) as it goes: reading
+/// the file in blocks, then parsing.
+pub fn load_scene_with_progress(
+    path: &Path,
+    progress: &(dyn Fn(f64) + Sync),
+) -> Result<Scene, LoadError> {
+    use std::io::Read as _;
     let name = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|source| LoadError::Io {
+    let io_error = |source| LoadError::Io {
         path: name.clone(),
         source,
-    })?;
-    Ok(parse_scene_bytes(&bytes).map_err(|error| error.in_file(name))?)
+    };
+    let mut file = std::fs::File::open(path).map_err(io_error)?;
+    let expected = file.metadata().map(|m| m.len()).unwrap_or(0).max(1);
+    let mut bytes = Vec::with_capacity(usize::try_from(expected).unwrap_or(0));
+    let mut block = vec![0u8; 1 << 20];
+    loop {
+        let read = match file.read(&mut block) {
+            Ok(0) => break,
+            Ok(read) => read,
+            Err(error) if error.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(error) => return Err(io_error(error)),
+        };
+        bytes.extend_from_slice(&block[..read]);
+        progress(READ_SHARE * (bytes.len() as f64 / expected as f64).min(1.0));
+    }
+    let scene = parse_scene_bytes(&bytes).map_err(|error| error.in_file(name.clone()))?;
+    progress(1.0);
+    Ok(scene)
 }
