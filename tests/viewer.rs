@@ -3,66 +3,17 @@
 //! its error and keeps the previous frame; without a file the default scene is shown.
 #![cfg(feature = "gui")]
 
-use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use raytracer::app::ViewerApp;
-use raytracer::cli::ViewerRequest;
 use raytracer::render::{Frame, View, render};
 
-fn scene_path(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenes")
-        .join(name)
-}
+mod common;
 
-fn viewer(input: Option<PathBuf>) -> Harness<'static, ViewerApp> {
-    let mut harness = Harness::builder()
-        .with_size(egui::vec2(1000.0, 700.0))
-        .build_eframe(move |cc| {
-            ViewerApp::new(
-                cc,
-                ViewerRequest {
-                    input,
-                    ..Default::default()
-                },
-            )
-        });
-    settle(&mut harness);
-    harness
-}
-
-/// Steps the UI until the frame on screen is the current view and no export runs.
-fn settle(harness: &mut Harness<'static, ViewerApp>) {
-    let deadline = Instant::now() + Duration::from_secs(60);
-    loop {
-        harness.step();
-        let app = harness.state();
-        if app.frame_is_current() && !app.export_running() {
-            return;
-        }
-        assert!(Instant::now() < deadline, "the viewer did not settle");
-        app.wait_for_worker(Duration::from_millis(20));
-        std::thread::sleep(Duration::from_millis(2));
-    }
-}
-
-/// Clicks the button labelled `label`, scrolling the side panel to it first.
-fn click(harness: &mut Harness<'static, ViewerApp>, label: &str) {
-    harness
-        .get_by_role_and_label(Role::Button, label)
-        .scroll_to_me();
-    // The accessibility tree describes the previous pass: step so it has the scrolled layout.
-    harness.run_steps(2);
-    // Move onto the button first, as a user does: a press where the pointer has not been yet
-    // belongs to the widget under its last position (an image takes drags).
-    harness.get_by_role_and_label(Role::Button, label).hover();
-    harness.step();
-    harness.get_by_role_and_label(Role::Button, label).click();
-}
+use common::{click, scene_path, settle, viewer};
 
 /// The frame on screen and its view, cloned.
 fn shown(harness: &Harness<'static, ViewerApp>) -> (Frame, View) {

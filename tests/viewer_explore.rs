@@ -4,9 +4,6 @@
 //! range; exports carry lossless depth, the scene and the command line.
 #![cfg(feature = "gui")]
 
-use std::path::{Path, PathBuf};
-use std::time::{Duration, Instant};
-
 use egui::{Event, Modifiers, PointerButton, Pos2, Rect, TouchPhase, vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -14,51 +11,18 @@ use glam::{DVec2, DVec3};
 use raytracer::app::ViewerApp;
 use raytracer::app::depth_tools::{MAX_HANDLE_LABEL, MIN_HANDLE_LABEL, histogram_axis};
 use raytracer::app::images::ORBIT_RAD_PER_POINT;
-use raytracer::cli::ViewerRequest;
 use raytracer::depth::DepthRange;
 use raytracer::depth_tuning::visible_t;
 use raytracer::navigate;
 use raytracer::render::reference::render_reference;
 use raytracer::render::{NO_HIT, View};
 
-fn scene_path(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenes")
-        .join(name)
-}
+mod common;
+
+use common::{click, scene_path, settle};
 
 fn viewer(input: &str) -> Harness<'static, ViewerApp> {
-    let input = Some(scene_path(input));
-    let mut harness = Harness::builder()
-        .with_size(vec2(1000.0, 700.0))
-        .build_eframe(move |cc| {
-            ViewerApp::new(
-                cc,
-                ViewerRequest {
-                    input,
-                    ..Default::default()
-                },
-            )
-        });
-    settle(&mut harness);
-    harness
-}
-
-/// Steps until the frame on screen is the current view, nothing is being written and no
-/// smooth scroll is still running.
-fn settle(harness: &mut Harness<'static, ViewerApp>) {
-    let deadline = Instant::now() + Duration::from_secs(60);
-    loop {
-        harness.step();
-        let scrolling = harness.ctx.input(|i| i.is_scrolling());
-        let app = harness.state();
-        if app.frame_is_current() && !app.export_running() && !scrolling {
-            return;
-        }
-        assert!(Instant::now() < deadline, "the viewer did not settle");
-        app.wait_for_worker(Duration::from_millis(20));
-        std::thread::sleep(Duration::from_millis(2));
-    }
+    common::viewer(Some(scene_path(input)))
 }
 
 fn view(harness: &Harness<'static, ViewerApp>) -> View {
@@ -101,16 +65,6 @@ fn drag(
     harness.event(Event::ModifiersChanged(Modifiers::NONE));
     harness.event(Event::PointerGone);
     settle(harness);
-}
-
-/// Scrolls the widget labelled `label` into view, moves the pointer onto it, then clicks it.
-fn click(harness: &mut Harness<'static, ViewerApp>, label: &str) {
-    harness.get_by_label(label).scroll_to_me();
-    harness.run_steps(2);
-    harness.get_by_label(label).hover();
-    harness.step();
-    harness.get_by_label(label).click();
-    harness.step();
 }
 
 fn assert_close(a: f64, b: f64, tolerance: f64, what: &str) {

@@ -53,19 +53,7 @@ impl Frame {
     /// The 8-bit depth image over `range` (grey in all three channels), top row first. A
     /// supersampled frame uses its filtered greys when `range` is the one they were made with.
     pub fn depth_image(&self, range: DepthRange) -> RgbImage {
-        let filtered = self
-            .depth_grey
-            .as_ref()
-            .filter(|(grey_range, _)| *grey_range == range)
-            .map(|(_, grey)| grey);
-        RgbImage::from_fn(self.width_px, self.height_px, |x, y| {
-            let index = self.storage_index(x, y);
-            let grey = match filtered {
-                Some(grey) => crate::depth::quantize_f32(grey[index]),
-                None => range.grey_u8(self.t[index]),
-            };
-            Rgb([grey; 3])
-        })
+        self.depth_image_mapped(range, DepthColourMap::Grey, [0, 0, 0])
     }
 
     /// The 8-bit depth image over `range` through a colour map, top row first; no-hit pixels

@@ -1,0 +1,65 @@
+//! Helpers shared by the viewer tests: the real app in an egui_kittest harness, waiting for it
+//! to settle, and clicking a widget the way a user does.
+#![allow(dead_code)] // each test file uses its own share
+
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use raytracer::app::ViewerApp;
+use raytracer::cli::ViewerRequest;
+
+/// A scene shipped in `scenes/`.
+pub fn scene_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(name)
+}
+
+/// The viewer in a 1000×700-point window on `input` (the embedded default scene for `None`),
+/// settled.
+pub fn viewer(input: Option<PathBuf>) -> Harness<'static, ViewerApp> {
+    let mut harness = Harness::builder()
+        .with_size(egui::vec2(1000.0, 700.0))
+        .build_eframe(move |cc| {
+            ViewerApp::new(
+                cc,
+                ViewerRequest {
+                    input,
+                    ..Default::default()
+                },
+            )
+        });
+    settle(&mut harness);
+    harness
+}
+
+/// Steps the UI until the frame on screen is the current view (no scene loading), nothing is
+/// being written and no smooth scroll is still running.
+pub fn settle(harness: &mut Harness<'static, ViewerApp>) {
+    let deadline = Instant::now() + Duration::from_secs(60);
+    loop {
+        harness.step();
+        let scrolling = harness.ctx.input(|i| i.is_scrolling());
+        let app = harness.state();
+        if app.frame_is_current() && !app.export_running() && !scrolling {
+            return;
+        }
+        assert!(Instant::now() < deadline, "the viewer did not settle");
+        app.wait_for_worker(Duration::from_millis(20));
+        std::thread::sleep(Duration::from_millis(2));
+    }
+}
+
+/// Scrolls the widget labelled `label` into view, moves the pointer onto it (a press where the
+/// pointer has not been yet belongs to the widget under its last position), then clicks it.
+pub fn click(harness: &mut Harness<'static, ViewerApp>, label: &str) {
+    harness.get_by_label(label).scroll_to_me();
+    // The accessibility tree describes the previous pass: step so it has the scrolled layout.
+    harness.run_steps(2);
+    harness.get_by_label(label).hover();
+    harness.step();
+    harness.get_by_label(label).click();
+    harness.step();
+}
