@@ -141,6 +141,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             view,
             scene_epoch: 0,
             quality: Default::default(),
+            depth_style: Default::default(),
         };
         let viewer_ms = median_ms(runs, || {
             std::hint::black_box(raytracer::app::job::prepare_frame(&job).ok());
