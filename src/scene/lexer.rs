@@ -19,8 +19,8 @@ pub struct Lexer<'a> {
     text: &'a str,
     offset: usize,
     line: u32,
-    /// Byte offset at which the current line starts.
-    line_start: usize,
+    /// Characters (not bytes) between the start of the current line and `offset`.
+    column_chars: usize,
 }
 
 impl<'a> Lexer<'a> {
@@ -30,22 +30,20 @@ impl<'a> Lexer<'a> {
             text,
             offset: 0,
             line: 1,
-            line_start: 0,
+            column_chars: 0,
         }
+    }
+
+    /// Bytes consumed so far.
+    pub fn offset(&self) -> usize {
+        self.offset
     }
 
     /// The location the next character would have (used for "end of file" errors).
     pub fn here(&self) -> Location {
-        self.location_of(self.offset)
-    }
-
-    fn location_of(&self, offset: usize) -> Location {
-        let line_prefix = &self.text.as_bytes()[self.line_start..offset];
-        // Columns count characters: every byte that does not continue a UTF-8 sequence.
-        let chars = line_prefix.iter().filter(|&&b| (b & 0xC0) != 0x80).count();
         Location {
             line: self.line,
-            column: u32::try_from(chars + 1).unwrap_or(u32::MAX),
+            column: u32::try_from(self.column_chars.saturating_add(1)).unwrap_or(u32::MAX),
         }
     }
 }
@@ -60,9 +58,10 @@ impl<'a> Iterator for Lexer<'a> {
             if byte == b'\n' {
                 self.line = self.line.saturating_add(1);
                 self.offset += 1;
-                self.line_start = self.offset;
+                self.column_chars = 0;
             } else if byte.is_ascii_whitespace() {
                 self.offset += 1;
+                self.column_chars += 1;
             } else {
                 break;
             }
@@ -79,8 +78,14 @@ impl<'a> Iterator for Lexer<'a> {
                     .position(|&b| b.is_ascii_whitespace() || b == b'{' || b == b'}')
                     .unwrap_or(rest.len())
         };
-        let location = self.location_of(start);
+        let location = self.here();
         self.offset = end;
+        // Columns count characters: every byte that does not continue a UTF-8 sequence. Counting
+        // as the lexer moves keeps long lines linear.
+        self.column_chars += bytes[start..end]
+            .iter()
+            .filter(|&&b| (b & 0xC0) != 0x80)
+            .count();
         // Token boundaries are ASCII bytes, so they are char boundaries too.
         let text = self.text.get(start..end)?;
         Some(Token { text, location })

@@ -13,7 +13,10 @@ pub use lexer::{Lexer, Token};
 pub use model::{
     Bounds, DEFAULT_BACKGROUND, DEFAULT_DIFFUSE, Material, OrthographicCamera, Scene, Sphere,
 };
-pub use parse::{MAX_GROUP_DEPTH, MAX_MAGNITUDE, parse_scene, parse_scene_bytes};
+pub use parse::{
+    MAX_GROUP_DEPTH, MAX_MAGNITUDE, parse_scene, parse_scene_bytes, parse_scene_bytes_with_progress,
+    parse_scene_with_progress,
+};
 
 use std::path::Path;
 
@@ -67,7 +70,9 @@ pub fn load_scene_with_progress(
         bytes.extend_from_slice(&block[..read]);
         progress(READ_SHARE * (bytes.len() as f64 / expected as f64).min(1.0));
     }
-    let scene = parse_scene_bytes(&bytes).map_err(|error| error.in_file(name.clone()))?;
+    let parse_progress = |share: f64| progress(READ_SHARE + (1.0 - READ_SHARE) * share);
+    let scene = parse_scene_bytes_with_progress(&bytes, &parse_progress)
+        .map_err(|error| error.in_file(name.clone()))?;
     progress(1.0);
     Ok(scene)
 }

@@ -56,8 +56,17 @@ const MAX_QUOTED_CHARS: usize = 40;
 
 /// Parses scene bytes; text that is not UTF-8 gets [`ParseErrorKind::NotText`] at the bad byte.
 pub fn parse_scene_bytes(bytes: &[u8]) -> Result<Scene, ParseError> {
+    parse_scene_bytes_with_progress(bytes, &|_| {})
+}
+
+/// [`parse_scene_bytes`], telling `progress` the share of the text parsed so far (0 to 1) every
+/// few thousand spheres.
+pub fn parse_scene_bytes_with_progress(
+    bytes: &[u8],
+    progress: &dyn Fn(f64),
+) -> Result<Scene, ParseError> {
     match std::str::from_utf8(bytes) {
-        Ok(text) => parse_scene(text),
+        Ok(text) => parse_scene_with_progress(text, progress),
         Err(error) => {
             // The location of the first byte that is not UTF-8.
             let valid = &bytes[..error.valid_up_to()];
@@ -78,7 +87,21 @@ pub fn parse_scene_bytes(bytes: &[u8]) -> Result<Scene, ParseError> {
 
 /// Parses the text of a scene file into a validated [`Scene`].
 pub fn parse_scene(text: &str) -> Result<Scene, ParseError> {
-    Parser::new(text).scene()
+    parse_scene_with_progress(text, &|_| {})
+}
+
+/// Spheres parsed between two progress reports.
+pub(super) const SPHERES_PER_REPORT: usize = 16_384;
+
+/// [`parse_scene`], telling `progress` the share of the text parsed so far (0 to 1) every
+/// [`SPHERES_PER_REPORT`] spheres.
+pub fn parse_scene_with_progress(
+    text: &str,
+    progress: &dyn Fn(f64),
+) -> Result<Scene, ParseError> {
+    let mut parser = Parser::new(text);
+    parser.progress = progress;
+    parser.scene()
 }
 
 /// A token as quoted in an error: escaped and shortened.
@@ -101,6 +124,10 @@ struct Parser<'a> {
     /// Every `MaterialIndex` statement, checked against the materials at the end.
     material_references: Vec<(u64, Location)>,
     spheres: Vec<Sphere>,
+    /// Told the share of the text parsed, every [`SPHERES_PER_REPORT`] spheres.
+    progress: &'a dyn Fn(f64),
+    /// Length of the text in bytes (for progress).
+    text_len: usize,
 }
 
 impl<'a> Parser<'a> {
@@ -110,6 +137,8 @@ impl<'a> Parser<'a> {
             current_material: None,
             material_references: Vec::new(),
             spheres: Vec::new(),
+            progress: &|_| {},
+            text_len: text.len(),
         }
     }
 
@@ -436,6 +465,9 @@ impl<'a> Parser<'a> {
             radius_world,
             material: self.current_material,
         });
+        if self.spheres.len().is_multiple_of(SPHERES_PER_REPORT) {
+            (self.progress)(self.lexer.offset() as f64 / self.text_len.max(1) as f64);
+        }
         Ok(())
     }
 }

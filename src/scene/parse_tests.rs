@@ -4,6 +4,7 @@
 use glam::{DVec3, Vec3};
 
 use super::*;
+use crate::scene::parse::SPHERES_PER_REPORT;
 
 const CAMERA: &str = "OrthographicCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 size 5 }\n";
 
@@ -374,4 +375,42 @@ fn load_scene_names_the_file() {
         error.to_string().starts_with("no/such/scene.txt: "),
         "{error}"
     );
+}
+
+/// A scene of `count` spheres, all on one line when `one_line`.
+fn many_spheres(count: usize, one_line: bool) -> String {
+    let separator = if one_line { " " } else { "\n" };
+    let mut text = format!("{CAMERA}Group {{ numObjects {count}{separator}");
+    for i in 0..count {
+        text.push_str(&format!("Sphere {{ center {i} 0 0 radius 1 }}{separator}"));
+    }
+    text
+}
+
+#[test]
+fn progress_rises_to_the_end_of_the_text() {
+    let text = many_spheres(3 * SPHERES_PER_REPORT + 5, false) + "}\n";
+    let reports = std::sync::Mutex::new(Vec::new());
+    let scene = parse_scene_with_progress(&text, &|share| {
+        reports.lock().map(|mut r| r.push(share)).ok();
+    })
+    .expect("valid scene");
+    assert_eq!(scene.spheres.len(), 3 * SPHERES_PER_REPORT + 5);
+    let reports = reports.into_inner().expect("not poisoned");
+    assert_eq!(reports.len(), 3, "{reports:?}");
+    assert!(reports.windows(2).all(|w| w[0] < w[1]), "{reports:?}");
+    assert!(reports.iter().all(|&r| r > 0.0 && r <= 1.0), "{reports:?}");
+}
+
+#[test]
+fn columns_on_a_very_long_line_are_exact() {
+    // 200,000 spheres on one line, then a bad token: its column counts every character before it
+    // (and the lexer stays linear: this would take minutes if each token rescanned its line).
+    let mut text = many_spheres(200_000, true);
+    let line_two_column = text.lines().nth(1).map_or(0, |line| line.chars().count()) + 1;
+    text.push_str("Bogus");
+    let (line, column, message) = fail(&text);
+    assert_eq!(line, 2);
+    assert_eq!(column as usize, line_two_column);
+    assert!(message.contains("Bogus"), "{message}");
 }
