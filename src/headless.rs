@@ -7,8 +7,9 @@ use crate::cli::RenderRequest;
 use crate::depth::DepthRange;
 use crate::depth_file::{write_depth_png16, write_raw_depth};
 use crate::export::{ExportError, check_writable, check_writable_raw, write_image};
-use crate::render::{View, ViewError, render_with};
-use crate::scene::{LoadError, Scene, load_scene};
+use crate::render::{View, ViewError, render_with_progress};
+use crate::scene::{LoadError, Scene, load_scene_with_progress};
+use crate::terminal_progress::StepProgress;
 
 /// Why a headless render failed (the program exits with status 1).
 #[derive(Debug, thiserror::Error)]
@@ -101,12 +102,18 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
         check_writable_raw(path)?;
     }
     let started = Instant::now();
-    let scene = load_scene(&request.input)?;
+    let scene = {
+        let bar = StepProgress::start("loading");
+        load_scene_with_progress(&request.input, &|share| bar.report(share))?
+    };
     let parse = started.elapsed();
 
     let started = Instant::now();
     let view = request_view(&scene, request);
-    let frame = render_with(&scene, &view, &request.quality)?;
+    let frame = {
+        let bar = StepProgress::start("rendering");
+        render_with_progress(&scene, &view, &request.quality, &|share| bar.report(share))?
+    };
     let render = started.elapsed();
 
     let started = Instant::now();

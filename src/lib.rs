@@ -28,7 +28,8 @@
 //! * [`navigate`]: pan, zoom at a point, orbit and "frame all" as math on a view
 //! * [`depth_tuning`]: histogram of visible t and auto depth range
 //! * [`probe`]: what one pixel of a frame shows (position, t, sphere, material)
-//! * [`cli`]: command-line flags → typed request; [`headless`]: running that request
+//! * [`cli`]: command-line flags → typed request; [`headless`]: running that request;
+//!   [`terminal_progress`]: its progress bars on long loads and renders
 //! * `app` (feature `gui`): the desktop viewer
 
 #![cfg_attr(
@@ -53,6 +54,7 @@ pub mod probe;
 pub mod render;
 pub mod reproduce;
 pub mod scene;
+pub mod terminal_progress;
 
 /// The scene the viewer shows when no file is given (also in `assets/default_scene.txt`).
 pub const DEFAULT_SCENE_TEXT: &str = include_str!("../assets/default_scene.txt");

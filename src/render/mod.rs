@@ -47,6 +47,17 @@ pub fn render(scene: &Scene, view: &View) -> Result<Frame, ViewError> {
 /// ([`precision::f32_is_safe`]); the frame records the precision used. With sampling, the colour
 /// and the depth greys are supersampled ([`sampling`]) and t stays the centre sample.
 pub fn render_with(scene: &Scene, view: &View, quality: &Quality) -> Result<Frame, ViewError> {
+    render_with_progress(scene, view, quality, &|_| {})
+}
+
+/// [`render_with`], telling `progress` the share of the frame done (0 to 1): as bands of rows
+/// finish when supersampling (the long renders), once at the end otherwise.
+pub fn render_with_progress(
+    scene: &Scene,
+    view: &View,
+    quality: &Quality,
+    progress: &(dyn Fn(f64) + Sync),
+) -> Result<Frame, ViewError> {
     if let Some(sampling) = &quality.sampling {
         sampling.validate()?;
     }
@@ -64,10 +75,12 @@ pub fn render_with(scene: &Scene, view: &View, quality: &Quality) -> Result<Fram
         disc::rasterise_frame::<f64>(scene, view, &grid, &discs)?
     };
     if let Some(sampling) = &quality.sampling {
-        let supersampled = sampling::supersample(scene, &discs, &grid, view.depth_range, sampling);
+        let supersampled =
+            sampling::supersample(scene, &discs, &grid, view.depth_range, sampling, progress);
         frame.colour = supersampled.colour;
         frame.depth_grey = Some((view.depth_range, supersampled.depth_grey));
         frame.disc_tests += supersampled.disc_tests;
     }
+    progress(1.0);
     Ok(frame)
 }

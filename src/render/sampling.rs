@@ -295,7 +295,9 @@ pub(crate) fn supersample(
     grid: &PixelGrid,
     depth_range: DepthRange,
     sampling: &Sampling,
+    progress: &(dyn Fn(f64) + Sync),
 ) -> Supersampled {
+    let bands_done = std::sync::atomic::AtomicUsize::new(0);
     let width = grid.width_px as usize;
     let height = grid.height_px as usize;
     let halo = sampling.filter.support().ceil() as usize;
@@ -413,6 +415,8 @@ pub(crate) fn supersample(
                     depth_grey.push(pixel_grey);
                 }
             }
+            let done = bands_done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+            progress(done as f64 / band_count as f64);
             (colour, depth_grey, tests)
         })
         .collect();

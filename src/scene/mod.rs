@@ -14,8 +14,8 @@ pub use model::{
     Bounds, DEFAULT_BACKGROUND, DEFAULT_DIFFUSE, Material, OrthographicCamera, Scene, Sphere,
 };
 pub use parse::{
-    MAX_GROUP_DEPTH, MAX_MAGNITUDE, parse_scene, parse_scene_bytes, parse_scene_bytes_with_progress,
-    parse_scene_with_progress,
+    MAX_GROUP_DEPTH, MAX_MAGNITUDE, parse_scene, parse_scene_bytes,
+    parse_scene_bytes_with_progress, parse_scene_with_progress,
 };
 
 use std::path::Path;

@@ -95,10 +95,7 @@ pub(super) const SPHERES_PER_REPORT: usize = 16_384;
 
 /// [`parse_scene`], telling `progress` the share of the text parsed so far (0 to 1) every
 /// [`SPHERES_PER_REPORT`] spheres.
-pub fn parse_scene_with_progress(
-    text: &str,
-    progress: &dyn Fn(f64),
-) -> Result<Scene, ParseError> {
+pub fn parse_scene_with_progress(text: &str, progress: &dyn Fn(f64)) -> Result<Scene, ParseError> {
     let mut parser = Parser::new(text);
     parser.progress = progress;
     parser.scene()
