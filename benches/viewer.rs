@@ -1,6 +1,6 @@
 //! Viewer latency: the work between a slider change and a frame ready to upload — rendering a
 //! 1024×1024 view and preparing both texture images (what the viewer's worker does) — for each
-//! course scene.
+//! course scene and for generated scenes of 1,000 and 100,000 spheres.
 
 use std::hint::black_box;
 use std::path::Path;
@@ -30,8 +30,24 @@ fn viewer_frame_1024x1024(c: &mut Criterion) {
             view,
             scene_epoch: 0,
             quality: Default::default(),
+            depth_style: Default::default(),
         };
         group.bench_function(format!("scene1_0{number}"), |b| {
+            b.iter(|| prepare_frame(black_box(&job)))
+        });
+    }
+    for count in [1_000usize, 100_000] {
+        let scene = Arc::new(raytracer::generate::random_scene(1, count));
+        let mut view = View::of_camera(&scene.camera, 1024, 1024, DepthRange::new(0.0, 1.0));
+        view.depth_range = initial_depth_range(&scene, &view);
+        let job = ViewerJob {
+            scene,
+            view,
+            scene_epoch: 0,
+            quality: Default::default(),
+            depth_style: Default::default(),
+        };
+        group.bench_function(format!("generated_{count}"), |b| {
             b.iter(|| prepare_frame(black_box(&job)))
         });
     }

@@ -119,9 +119,11 @@ pub fn frame_all(scene: &Scene, view: &View) -> View {
     let (width, height) = (f64::from(view.width_px), f64::from(view.height_px));
     let longer = width.max(height);
     let needed = (box_size.x * longer / width).max(box_size.y * longer / height);
-    let size_world = (needed / (1.0 - 2.0 * FRAME_ALL_MARGIN))
-        .max(f64::MIN_POSITIVE)
-        .min(MAX_MAGNITUDE);
+    // A NaN (zero-sized image) becomes the smallest size, as `max` would make it.
+    let size_world = match needed / (1.0 - 2.0 * FRAME_ALL_MARGIN) {
+        size if size.is_nan() => f64::MIN_POSITIVE,
+        size => size.clamp(f64::MIN_POSITIVE, MAX_MAGNITUDE),
+    };
     let center = view.center_world + middle.x * basis.horizontal + middle.y * basis.screen_up;
     View {
         size_world,

@@ -160,6 +160,25 @@ fn fast_path_matches_the_oracle_on_random_scenes() {
 }
 
 #[test]
+fn binned_path_matches_brute_force_on_large_generated_scenes() {
+    // Beyond 16,384 spheres the discs are binned in chunks on several threads; every band's list
+    // must still hold every disc in file order. 40,000 spheres of ~1-pixel discs (many ties of
+    // nearly equal depth) and 3,000 big overlapping ones, against the brute-force loop.
+    for (count, side_px) in [(40_000usize, 160u32), (3_000, 120)] {
+        let scene = raytracer::generate::random_scene(11, count);
+        let view = view_of(&scene, side_px, side_px - 17);
+        let fast = render(&scene, &view).unwrap();
+        let oracle = render_reference(&scene, &view).unwrap();
+        let silhouette_pixels = assert_frames_agree(&scene, &view, &fast, &oracle);
+        assert!(
+            silhouette_pixels <= 3,
+            "{count} spheres: {silhouette_pixels} silhouette pixels differ"
+        );
+        assert!(fast.sphere.iter().filter(|&&s| s != NO_HIT).count() > 1000);
+    }
+}
+
+#[test]
 fn non_square_images_show_the_middle_of_the_square_screen() {
     let scene = course_scene(2);
     let square = render(&scene, &view_of(&scene, 200, 200)).unwrap();

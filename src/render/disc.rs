@@ -87,14 +87,37 @@ pub fn nearest_hit(discs: &[Disc], u: f64, v: f64) -> Option<(f64, u32)> {
     best
 }
 
-/// Discs listed per band of [`BAND_ROWS`] rows (compressed rows: band `b`'s discs are
-/// `indices[offsets[b]..offsets[b + 1]]`, in file order).
+/// Discs listed per band of [`BAND_ROWS`] rows, binned in parallel: the discs are split into
+/// consecutive chunks, each chunk lists its discs per band (compressed rows), and a band's list is
+/// the chunks' lists one after the other — file order, with no serial merge.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Bands {
-    /// Start of each band's list in `indices`; one more entry than bands.
-    pub offsets: Vec<usize>,
-    /// Disc indices.
-    pub indices: Vec<u32>,
+    chunks: Vec<ChunkBands>,
+}
+
+/// One chunk's lists: band `b`'s discs are `indices[offsets[b]..offsets[b + 1]]`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+struct ChunkBands {
+    offsets: Vec<usize>,
+    indices: Vec<u32>,
+}
+
+impl Bands {
+    /// The discs (indices into the projected discs) listed in band `band`, in file order.
+    pub fn band(&self, band: usize) -> impl Iterator<Item = u32> + '_ {
+        self.chunks.iter().flat_map(move |chunk| {
+            let listed = match chunk.offsets.get(band..=band + 1) {
+                Some(&[start, end]) => &chunk.indices[start..end],
+                _ => &[],
+            };
+            listed.iter().copied()
+        })
+    }
+
+    /// How many (disc, band) entries the lists hold.
+    pub fn listed(&self) -> usize {
+        self.chunks.iter().map(|chunk| chunk.indices.len()).sum()
+    }
 }
 
 /// Image rows (top row first) `[first, last]` whose centres a disc may cover; conservative by
@@ -130,11 +153,33 @@ fn column_span(grid: &PixelGrid, center_u: f64, half_chord: f64) -> Option<(usiz
     clamp_span(first, last, f64::from(grid.width_px - 1))
 }
 
-/// Lists each disc in the bands its rows touch (two passes: count, then fill).
+/// Smallest chunk of discs binned by one task.
+const MIN_BIN_CHUNK: usize = 16_384;
+
+/// Lists each disc in the bands its rows touch: chunks in parallel, each in two passes (count,
+/// then fill).
 pub fn bin_discs(discs: &[Disc], grid: &PixelGrid) -> Bands {
     let band_count = (grid.height_px as usize).div_ceil(BAND_ROWS);
+    let chunk_len = discs
+        .len()
+        .div_ceil(4 * rayon::current_num_threads())
+        .max(MIN_BIN_CHUNK);
+    let chunks = discs
+        .par_chunks(chunk_len)
+        .enumerate()
+        .map(|(chunk_index, chunk)| {
+            // Sphere counts fit u32 (the parser's limit), so do disc indices.
+            let first_index = u32::try_from(chunk_index * chunk_len).unwrap_or(u32::MAX);
+            bin_chunk(chunk, first_index, grid, band_count)
+        })
+        .collect();
+    Bands { chunks }
+}
+
+/// Bins `discs` (the first has index `first_index`) into `band_count` bands.
+fn bin_chunk(discs: &[Disc], first_index: u32, grid: &PixelGrid, band_count: usize) -> ChunkBands {
     let spans: Vec<Option<(usize, usize)>> = discs
-        .par_iter()
+        .iter()
         .map(|disc| row_span(grid, disc).map(|(first, last)| (first / BAND_ROWS, last / BAND_ROWS)))
         .collect();
     let mut offsets = vec![0usize; band_count + 1];
@@ -148,7 +193,7 @@ pub fn bin_discs(discs: &[Disc], grid: &PixelGrid) -> Bands {
     }
     let mut cursor = offsets.clone();
     let mut indices = vec![0u32; offsets[band_count]];
-    for (index, span) in (0u32..).zip(&spans) {
+    for (index, span) in (first_index..).zip(&spans) {
         if let &Some((first, last)) = span {
             for band in first..=last {
                 indices[cursor[band]] = index;
@@ -156,7 +201,7 @@ pub fn bin_discs(discs: &[Disc], grid: &PixelGrid) -> Bands {
             }
         }
     }
-    Bands { offsets, indices }
+    ChunkBands { offsets, indices }
 }
 
 /// The floating-point type of the per-pixel arithmetic.
@@ -270,8 +315,7 @@ struct BandOut<'a, R> {
 /// the coarser rounding.
 fn rasterise_band<R: Real>(
     discs: &[Disc],
-    discs_in: &[DiscIn<R>],
-    list: &[u32],
+    list: impl Iterator<Item = u32>,
     grid: &PixelGrid,
     first_row: usize,
     out: BandOut<'_, R>,
@@ -282,6 +326,20 @@ fn rasterise_band<R: Real>(
     let pixel_size = R::from_f64(grid.pixel_size_world);
     let column_offset = R::from_f64(0.5 - 0.5 * f64::from(grid.width_px));
     let refine = R::ROUNDOFF > 0.0;
+    // The band's discs gathered once, contiguous and in file order: the rows below read them
+    // sequentially instead of chasing indices across the whole scene (cache misses dominated).
+    let band_discs: Vec<(Disc, DiscIn<R>)> = list
+        .map(|index| {
+            let disc = discs[index as usize];
+            let disc_in = DiscIn {
+                u: R::from_f64(disc.u),
+                v: R::from_f64(disc.v),
+                w: R::from_f64(disc.w),
+                radius_sq: R::from_f64(disc.radius_sq),
+            };
+            (disc, disc_in)
+        })
+        .collect();
     for (row_in_band, (t_row, sphere_row)) in out
         .t
         .chunks_mut(width)
@@ -296,8 +354,7 @@ fn rasterise_band<R: Real>(
         let y_up = (height - 1 - (first_row + row_in_band)) as f64;
         let v = grid.v_of_row(y_up);
         let v_in = R::from_f64(v);
-        for &index in list {
-            let disc = &discs[index as usize];
+        for (disc, disc_in) in &band_discs {
             // Span in f64 (conservative); the per-pixel test in R decides.
             let dv = v - disc.v;
             let chord_sq = disc.radius_sq - dv * dv;
@@ -308,7 +365,6 @@ fn rasterise_band<R: Real>(
                 continue;
             };
             disc_tests += (last - first + 1) as u64;
-            let disc_in = discs_in[index as usize];
             let dv_in = v_in - disc_in.v;
             let dv_sq = dv_in * dv_in;
             // Error bounds of R's arithmetic for this disc on this row (f64 types: zero).
@@ -402,15 +458,6 @@ pub(crate) fn rasterise_frame<R: Real>(
     discs: &[Disc],
 ) -> Result<Frame, ViewError> {
     let grid = *grid;
-    let discs_in: Vec<DiscIn<R>> = discs
-        .iter()
-        .map(|d| DiscIn {
-            u: R::from_f64(d.u),
-            v: R::from_f64(d.v),
-            w: R::from_f64(d.w),
-            radius_sq: R::from_f64(d.radius_sq),
-        })
-        .collect();
     let bands = bin_discs(discs, &grid);
     let width = view.width_px as usize;
     let height = view.height_px as usize;
@@ -421,7 +468,7 @@ pub(crate) fn rasterise_frame<R: Real>(
         .zip(sphere.par_chunks_mut(width * BAND_ROWS))
         .enumerate()
         .map(|(band, (t_band, sphere_band))| {
-            let list = &bands.indices[bands.offsets[band]..bands.offsets[band + 1]];
+            let list = bands.band(band);
             let first_row = band * BAND_ROWS;
             match R::as_self_slice(t_band) {
                 Some(t_in_place) => {
@@ -430,7 +477,7 @@ pub(crate) fn rasterise_frame<R: Real>(
                         sphere: sphere_band,
                         t_error: &mut [],
                     };
-                    rasterise_band(discs, &discs_in, list, &grid, first_row, out)
+                    rasterise_band(discs, list, &grid, first_row, out)
                 }
                 None => {
                     let mut scratch = vec![R::INFINITY; t_band.len()];
@@ -440,7 +487,7 @@ pub(crate) fn rasterise_frame<R: Real>(
                         sphere: sphere_band,
                         t_error: &mut t_error,
                     };
-                    let tests = rasterise_band(discs, &discs_in, list, &grid, first_row, out);
+                    let tests = rasterise_band(discs, list, &grid, first_row, out);
                     for (out, value) in t_band.iter_mut().zip(&scratch) {
                         *out = value.to_f64();
                     }
@@ -463,15 +510,24 @@ pub(crate) fn frame_from_hits(
     sphere: Vec<u32>,
     precision: Precision,
 ) -> Frame {
-    let palette: Vec<[u8; 3]> = scene
-        .spheres
+    // Colours per material (few), looked up per pixel: the cost follows the pixels, not the
+    // sphere count.
+    let material_rgb: Vec<[u8; 3]> = scene
+        .materials
         .iter()
-        .map(|s| scene.sphere_colour(s).to_array().map(quantize_f32))
+        .map(|material| material.diffuse_colour.to_array().map(quantize_f32))
         .collect();
+    let default_rgb = crate::scene::DEFAULT_DIFFUSE.to_array().map(quantize_f32);
     let background = scene.background.to_array().map(quantize_f32);
     let colour = sphere
         .par_iter()
-        .map(|&index| palette.get(index as usize).copied().unwrap_or(background))
+        .map(|&index| match scene.spheres.get(index as usize) {
+            Some(hit) => hit
+                .material
+                .and_then(|material| material_rgb.get(material as usize).copied())
+                .unwrap_or(default_rgb),
+            None => background,
+        })
         .collect();
     Frame {
         width_px: view.width_px,
@@ -502,13 +558,14 @@ mod tests {
         // Top band holds rows 0..8 (v from 16 down to 8); the disc at v = 12 sits in it.
         let discs = [disc(12.0, 1.0, 0), disc(-100.0, 1.0, 1), disc(0.0, 20.0, 2)];
         let bands = bin_discs(&discs, &grid);
-        assert_eq!(bands.offsets.len(), 5);
-        let band = |b: usize| &bands.indices[bands.offsets[b]..bands.offsets[b + 1]];
+        let band = |b: usize| bands.band(b).collect::<Vec<_>>();
         assert_eq!(band(0), [0, 2]);
+        assert!(band(4).is_empty(), "four bands of eight rows");
         assert!(
-            !bands.indices.contains(&1),
+            (0..4).all(|b| !band(b).contains(&1)),
             "off-screen disc listed nowhere"
         );
+        assert_eq!(bands.listed(), 5);
         for b in 1..4 {
             assert!(band(b).contains(&2), "the big disc is in every band");
         }
