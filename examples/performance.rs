@@ -180,6 +180,65 @@ fn report(course: &[Course], generated: &[Generated], peak_mb: f64) -> String {
          compare ratios within a table. The criterion benchmarks (`cargo bench`) measure the same \
          workloads with confidence intervals.\n"
     );
+    let _ = writeln!(md, "## Targets\n");
+    let _ = writeln!(md, "| target | measured | met |\n|---|---|---|");
+    let million = generated.iter().find(|g| g.count == 1_000_000);
+    let slowest_course = course.iter().map(|c| c.render_ms).fold(0.0, f64::max);
+    let least_speed_up = course
+        .iter()
+        .map(|c| c.oracle_command_ms / c.command_ms)
+        .fold(f64::INFINITY, f64::min);
+    let slowest_viewer = generated
+        .iter()
+        .filter(|g| g.count <= 100_000)
+        .map(|g| g.viewer_ms)
+        .fold(0.0, f64::max);
+    let rows: [(&str, f64, &str, bool); 6] = [
+        (
+            "1,000,000 spheres: parse ≤ 1000 ms",
+            million.map_or(f64::NAN, |g| g.parse_ms),
+            "ms",
+            million.is_some_and(|g| g.parse_ms <= 1000.0),
+        ),
+        (
+            "1,000,000 spheres: render 1024×1024 ≤ 50 ms",
+            million.map_or(f64::NAN, |g| g.render_ms),
+            "ms",
+            million.is_some_and(|g| g.render_ms <= 50.0),
+        ),
+        (
+            "1,000,000 spheres: peak memory ≤ 300 MB",
+            peak_mb,
+            "MB",
+            peak_mb <= 300.0,
+        ),
+        (
+            "course scenes at 2000×2000: render ≤ 4 ms (slowest scene)",
+            slowest_course,
+            "ms",
+            slowest_course <= 4.0,
+        ),
+        (
+            "course scenes: whole command ≥ 20× the straightforward loop (least speed-up)",
+            least_speed_up,
+            "×",
+            least_speed_up >= 20.0,
+        ),
+        (
+            "viewer: ≤ 16 ms per 1024×1024 frame up to 100,000 spheres (slowest)",
+            slowest_viewer,
+            "ms",
+            slowest_viewer <= 16.0,
+        ),
+    ];
+    for (target, value, unit, met) in rows {
+        let _ = writeln!(
+            md,
+            "| {target} | {value:.1} {unit} | {} |",
+            if met { "yes" } else { "**no**" }
+        );
+    }
+    let _ = writeln!(md);
     let _ = writeln!(md, "## Course scenes at 2000×2000\n");
     let _ = writeln!(
         md,

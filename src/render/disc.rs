@@ -461,13 +461,17 @@ pub(crate) fn rasterise_frame<R: Real>(
     let bands = bin_discs(discs, &grid);
     let width = view.width_px as usize;
     let height = view.height_px as usize;
-    let mut t = vec![f64::INFINITY; width * height];
-    let mut sphere = vec![NO_HIT; width * height];
+    // Zeroed buffers come from the allocator without a serial fill (fresh pages are zero); each
+    // band sets its own part to "no hit" in parallel below.
+    let mut t = vec![0.0f64; width * height];
+    let mut sphere = vec![0u32; width * height];
     let disc_tests = t
         .par_chunks_mut(width * BAND_ROWS)
         .zip(sphere.par_chunks_mut(width * BAND_ROWS))
         .enumerate()
         .map(|(band, (t_band, sphere_band))| {
+            t_band.fill(f64::INFINITY);
+            sphere_band.fill(NO_HIT);
             let list = bands.band(band);
             let first_row = band * BAND_ROWS;
             match R::as_self_slice(t_band) {
