@@ -364,7 +364,7 @@ fn write_plot(generated: &[Generated], path: &Path) -> Result<(), Box<dyn std::e
     }
     chart
         .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
+        .position(SeriesLabelPosition::LowerRight)
         .background_style(WHITE.mix(0.8))
         .border_style(BLACK)
         .draw()?;

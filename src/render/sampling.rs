@@ -288,6 +288,33 @@ pub(crate) struct Supersampled {
 /// Rows per band when supersampling.
 const SAMPLE_BAND_ROWS: usize = 16;
 
+/// Columns per tile: within a band, samples are tested only against the discs of their tile.
+const TILE_COLUMNS: usize = 16;
+
+/// `discs` listed per tile of [`TILE_COLUMNS`] columns (in file order, so ties keep the first
+/// sphere): each disc goes to the tiles its screen u extent (widened by a pixel, as samples lie
+/// anywhere in their pixel) overlaps.
+fn column_tiles(discs: &[Disc], grid: &PixelGrid) -> Vec<Vec<Disc>> {
+    let width = grid.width_px as usize;
+    let tile_count = width.div_ceil(TILE_COLUMNS).max(1);
+    let mut tiles = vec![Vec::new(); tile_count];
+    let last_column = (width.max(1) - 1) as f64;
+    for disc in discs {
+        let radius = disc.radius_sq.sqrt();
+        // Column x spans u in [u_of(x) − ½·s, u_of(x) + ½·s]: x = u / s + width/2 − ½.
+        let column_of = |u: f64| u / grid.pixel_size_world + 0.5 * grid.width_px as f64 - 0.5;
+        let first = (column_of(disc.u - radius) - 1.0).floor().max(0.0);
+        let last = (column_of(disc.u + radius) + 1.0).ceil().min(last_column);
+        if !(first <= last) {
+            continue; // off the image, or NaN
+        }
+        for tile in &mut tiles[first as usize / TILE_COLUMNS..=last as usize / TILE_COLUMNS] {
+            tile.push(*disc);
+        }
+    }
+    tiles
+}
+
 /// Supersamples `scene` on `grid` (see the module docs). `discs` are the frame's projected discs.
 pub(crate) fn supersample(
     scene: &Scene,
@@ -328,6 +355,7 @@ pub(crate) fn supersample(
                 })
                 .copied()
                 .collect();
+            let tiles = column_tiles(&local, grid);
             let mut tests = 0u64;
             // Evaluate every sample of the halo rows.
             let rows = halo_last - halo_first + 1;
@@ -341,8 +369,9 @@ pub(crate) fn supersample(
                         .map(|(ox, oy)| {
                             let (px, py) = (x as f32 + ox, y_up as f32 + oy);
                             let (u, v) = grid.screen_of_pixel_point(f64::from(px), f64::from(py));
-                            tests += local.len() as u64;
-                            let hit = nearest_hit(&local, u, v);
+                            let tile = &tiles[x as usize / TILE_COLUMNS];
+                            tests += tile.len() as u64;
+                            let hit = nearest_hit(tile, u, v);
                             let (colour, grey) = match hit {
                                 Some((t, sphere)) => (
                                     palette
@@ -436,6 +465,40 @@ pub(crate) fn supersample(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn column_tiles_hold_every_disc_a_sample_can_hit_in_file_order() {
+        let grid = PixelGrid::new(100, 60, 5.0);
+        let mut rng = SplitMix64::new(3);
+        let discs: Vec<Disc> = (0..400)
+            .map(|sphere| {
+                let radius = rng.log_uniform(1e-3, 2.0);
+                Disc {
+                    u: rng.uniform(-3.5, 3.5),
+                    v: 0.0,
+                    w: 0.0,
+                    radius_sq: radius * radius,
+                    sphere,
+                }
+            })
+            .collect();
+        let tiles = column_tiles(&discs, &grid);
+        let half_pixel = 0.5 * grid.pixel_size_world;
+        for x in 0..grid.width_px {
+            let centre = grid.u_of_column(f64::from(x));
+            let tile = &tiles[x as usize / TILE_COLUMNS];
+            for disc in &discs {
+                let radius = disc.radius_sq.sqrt();
+                // Some point of the pixel's column lies within the disc's u extent.
+                let reachable = disc.u + radius >= centre - half_pixel
+                    && disc.u - radius <= centre + half_pixel;
+                if reachable {
+                    assert!(tile.contains(disc), "column {x}: disc {}", disc.sphere);
+                }
+            }
+            assert!(tile.windows(2).all(|pair| pair[0].sphere < pair[1].sphere));
+        }
+    }
 
     fn sampling(sampler: Sampler, samples: u32, filter: Filter) -> Sampling {
         Sampling {
