@@ -38,6 +38,12 @@ pub fn histogram_axis(histogram: &DepthHistogram, range: &DepthRange) -> (f64, f
             high = high.max(t);
         }
     }
+    if !(high - low).is_finite() {
+        // A range end so far out that the axis would be infinite: the axis shows the visible t
+        // only, and that handle sits at the edge.
+        low = histogram.t_low;
+        high = histogram.t_high;
+    }
     let span = high - low;
     let pad = if span > 0.0 {
         0.04 * span
@@ -118,7 +124,11 @@ pub fn histogram_ui(
     let accent = ui.visuals().selection.stroke.color;
     for (is_min, label) in [(true, MIN_HANDLE_LABEL), (false, MAX_HANDLE_LABEL)] {
         let t = if is_min { range.min_t } else { range.max_t };
-        let x = x_of(t).clamp(bars.left(), bars.right());
+        // NaN (a degenerate axis) puts the handle at the left edge: widget rects must be numbers.
+        let x = match x_of(t) {
+            x if x.is_nan() => bars.left(),
+            x => x.clamp(bars.left(), bars.right()),
+        };
         let grab = Rect::from_min_max(
             Pos2::new(x - HANDLE_HALF_WIDTH_POINTS, bars.top()),
             Pos2::new(x + HANDLE_HALF_WIDTH_POINTS, legend.bottom()),
@@ -261,5 +271,9 @@ mod tests {
         };
         let (low, high) = histogram_axis(&single, &DepthRange::new(5.0, 5.0));
         assert!(low < 5.0 && high > 5.0);
+        // Range ends at ±1e308 (typed by hand) would make the axis infinite: it keeps the
+        // visible t, finite.
+        let (low, high) = histogram_axis(&histogram, &DepthRange::new(-1e308, 1e308));
+        assert!(low.is_finite() && high.is_finite() && low < 9.0 && high > 11.0);
     }
 }
