@@ -71,9 +71,18 @@ fn screenshot(display: &str, path: &Path) -> Option<RgbImage> {
 
 /// Centroid and count of the pixels matching `predicate`.
 fn blob(image: &RgbImage, predicate: impl Fn(&image::Rgb<u8>) -> bool) -> (f64, f64, usize) {
+    blob_in_rows(image, 0..image.height(), predicate)
+}
+
+/// [`blob`] over the image rows `rows` only.
+fn blob_in_rows(
+    image: &RgbImage,
+    rows: std::ops::Range<u32>,
+    predicate: impl Fn(&image::Rgb<u8>) -> bool,
+) -> (f64, f64, usize) {
     let (mut sx, mut sy, mut n) = (0.0, 0.0, 0usize);
     for (x, y, pixel) in image.enumerate_pixels() {
-        if predicate(pixel) {
+        if rows.contains(&y) && predicate(pixel) {
             sx += f64::from(x);
             sy += f64::from(y);
             n += 1;
@@ -118,7 +127,12 @@ fn real_window_shows_colour_and_depth_side_by_side() {
         }
         if let Some(shot) = screenshot(&display, &shot_path) {
             let red = blob(&shot, |p| p[0] > 250 && p[1] < 5 && p[2] < 5);
-            let white = blob(&shot, |p| p[0] > 245 && p[0] == p[1] && p[1] == p[2]);
+            // White near the red disc's rows: the depth disc's centre (the histogram's legend
+            // strip below the depth image has white too).
+            let red_row = red.1 as u32;
+            let white = blob_in_rows(&shot, red_row.saturating_sub(60)..red_row + 60, |p| {
+                p[0] > 245 && p[0] == p[1] && p[1] == p[2]
+            });
             let mid_grey = blob(&shot, |p| {
                 (60..200).contains(&p[0]) && p[0] == p[1] && p[1] == p[2]
             });
