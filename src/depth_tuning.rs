@@ -5,8 +5,13 @@
 //! "Visible t" is the t of every pixel that hits a sphere in the frame (no-hit pixels, `+∞`,
 //! are left out). Both functions work on the frame's raw, one-sample-per-pixel t.
 
+use rayon::prelude::*;
+
 use crate::depth::DepthRange;
 use crate::render::Frame;
+
+/// Pixels per parallel task when counting the histogram.
+const PIXELS_PER_TASK: usize = 1 << 16;
 
 /// Largest accepted percentile cut for [`auto_range`] (each end), in percent.
 pub const MAX_PERCENTILE_CUT: f64 = 49.0;
@@ -59,32 +64,54 @@ impl DepthHistogram {
     /// of zero width.
     pub fn new(frame: &Frame, bins: usize) -> Option<Self> {
         let bins = bins.max(1);
-        let mut low = f64::INFINITY;
-        let mut high = f64::NEG_INFINITY;
-        let mut no_hit = 0u32;
-        for &t in &frame.t {
-            if t.is_finite() {
-                low = low.min(t);
-                high = high.max(t);
-            } else {
-                no_hit = no_hit.saturating_add(1);
-            }
-        }
+        // Both passes run in parallel over the frame (a viewer frame has millions of pixels).
+        let (low, high, no_hit) = frame
+            .t
+            .par_iter()
+            .fold(
+                || (f64::INFINITY, f64::NEG_INFINITY, 0u32),
+                |(low, high, no_hit), &t| {
+                    if t.is_finite() {
+                        (low.min(t), high.max(t), no_hit)
+                    } else {
+                        (low, high, no_hit.saturating_add(1))
+                    }
+                },
+            )
+            .reduce(
+                || (f64::INFINITY, f64::NEG_INFINITY, 0u32),
+                |a, b| (a.0.min(b.0), a.1.max(b.1), a.2.saturating_add(b.2)),
+            );
         if low > high {
             return None;
         }
-        let mut counts = vec![0u32; bins];
         let width = high - low;
-        for &t in frame.t.iter().filter(|t| t.is_finite()) {
-            let bin = if width > 0.0 {
-                // In [0, bins]; the farthest t lands in the last bin.
-                (((t - low) / width) * bins as f64) as usize
-            } else {
-                0
-            };
-            let count = &mut counts[bin.min(bins - 1)];
-            *count = count.saturating_add(1);
-        }
+        let counts = frame
+            .t
+            .par_chunks(PIXELS_PER_TASK)
+            .map(|chunk| {
+                let mut counts = vec![0u32; bins];
+                for &t in chunk.iter().filter(|t| t.is_finite()) {
+                    let bin = if width > 0.0 {
+                        // In [0, bins]; the farthest t lands in the last bin.
+                        (((t - low) / width) * bins as f64) as usize
+                    } else {
+                        0
+                    };
+                    let count = &mut counts[bin.min(bins - 1)];
+                    *count = count.saturating_add(1);
+                }
+                counts
+            })
+            .reduce(
+                || vec![0u32; bins],
+                |mut total, part| {
+                    for (sum, count) in total.iter_mut().zip(part) {
+                        *sum = sum.saturating_add(count);
+                    }
+                    total
+                },
+            );
         Some(Self {
             t_low: low,
             t_high: high,

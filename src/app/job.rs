@@ -72,6 +72,21 @@ pub type JobResult = RenderResult<ViewerJob, JobOutput>;
 pub fn prepare_frame(job: &ViewerJob) -> JobOutput {
     let frame = render_with(&job.scene, &job.view, &job.quality)?;
     let size = [frame.width_px as usize, frame.height_px as usize];
+    // The histogram alongside the two textures.
+    let (histogram, (colour, depth)) = rayon::join(
+        || DepthHistogram::new(&frame, HISTOGRAM_BINS),
+        || textures(job, &frame, size),
+    );
+    Ok(PreparedFrame {
+        frame: Arc::new(frame),
+        colour,
+        depth,
+        histogram,
+    })
+}
+
+/// The colour and depth textures of `frame`.
+fn textures(job: &ViewerJob, frame: &Frame, size: [usize; 2]) -> (ColorImage, ColorImage) {
     let colour = ColorImage::new(
         size,
         frame
@@ -102,13 +117,7 @@ pub fn prepare_frame(job: &ViewerJob) -> JobOutput {
                 .collect(),
         )
     };
-    let histogram = DepthHistogram::new(&frame, HISTOGRAM_BINS);
-    Ok(PreparedFrame {
-        frame: Arc::new(frame),
-        colour,
-        depth,
-        histogram,
-    })
+    (colour, depth)
 }
 
 /// The viewer's worker type.

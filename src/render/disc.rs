@@ -124,33 +124,52 @@ impl Bands {
 /// one row.
 fn row_span(grid: &PixelGrid, disc: &Disc) -> Option<(usize, usize)> {
     let radius = disc.radius_sq.sqrt();
-    let height = f64::from(grid.height_px);
-    // Row index from the top: r = height − 1 − y_up, with v = (y_up + ½ − height/2)·s.
-    let y_up_low = ((disc.v - radius) / grid.pixel_size_world + 0.5 * height - 0.5).floor() - 1.0;
-    let y_up_high = ((disc.v + radius) / grid.pixel_size_world + 0.5 * height - 0.5).ceil() + 1.0;
-    clamp_span(
-        height - 1.0 - y_up_high,
-        height - 1.0 - y_up_low,
-        height - 1.0,
-    )
+    let inverse_pixel = 1.0 / grid.pixel_size_world;
+    // y_up (from the bottom) of a screen v: v = (y_up + ½ − height/2)·s.
+    let offset = 0.5 * f64::from(grid.height_px) - 0.5;
+    let max_row = grid.height_px as usize - 1;
+    let (low, high) = pixel_span(
+        (disc.v - radius) * inverse_pixel + offset,
+        (disc.v + radius) * inverse_pixel + offset,
+        max_row,
+    )?;
+    // Rows count from the top: row = height − 1 − y_up.
+    Some((max_row - high, max_row - low))
 }
 
-/// Clamps a span of indices `[first, last]` to `[0, max]`; `None` if it misses or is NaN.
-fn clamp_span(first: f64, last: f64, max: f64) -> Option<(usize, usize)> {
-    if first.is_nan() || last.is_nan() || first > max || last < 0.0 {
+/// Whole pixel indices `[first, last]` within `[0, max_index]` covering the fractional pixel
+/// coordinates `[low, high]` widened by at least one pixel each side (conservative: the exact
+/// test decides); `None` when that misses `[0, max_index]` or is NaN. Truncating conversions
+/// instead of `floor`/`ceil` (library calls on baseline x86-64, in the hottest loop) and no
+/// division.
+#[inline]
+fn pixel_span(low: f64, high: f64, max_index: usize) -> Option<(usize, usize)> {
+    let max = max_index as f64;
+    // NaN fails both tests.
+    if !(low < max + 2.0) || !(high > -2.0) {
         return None;
     }
-    // Both ends are finite here and clamped into [0, max].
-    Some((first.max(0.0) as usize, last.min(max) as usize))
+    // For low ≥ 1, (low − 1) truncated is floor(low) − 1; below, the first index is 0.
+    let first = if low >= 1.0 { (low - 1.0) as usize } else { 0 };
+    // trunc(high + 1) + 1 ≥ ceil(high) + 1 (high + 1 > −1 here).
+    let last = if high + 1.0 < max {
+        (high + 1.0) as usize + 1
+    } else {
+        max_index
+    };
+    (first <= last).then_some((first, last.min(max_index)))
 }
 
-/// Columns `[first, last]` (clamped to the image) whose pixel centres may lie within `half_chord`
-/// of screen u `center_u`. Conservative by one pixel; the exact test decides.
-fn column_span(grid: &PixelGrid, center_u: f64, half_chord: f64) -> Option<(usize, usize)> {
-    let offset = 0.5 * f64::from(grid.width_px) - 0.5;
-    let first = ((center_u - half_chord) / grid.pixel_size_world + offset).floor() - 1.0;
-    let last = ((center_u + half_chord) / grid.pixel_size_world + offset).ceil() + 1.0;
-    clamp_span(first, last, f64::from(grid.width_px - 1))
+/// Columns `[first, last]` (clamped to the image) whose pixel centres may lie within
+/// `half_chord_px` pixels of column coordinate `center_column` (`u / s + width/2 − ½`).
+/// Conservative by one pixel; the exact test decides.
+#[inline]
+fn column_span(grid: &PixelGrid, center_column: f64, half_chord_px: f64) -> Option<(usize, usize)> {
+    pixel_span(
+        center_column - half_chord_px,
+        center_column + half_chord_px,
+        grid.width_px as usize - 1,
+    )
 }
 
 /// Smallest chunk of discs binned by one task.
@@ -328,7 +347,10 @@ fn rasterise_band<R: Real>(
     let refine = R::ROUNDOFF > 0.0;
     // The band's discs gathered once, contiguous and in file order: the rows below read them
     // sequentially instead of chasing indices across the whole scene (cache misses dominated).
-    let band_discs: Vec<(Disc, DiscIn<R>)> = list
+    // With each, its centre's column coordinate (u / s + width/2 − ½) for the column spans.
+    let inverse_pixel = 1.0 / grid.pixel_size_world;
+    let centre_column_offset = 0.5 * f64::from(grid.width_px) - 0.5;
+    let band_discs: Vec<(Disc, DiscIn<R>, f64)> = list
         .map(|index| {
             let disc = discs[index as usize];
             let disc_in = DiscIn {
@@ -337,7 +359,7 @@ fn rasterise_band<R: Real>(
                 w: R::from_f64(disc.w),
                 radius_sq: R::from_f64(disc.radius_sq),
             };
-            (disc, disc_in)
+            (disc, disc_in, disc.u * inverse_pixel + centre_column_offset)
         })
         .collect();
     for (row_in_band, (t_row, sphere_row)) in out
@@ -354,14 +376,15 @@ fn rasterise_band<R: Real>(
         let y_up = (height - 1 - (first_row + row_in_band)) as f64;
         let v = grid.v_of_row(y_up);
         let v_in = R::from_f64(v);
-        for (disc, disc_in) in &band_discs {
+        for (disc, disc_in, centre_column) in &band_discs {
             // Span in f64 (conservative); the per-pixel test in R decides.
             let dv = v - disc.v;
             let chord_sq = disc.radius_sq - dv * dv;
             if chord_sq.is_nan() || chord_sq < -disc.radius_sq * 1e-6 {
                 continue;
             }
-            let Some((first, last)) = column_span(grid, disc.u, chord_sq.max(0.0).sqrt()) else {
+            let half_chord_px = chord_sq.max(0.0).sqrt() * inverse_pixel;
+            let Some((first, last)) = column_span(grid, *centre_column, half_chord_px) else {
                 continue;
             };
             disc_tests += (last - first + 1) as u64;
@@ -548,6 +571,38 @@ pub(crate) fn frame_from_hits(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn pixel_spans_hold_every_index_within_a_pixel_of_the_range() {
+        let mut rng = crate::generate::SplitMix64::new(5);
+        let max_index = 99usize;
+        for case in 0..100_000 {
+            let centre = rng.uniform(-110.0, 210.0);
+            let half = if case % 7 == 0 {
+                0.0
+            } else {
+                rng.log_uniform(1e-6, 300.0)
+            };
+            let (low, high) = (centre - half, centre + half);
+            // What floor/ceil with a one-pixel margin would cover.
+            let wanted_first = (low.floor() - 1.0).max(0.0);
+            let wanted_last = (high.ceil() + 1.0).min(max_index as f64);
+            match pixel_span(low, high, max_index) {
+                Some((first, last)) => {
+                    assert!(first as f64 <= wanted_first && last as f64 >= wanted_last);
+                    assert!(first <= last && last <= max_index);
+                }
+                None => assert!(wanted_first > wanted_last, "{low} {high}"),
+            }
+        }
+        assert_eq!(pixel_span(f64::NAN, 5.0, max_index), None);
+        assert_eq!(pixel_span(1.0, f64::NAN, max_index), None);
+        assert_eq!(
+            pixel_span(f64::NEG_INFINITY, f64::INFINITY, max_index),
+            Some((0, 99))
+        );
+        assert_eq!(pixel_span(1e300, 2e300, max_index), None);
+    }
 
     #[test]
     fn bands_list_each_disc_where_its_rows_are_in_file_order() {
