@@ -146,7 +146,8 @@ fn row_span(grid: &PixelGrid, disc: &Disc) -> Option<(usize, usize)> {
 fn pixel_span(low: f64, high: f64, max_index: usize) -> Option<(usize, usize)> {
     let max = max_index as f64;
     // NaN fails both tests.
-    if !(low < max + 2.0) || !(high > -2.0) {
+    let reaches_the_range = low < max + 2.0 && high > -2.0;
+    if !reaches_the_range {
         return None;
     }
     // For low ≥ 1, (low − 1) truncated is floor(low) − 1; below, the first index is 0.

@@ -305,8 +305,9 @@ fn column_tiles(discs: &[Disc], grid: &PixelGrid) -> Vec<Vec<Disc>> {
         let column_of = |u: f64| u / grid.pixel_size_world + 0.5 * grid.width_px as f64 - 0.5;
         let first = (column_of(disc.u - radius) - 1.0).floor().max(0.0);
         let last = (column_of(disc.u + radius) + 1.0).ceil().min(last_column);
-        if !(first <= last) {
-            continue; // off the image, or NaN
+        let on_the_image = first <= last; // false for NaN too
+        if !on_the_image {
+            continue;
         }
         for tile in &mut tiles[first as usize / TILE_COLUMNS..=last as usize / TILE_COLUMNS] {
             tile.push(*disc);
