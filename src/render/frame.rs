@@ -1,7 +1,8 @@
 //! [`Frame`]: a rendered picture — colour, raw t and the visible sphere per pixel — and its 8-bit
 //! colour and depth images.
 
-use image::{Rgb, RgbImage};
+use image::RgbImage;
+use rayon::prelude::*;
 
 use crate::depth::{DepthColourMap, DepthRange};
 
@@ -45,9 +46,8 @@ impl Frame {
 
     /// The 8-bit colour image (`floor(c·255)`, clamped), top row first.
     pub fn colour_image(&self) -> RgbImage {
-        RgbImage::from_fn(self.width_px, self.height_px, |x, y| {
-            Rgb(self.colour[self.storage_index(x, y)])
-        })
+        // Storage is top row first, as images are: a flat copy.
+        image_from_pixels(self.width_px, self.height_px, self.colour.clone())
     }
 
     /// The 8-bit depth image over `range` (grey in all three channels), top row first. A
@@ -71,18 +71,21 @@ impl Frame {
             .as_ref()
             .filter(|(grey_range, _)| *grey_range == range)
             .map(|(_, grey)| grey);
-        RgbImage::from_fn(self.width_px, self.height_px, |x, y| {
-            let index = self.storage_index(x, y);
-            let t = self.t[index];
-            Rgb(match filtered {
-                Some(grey) if map == DepthColourMap::Grey && no_hit == [0; 3] => {
-                    [crate::depth::quantize_f32(grey[index]); 3]
+        let pixels = (0..self.t.len())
+            .into_par_iter()
+            .map(|index| {
+                let t = self.t[index];
+                match filtered {
+                    Some(grey) if map == DepthColourMap::Grey && no_hit == [0; 3] => {
+                        [crate::depth::quantize_f32(grey[index]); 3]
+                    }
+                    Some(_) | None if t == f64::INFINITY || t.is_nan() => no_hit,
+                    Some(grey) => map.rgb_of_grey(f64::from(grey[index])),
+                    None => map.rgb(&range, t, no_hit),
                 }
-                Some(_) | None if t == f64::INFINITY || t.is_nan() => no_hit,
-                Some(grey) => map.rgb_of_grey(f64::from(grey[index])),
-                None => map.rgb(&range, t, no_hit),
             })
-        })
+            .collect();
+        image_from_pixels(self.width_px, self.height_px, pixels)
     }
 
     /// Colour and depth images side by side in one picture (colour left), as users share them.
@@ -102,9 +105,12 @@ impl Frame {
             }
         })
     }
+}
 
-    /// Storage index of image pixel (x, y) with y = 0 the **top** row.
-    fn storage_index(&self, x: u32, y_down: u32) -> usize {
-        y_down as usize * self.width_px as usize + x as usize
-    }
+/// An image of `width × height` pixels given top row first.
+fn image_from_pixels(width: u32, height: u32, pixels: Vec<[u8; 3]>) -> RgbImage {
+    // The pixel count always matches (frames hold width × height pixels); an empty image
+    // would only stand in for a broken frame.
+    RgbImage::from_raw(width, height, pixels.into_flattened())
+        .unwrap_or_else(|| RgbImage::new(width, height))
 }
