@@ -411,14 +411,31 @@ fn rasterise_band<R: Real>(
             } else {
                 (R::ZERO, R::ZERO, R::ZERO)
             };
-            for x in first..=last {
+            if !refine {
+                // The exact types' loop: over slices (no bounds checks), branch-free selects.
+                let t_span = &mut t_row[first..last + 1];
+                let sphere_span = &mut sphere_row[first..last + 1];
+                for ((x, t_px), sphere_px) in (first..).zip(t_span).zip(sphere_span) {
+                    let u = (R::from_f64(x as f64) + column_offset) * pixel_size;
+                    let du = u - disc_in.u;
+                    let distance_sq = du * du + dv_sq;
+                    let rest = disc_in.radius_sq - distance_sq;
+                    let root = (if rest > R::ZERO { rest } else { R::ZERO }).sqrt();
+                    let t = disc_in.w - root;
+                    let closer = distance_sq <= disc_in.radius_sq && t < *t_px;
+                    *t_px = if closer { t } else { *t_px };
+                    *sphere_px = if closer { disc.sphere } else { *sphere_px };
+                }
+                continue;
+            }
+            for x in first..last + 1 {
                 let u = (R::from_f64(x as f64) + column_offset) * pixel_size;
                 let du = u - disc_in.u;
                 let distance_sq = du * du + dv_sq;
                 let rest = disc_in.radius_sq - distance_sq;
                 let root = (if rest > R::ZERO { rest } else { R::ZERO }).sqrt();
                 let t = disc_in.w - root;
-                if refine {
+                {
                     // t's error: flat part plus the part that grows towards the silhouette.
                     let t_error = t_error_flat + t_error_steep.div(root);
                     let uncertain_coverage = rest.abs() <= coverage_tolerance;
@@ -437,11 +454,7 @@ fn rasterise_band<R: Real>(
                         sphere_row[x] = disc.sphere;
                         error_row[x] = t_error;
                     }
-                    continue;
                 }
-                let closer = distance_sq <= disc_in.radius_sq && t < t_row[x];
-                t_row[x] = if closer { t } else { t_row[x] };
-                sphere_row[x] = if closer { disc.sphere } else { sphere_row[x] };
             }
         }
     }
@@ -485,17 +498,20 @@ pub(crate) fn rasterise_frame<R: Real>(
     let bands = bin_discs(discs, &grid);
     let width = view.width_px as usize;
     let height = view.height_px as usize;
-    // Zeroed buffers come from the allocator without a serial fill (fresh pages are zero); each
-    // band sets its own part to "no hit" in parallel below.
-    let mut t = vec![0.0f64; width * height];
-    let mut sphere = vec![0u32; width * height];
+    // "No hit" everywhere, written in parallel (a `vec![…; n]` fills serially).
+    let mut t: Vec<f64> = (0..width * height)
+        .into_par_iter()
+        .map(|_| f64::INFINITY)
+        .collect();
+    let mut sphere: Vec<u32> = (0..width * height)
+        .into_par_iter()
+        .map(|_| NO_HIT)
+        .collect();
     let disc_tests = t
         .par_chunks_mut(width * BAND_ROWS)
         .zip(sphere.par_chunks_mut(width * BAND_ROWS))
         .enumerate()
         .map(|(band, (t_band, sphere_band))| {
-            t_band.fill(f64::INFINITY);
-            sphere_band.fill(NO_HIT);
             let list = bands.band(band);
             let first_row = band * BAND_ROWS;
             match R::as_self_slice(t_band) {
