@@ -351,16 +351,10 @@ fn rasterise_band<R: Real>(
     // With each, its centre's column coordinate (u / s + width/2 − ½) for the column spans.
     let inverse_pixel = 1.0 / grid.pixel_size_world;
     let centre_column_offset = 0.5 * f64::from(grid.width_px) - 0.5;
-    let band_discs: Vec<(Disc, DiscIn<R>, f64)> = list
+    let band_discs: Vec<(Disc, f64)> = list
         .map(|index| {
             let disc = discs[index as usize];
-            let disc_in = DiscIn {
-                u: R::from_f64(disc.u),
-                v: R::from_f64(disc.v),
-                w: R::from_f64(disc.w),
-                radius_sq: R::from_f64(disc.radius_sq),
-            };
-            (disc, disc_in, disc.u * inverse_pixel + centre_column_offset)
+            (disc, disc.u * inverse_pixel + centre_column_offset)
         })
         .collect();
     for (row_in_band, (t_row, sphere_row)) in out
@@ -377,7 +371,7 @@ fn rasterise_band<R: Real>(
         let y_up = (height - 1 - (first_row + row_in_band)) as f64;
         let v = grid.v_of_row(y_up);
         let v_in = R::from_f64(v);
-        for (disc, disc_in, centre_column) in &band_discs {
+        for (disc, centre_column) in &band_discs {
             // Span in f64 (conservative); the per-pixel test in R decides.
             let dv = v - disc.v;
             let chord_sq = disc.radius_sq - dv * dv;
@@ -389,6 +383,13 @@ fn rasterise_band<R: Real>(
                 continue;
             };
             disc_tests += (last - first + 1) as u64;
+            // The disc in the per-pixel type (free for f64).
+            let disc_in = DiscIn {
+                u: R::from_f64(disc.u),
+                v: R::from_f64(disc.v),
+                w: R::from_f64(disc.w),
+                radius_sq: R::from_f64(disc.radius_sq),
+            };
             let dv_in = v_in - disc_in.v;
             let dv_sq = dv_in * dv_in;
             // Error bounds of R's arithmetic for this disc on this row (f64 types: zero).
