@@ -14,7 +14,20 @@ use raytracer::app::job::{ViewerJob, prepare_frame};
 use raytracer::depth::DepthRange;
 use raytracer::explore::initial_depth_range;
 use raytracer::render::View;
-use raytracer::scene::load_scene;
+use raytracer::scene::{Scene, load_scene};
+
+/// The viewer's job for a 1024×1024 view of `scene` through its own camera.
+fn job_1024x1024(scene: Scene) -> ViewerJob {
+    let mut view = View::of_camera(&scene.camera, 1024, 1024, DepthRange::new(0.0, 1.0));
+    view.depth_range = initial_depth_range(&scene, &view);
+    ViewerJob {
+        scene: Arc::new(scene),
+        view,
+        scene_epoch: 0,
+        quality: Default::default(),
+        depth_style: Default::default(),
+    }
+}
 
 fn viewer_frame_1024x1024(c: &mut Criterion) {
     let mut group = c.benchmark_group("viewer_frame_1024x1024");
@@ -22,31 +35,13 @@ fn viewer_frame_1024x1024(c: &mut Criterion) {
     for number in 1..=7 {
         let path =
             Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/scene1_0{number}.txt"));
-        let scene = Arc::new(load_scene(&path).expect("course scene"));
-        let mut view = View::of_camera(&scene.camera, 1024, 1024, DepthRange::new(0.0, 1.0));
-        view.depth_range = initial_depth_range(&scene, &view);
-        let job = ViewerJob {
-            scene,
-            view,
-            scene_epoch: 0,
-            quality: Default::default(),
-            depth_style: Default::default(),
-        };
+        let job = job_1024x1024(load_scene(&path).expect("course scene"));
         group.bench_function(format!("scene1_0{number}"), |b| {
             b.iter(|| prepare_frame(black_box(&job)))
         });
     }
     for count in [1_000usize, 100_000] {
-        let scene = Arc::new(raytracer::generate::random_scene(1, count));
-        let mut view = View::of_camera(&scene.camera, 1024, 1024, DepthRange::new(0.0, 1.0));
-        view.depth_range = initial_depth_range(&scene, &view);
-        let job = ViewerJob {
-            scene,
-            view,
-            scene_epoch: 0,
-            quality: Default::default(),
-            depth_style: Default::default(),
-        };
+        let job = job_1024x1024(raytracer::generate::random_scene(1, count));
         group.bench_function(format!("generated_{count}"), |b| {
             b.iter(|| prepare_frame(black_box(&job)))
         });

@@ -3,15 +3,13 @@
 //! viewer still renders the current view. Seeded.
 #![cfg(feature = "gui")]
 
-use std::path::Path;
 use std::time::{Duration, Instant};
 
 use egui::accesskit::Role;
-use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
-use raytracer::app::ViewerApp;
-use raytracer::cli::ViewerRequest;
 use raytracer::generate::SplitMix64;
+
+mod common;
 
 const SLIDERS: [&str; 12] = [
     "centre x",
@@ -57,19 +55,7 @@ fn hostile_value(rng: &mut SplitMix64) -> f64 {
 
 #[test]
 fn thousands_of_hostile_inputs_never_panic() {
-    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_02.txt");
-    let mut harness = Harness::builder()
-        .with_size(egui::vec2(1000.0, 700.0))
-        .build_eframe(move |cc| {
-            ViewerApp::new(
-                cc,
-                ViewerRequest {
-                    input: Some(scene),
-                    ..Default::default()
-                },
-            )
-        });
-    harness.step();
+    let mut harness = common::viewer(Some(common::scene_path("scene1_02.txt")));
     harness.get_by_label("Direction and up").click();
     harness.step();
     let mut rng = SplitMix64::new(0xAB05E);

@@ -317,6 +317,33 @@ struct DiscIn<R> {
     radius_sq: R,
 }
 
+/// The disc test at one pixel, in the per-pixel type.
+struct PixelHit<R> {
+    /// Squared screen distance from the disc's centre.
+    distance_sq: R,
+    /// r² − distance²: ≥ 0 inside the disc.
+    rest: R,
+    /// √max(rest, 0).
+    root: R,
+    /// t of the front surface (meaningful inside the disc).
+    t: R,
+}
+
+/// Tests pixel column `u` (screen) against `disc` on a row `dv_sq` = (v − c_v)² away.
+#[inline(always)]
+fn pixel_hit<R: Real>(disc: &DiscIn<R>, u: R, dv_sq: R) -> PixelHit<R> {
+    let du = u - disc.u;
+    let distance_sq = du * du + dv_sq;
+    let rest = disc.radius_sq - distance_sq;
+    let root = (if rest > R::ZERO { rest } else { R::ZERO }).sqrt();
+    PixelHit {
+        distance_sq,
+        rest,
+        root,
+        t: disc.w - root,
+    }
+}
+
 /// One band's output buffers.
 struct BandOut<'a, R> {
     /// t per pixel.
@@ -418,11 +445,7 @@ fn rasterise_band<R: Real>(
                 let sphere_span = &mut sphere_row[first..last + 1];
                 for ((x, t_px), sphere_px) in (first..).zip(t_span).zip(sphere_span) {
                     let u = (R::from_f64(x as f64) + column_offset) * pixel_size;
-                    let du = u - disc_in.u;
-                    let distance_sq = du * du + dv_sq;
-                    let rest = disc_in.radius_sq - distance_sq;
-                    let root = (if rest > R::ZERO { rest } else { R::ZERO }).sqrt();
-                    let t = disc_in.w - root;
+                    let PixelHit { distance_sq, t, .. } = pixel_hit(&disc_in, u, dv_sq);
                     let closer = distance_sq <= disc_in.radius_sq && t < *t_px;
                     *t_px = if closer { t } else { *t_px };
                     *sphere_px = if closer { disc.sphere } else { *sphere_px };
@@ -431,11 +454,7 @@ fn rasterise_band<R: Real>(
             }
             for x in first..last + 1 {
                 let u = (R::from_f64(x as f64) + column_offset) * pixel_size;
-                let du = u - disc_in.u;
-                let distance_sq = du * du + dv_sq;
-                let rest = disc_in.radius_sq - distance_sq;
-                let root = (if rest > R::ZERO { rest } else { R::ZERO }).sqrt();
-                let t = disc_in.w - root;
+                let PixelHit { rest, root, t, .. } = pixel_hit(&disc_in, u, dv_sq);
                 {
                     // t's error: flat part plus the part that grows towards the silhouette.
                     let t_error = t_error_flat + t_error_steep.div(root);
