@@ -143,7 +143,7 @@ fn row_span(grid: &PixelGrid, disc: &Disc) -> Option<(usize, usize)> {
 /// instead of `floor`/`ceil` (library calls on baseline x86-64, in the hottest loop) and no
 /// division.
 #[inline]
-fn pixel_span(low: f64, high: f64, max_index: usize) -> Option<(usize, usize)> {
+pub(crate) fn pixel_span(low: f64, high: f64, max_index: usize) -> Option<(usize, usize)> {
     let max = max_index as f64;
     // NaN fails both tests.
     let reaches_the_range = low < max + 2.0 && high > -2.0;
@@ -455,25 +455,23 @@ fn rasterise_band<R: Real>(
             for x in first..last + 1 {
                 let u = (R::from_f64(x as f64) + column_offset) * pixel_size;
                 let PixelHit { rest, root, t, .. } = pixel_hit(&disc_in, u, dv_sq);
-                {
-                    // t's error: flat part plus the part that grows towards the silhouette.
-                    let t_error = t_error_flat + t_error_steep.div(root);
-                    let uncertain_coverage = rest.abs() <= coverage_tolerance;
-                    let uncertain_order =
-                        sphere_row[x] != NO_HIT && (t - t_row[x]).abs() <= t_error + error_row[x];
-                    if uncertain_coverage || uncertain_order {
-                        decide_in_f64(discs, disc, grid, x, v, &mut t_row[x], &mut sphere_row[x]);
-                        if sphere_row[x] == disc.sphere {
-                            error_row[x] = R::ZERO;
-                        }
-                        continue;
+                // t's error: flat part plus the part that grows towards the silhouette.
+                let t_error = t_error_flat + t_error_steep.div(root);
+                let uncertain_coverage = rest.abs() <= coverage_tolerance;
+                let uncertain_order =
+                    sphere_row[x] != NO_HIT && (t - t_row[x]).abs() <= t_error + error_row[x];
+                if uncertain_coverage || uncertain_order {
+                    decide_in_f64(discs, disc, grid, x, v, &mut t_row[x], &mut sphere_row[x]);
+                    if sphere_row[x] == disc.sphere {
+                        error_row[x] = R::ZERO;
                     }
-                    let closer = rest >= R::ZERO && t < t_row[x];
-                    if closer {
-                        t_row[x] = t;
-                        sphere_row[x] = disc.sphere;
-                        error_row[x] = t_error;
-                    }
+                    continue;
+                }
+                let closer = rest >= R::ZERO && t < t_row[x];
+                if closer {
+                    t_row[x] = t;
+                    sphere_row[x] = disc.sphere;
+                    error_row[x] = t_error;
                 }
             }
         }

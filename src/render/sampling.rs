@@ -17,7 +17,7 @@ use std::fmt;
 use glam::Vec3;
 use rayon::prelude::*;
 
-use super::disc::{Disc, nearest_hit};
+use super::disc::{Disc, nearest_hit, pixel_span};
 use crate::camera::PixelGrid;
 use crate::depth::{DepthRange, quantize_f32};
 use crate::generate::SplitMix64;
@@ -298,18 +298,18 @@ fn column_tiles(discs: &[Disc], grid: &PixelGrid) -> Vec<Vec<Disc>> {
     let width = grid.width_px as usize;
     let tile_count = width.div_ceil(TILE_COLUMNS).max(1);
     let mut tiles = vec![Vec::new(); tile_count];
-    let last_column = (width.max(1) - 1) as f64;
+    // Column x spans u in [u_of(x) − ½·s, u_of(x) + ½·s]: x = u / s + width/2 − ½.
+    let column_of = |u: f64| u / grid.pixel_size_world + 0.5 * f64::from(grid.width_px) - 0.5;
     for disc in discs {
         let radius = disc.radius_sq.sqrt();
-        // Column x spans u in [u_of(x) − ½·s, u_of(x) + ½·s]: x = u / s + width/2 − ½.
-        let column_of = |u: f64| u / grid.pixel_size_world + 0.5 * grid.width_px as f64 - 0.5;
-        let first = (column_of(disc.u - radius) - 1.0).floor().max(0.0);
-        let last = (column_of(disc.u + radius) + 1.0).ceil().min(last_column);
-        let on_the_image = first <= last; // false for NaN too
-        if !on_the_image {
-            continue;
-        }
-        for tile in &mut tiles[first as usize / TILE_COLUMNS..=last as usize / TILE_COLUMNS] {
+        let Some((first, last)) = pixel_span(
+            column_of(disc.u - radius),
+            column_of(disc.u + radius),
+            width.max(1) - 1,
+        ) else {
+            continue; // off the image, or NaN
+        };
+        for tile in &mut tiles[first / TILE_COLUMNS..=last / TILE_COLUMNS] {
             tile.push(*disc);
         }
     }

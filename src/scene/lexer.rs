@@ -34,9 +34,13 @@ impl<'a> Lexer<'a> {
         }
     }
 
-    /// Bytes consumed so far.
-    pub fn offset(&self) -> usize {
-        self.offset
+    /// Share of the text consumed so far, 0 to 1 (1 for an empty text).
+    pub fn share_consumed(&self) -> f64 {
+        if self.text.is_empty() {
+            1.0
+        } else {
+            self.offset as f64 / self.text.len() as f64
+        }
     }
 
     /// The location the next character would have (used for "end of file" errors).

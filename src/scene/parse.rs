@@ -96,9 +96,7 @@ pub(super) const SPHERES_PER_REPORT: usize = 16_384;
 /// [`parse_scene`], telling `progress` the share of the text parsed so far (0 to 1) every
 /// [`SPHERES_PER_REPORT`] spheres.
 pub fn parse_scene_with_progress(text: &str, progress: &dyn Fn(f64)) -> Result<Scene, ParseError> {
-    let mut parser = Parser::new(text);
-    parser.progress = progress;
-    parser.scene()
+    Parser::new(text, progress).scene()
 }
 
 /// A token as quoted in an error: escaped and shortened.
@@ -123,19 +121,16 @@ struct Parser<'a> {
     spheres: Vec<Sphere>,
     /// Told the share of the text parsed, every [`SPHERES_PER_REPORT`] spheres.
     progress: &'a dyn Fn(f64),
-    /// Length of the text in bytes (for progress).
-    text_len: usize,
 }
 
 impl<'a> Parser<'a> {
-    fn new(text: &'a str) -> Self {
+    fn new(text: &'a str, progress: &'a dyn Fn(f64)) -> Self {
         Self {
             lexer: Lexer::new(text),
             current_material: None,
             material_references: Vec::new(),
             spheres: Vec::new(),
-            progress: &|_| {},
-            text_len: text.len(),
+            progress,
         }
     }
 
@@ -463,7 +458,7 @@ impl<'a> Parser<'a> {
             material: self.current_material,
         });
         if self.spheres.len().is_multiple_of(SPHERES_PER_REPORT) {
-            (self.progress)(self.lexer.offset() as f64 / self.text_len.max(1) as f64);
+            (self.progress)(self.lexer.share_consumed());
         }
         Ok(())
     }
