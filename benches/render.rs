@@ -4,23 +4,24 @@
 //!
 //! * `course_2000x2000/<scene>`: each course scene at 2000×2000;
 //! * `generated_1024x1024/<binned|brute_force>/<spheres>`: seeded scenes of
-//!   [`raytracer::generate::random_scene`] with 10 to 1,000,000 spheres (brute force only up to
+//!   [`raytracer::oracle::random_scene`] with 10 to 1,000,000 spheres (brute force only up to
 //!   1,000: beyond, one frame takes minutes);
 //! * `parse/<spheres>`: the scene text of those scenes, in bytes per second.
 
 use std::hint::black_box;
 use std::path::Path;
 
+#[cfg(feature = "mimalloc")]
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use raytracer::depth::DepthRange;
 use raytracer::explore::initial_depth_range;
-use raytracer::generate::{random_scene, scene_to_text};
-use raytracer::render::reference::render_reference;
+use raytracer::oracle::ray_loop::render_reference;
+use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{View, render};
 use raytracer::scene::{Scene, load_scene, parse_scene};
+use raytracer::{oracle::random_scene, scene::scene_to_text};
 
 /// Sphere counts of the generated scenes.
 const GENERATED_COUNTS: [usize; 4] = [10, 1_000, 100_000, 1_000_000];

@@ -6,14 +6,15 @@ use std::hint::black_box;
 use std::path::Path;
 use std::sync::Arc;
 
+#[cfg(feature = "mimalloc")]
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use raytracer::app::job::{ViewerJob, prepare_frame};
-use raytracer::depth::DepthRange;
 use raytracer::explore::initial_depth_range;
 use raytracer::render::View;
+use raytracer::render::depth_map::DepthRange;
 use raytracer::scene::{Scene, load_scene};
 
 /// The viewer's job for a 1024×1024 view of `scene` through its own camera.
@@ -41,7 +42,7 @@ fn viewer_frame_1024x1024(c: &mut Criterion) {
         });
     }
     for count in [1_000usize, 100_000] {
-        let job = job_1024x1024(raytracer::generate::random_scene(1, count));
+        let job = job_1024x1024(raytracer::oracle::random_scene(1, count));
         group.bench_function(format!("generated_{count}"), |b| {
             b.iter(|| prepare_frame(black_box(&job)))
         });

@@ -17,11 +17,11 @@ use std::time::Instant;
 
 use glam::{DVec3, Vec3};
 use plotters::prelude::*;
-use raytracer::depth::DepthRange;
 use raytracer::explore::initial_depth_range;
-use raytracer::generate::random_scene;
-use raytracer::render::high_precision::HighPrecision;
-use raytracer::render::reference::render_textbook_f32;
+use raytracer::oracle::high_precision::HighPrecision;
+use raytracer::oracle::random_scene;
+use raytracer::oracle::ray_loop::render_textbook_f32;
+use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{Frame, Precision, Quality, View, render_with};
 use raytracer::scene::{Material, OrthographicCamera, Scene, Sphere, load_scene};
 
@@ -140,7 +140,7 @@ fn two_sphere_case(
 ) -> (Scene, View) {
     let direction = DVec3::new(-1.0, -0.7, -0.45).normalize();
     let up = DVec3::new(0.2, 1.0, 0.1);
-    let basis = raytracer::camera::CameraBasis::new(direction, up).expect("valid");
+    let basis = raytracer::geometry::camera::CameraBasis::new(direction, up).expect("valid");
     let scene = Scene {
         camera: OrthographicCamera {
             center_world: center - distance * direction

@@ -4,7 +4,7 @@
 //! cargo run --release --example generate -- 1000000 scenes/generated_1e6.txt [seed]
 //! ```
 //!
-//! The same (count, seed) always gives the same file; see `raytracer::generate::random_scene`.
+//! The same (count, seed) always gives the same file; see `raytracer::oracle::random_scene`.
 
 use std::process::ExitCode;
 
@@ -26,8 +26,8 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let text = raytracer::generate::scene_to_text(&raytracer::generate::random_scene(seed, count));
-    match raytracer::export::write_atomically(std::path::Path::new(path), text.as_bytes()) {
+    let text = raytracer::scene::scene_to_text(&raytracer::oracle::random_scene(seed, count));
+    match raytracer::output::write_atomically(std::path::Path::new(path), text.as_bytes()) {
         Ok(()) => {
             eprintln!(
                 "wrote {count} spheres (seed {seed}) to {path}, {} bytes",

@@ -13,17 +13,18 @@ use std::path::Path;
 use std::process::Command;
 use std::time::Instant;
 
+#[cfg(feature = "mimalloc")]
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 use plotters::prelude::*;
-use raytracer::depth::DepthRange;
 use raytracer::explore::initial_depth_range;
-use raytracer::export::{ImageFormat, encode};
-use raytracer::generate::{random_scene, scene_to_text};
-use raytracer::render::reference::render_reference;
+use raytracer::oracle::ray_loop::render_reference;
+use raytracer::output::{ImageFormat, encode};
+use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{View, render};
 use raytracer::scene::{Scene, parse_scene};
+use raytracer::{oracle::random_scene, scene::scene_to_text};
 
 fn median_ms(runs: usize, mut run: impl FnMut()) -> f64 {
     run(); // warm-up
@@ -285,7 +286,7 @@ fn report(course: &[Course], generated: &[Generated], peak_mb: f64) -> String {
     let _ = writeln!(md, "\n## Generated scenes at 1024×1024\n");
     let _ = writeln!(
         md,
-        "Seeded scenes of `raytracer::generate::random_scene` (`cargo run --release --example generate -- N FILE`). *viewer*: render + both textures, the viewer's work per frame.\n"
+        "Seeded scenes of `raytracer::oracle::random_scene` (`cargo run --release --example generate -- N FILE`). *viewer*: render + both textures, the viewer's work per frame.\n"
     );
     let _ = writeln!(
         md,

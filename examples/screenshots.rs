@@ -18,9 +18,9 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use raytracer::app::ViewerApp;
 use raytracer::cli::ViewerRequest;
-use raytracer::depth::DepthColourMap;
-use raytracer::depth_file::RawDepthFormat;
-use raytracer::reproduce::ExtraDepth;
+use raytracer::export::ExtraDepth;
+use raytracer::output::depth_file::RawDepthFormat;
+use raytracer::render::depth_map::DepthColourMap;
 
 type App = Harness<'static, ViewerApp>;
 

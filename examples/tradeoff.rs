@@ -14,9 +14,9 @@ use std::path::Path;
 use std::time::Instant;
 
 use plotters::prelude::*;
-use raytracer::depth::DepthRange;
 use raytracer::explore::initial_depth_range;
-use raytracer::generate::random_scene;
+use raytracer::oracle::random_scene;
+use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{Filter, Frame, Precision, Quality, Sampler, Sampling, View, render_with};
 use raytracer::scene::{Scene, load_scene};
 

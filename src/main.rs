@@ -6,6 +6,7 @@
 
 use std::process::ExitCode;
 
+#[cfg(feature = "mimalloc")]
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
@@ -30,7 +31,7 @@ fn main() -> ExitCode {
             print!("{}", usage());
             ExitCode::SUCCESS
         }
-        Command::Render(request) => match raytracer::headless::run(&request) {
+        Command::Render(request) => match raytracer::cli::run::run(&request) {
             Ok(report) => {
                 if request.stats {
                     print!("{}", report.stats_lines());

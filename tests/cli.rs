@@ -246,11 +246,11 @@ fn lossless_depth_files_hold_the_exact_t() {
         &scene.camera,
         40,
         30,
-        raytracer::depth::DepthRange::new(8.0, 12.0),
+        raytracer::render::depth_map::DepthRange::new(8.0, 12.0),
     );
     let frame = raytracer::render::render(&scene, &view).unwrap();
     for name in ["t.pfm", "t.exr"] {
-        let raw = raytracer::depth_file::read_raw_depth(&folder.path().join(name)).unwrap();
+        let raw = raytracer::output::depth_file::read_raw_depth(&folder.path().join(name)).unwrap();
         assert_eq!((raw.width_px, raw.height_px), (40, 30), "{name}");
         let mut hits = 0;
         // Both are top row first.

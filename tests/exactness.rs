@@ -18,13 +18,13 @@
 //! * auto mode: the same hit/miss, and grey values within 1/16 level (its rule for choosing f32).
 
 use glam::{DVec3, Vec3};
-use raytracer::depth::DepthRange;
 use raytracer::explore::initial_depth_range;
-use raytracer::generate::SplitMix64;
-use raytracer::intersect::{Ray, ray_sphere_nearest_t};
+use raytracer::geometry::ray_sphere::{Ray, ray_sphere_nearest_t};
+use raytracer::oracle::high_precision::HighPrecision;
+use raytracer::oracle::ray_loop::render_reference;
+use raytracer::render::depth_map::DepthRange;
 use raytracer::render::disc::{nearest_hit, project_discs};
-use raytracer::render::high_precision::HighPrecision;
-use raytracer::render::reference::render_reference;
+use raytracer::render::rng::SplitMix64;
 use raytracer::render::{Frame, NO_HIT, Precision, Quality, View, render, render_with};
 use raytracer::scene::{Material, OrthographicCamera, Scene, Sphere};
 
@@ -153,7 +153,7 @@ fn assert_exact(name: &str, scene: &Scene, view: &View) {
 fn camera_at(target: DVec3, distance: f64, size: f64, offset: (f64, f64)) -> OrthographicCamera {
     let direction = DVec3::new(-0.8, -0.5, -0.33);
     let up = DVec3::new(0.3, 1.7, 0.2);
-    let basis = raytracer::camera::CameraBasis::new(direction, up).unwrap();
+    let basis = raytracer::geometry::camera::CameraBasis::new(direction, up).unwrap();
     OrthographicCamera {
         center_world: target - distance * basis.direction
             + offset.0 * basis.horizontal
@@ -335,7 +335,7 @@ fn random_case(rng: &mut SplitMix64) -> (Scene, View) {
     };
     let up = DVec3::new(rng.uniform(-1.0, 1.0), 1.0, rng.uniform(-1.0, 1.0));
     let size = radius * rng.log_uniform(0.5, 8.0);
-    let basis = raytracer::camera::CameraBasis::new(direction, up).unwrap();
+    let basis = raytracer::geometry::camera::CameraBasis::new(direction, up).unwrap();
     let offset = radius * rng.uniform(-1.0, 1.0);
     let camera = OrthographicCamera {
         center_world: center - distance * basis.direction + offset * basis.horizontal,

@@ -6,8 +6,8 @@
 use std::path::Path;
 use std::time::{Duration, Instant};
 
-use raytracer::depth::DepthRange;
-use raytracer::generate::SplitMix64;
+use raytracer::render::depth_map::DepthRange;
+use raytracer::render::rng::SplitMix64;
 use raytracer::render::{Precision, Quality, View, render_with};
 use raytracer::scene::parse_scene_bytes;
 

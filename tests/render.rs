@@ -5,8 +5,8 @@
 use std::path::Path;
 
 use glam::{DVec3, Vec3};
-use raytracer::depth::DepthRange;
-use raytracer::render::reference::render_reference;
+use raytracer::oracle::ray_loop::render_reference;
+use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{Frame, NO_HIT, View, render};
 use raytracer::scene::{Material, OrthographicCamera, Scene, Sphere, load_scene};
 
@@ -165,7 +165,7 @@ fn binned_path_matches_brute_force_on_large_generated_scenes() {
     // must still hold every disc in file order. 40,000 spheres of ~1-pixel discs (many ties of
     // nearly equal depth) and 3,000 big overlapping ones, against the brute-force loop.
     for (count, side_px) in [(40_000usize, 160u32), (3_000, 120)] {
-        let scene = raytracer::generate::random_scene(11, count);
+        let scene = raytracer::oracle::random_scene(11, count);
         let view = view_of(&scene, side_px, side_px - 17);
         let fast = render(&scene, &view).unwrap();
         let oracle = render_reference(&scene, &view).unwrap();

@@ -5,7 +5,7 @@
 use std::path::Path;
 use std::process::Command;
 
-use raytracer::depth::DepthRange;
+use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{Filter, Frame, Quality, Sampler, Sampling, View, render, render_with};
 use raytracer::scene::{Scene, load_scene};
 

@@ -30,8 +30,8 @@ fn embedded_default_scene_parses() {
 fn loading_reports_progress_up_to_one() {
     use std::sync::Mutex;
     // A file of several read blocks, so reading reports more than once.
-    let scene = raytracer::generate::random_scene(7, 40_000);
-    let text = raytracer::generate::scene_to_text(&scene);
+    let scene = raytracer::oracle::random_scene(7, 40_000);
+    let text = raytracer::scene::scene_to_text(&scene);
     assert!(text.len() > 2 << 20, "{} bytes", text.len());
     let folder = tempfile::tempdir().unwrap();
     let path = folder.path().join("big.txt");

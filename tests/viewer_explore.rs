@@ -11,10 +11,10 @@ use glam::{DVec2, DVec3};
 use raytracer::app::ViewerApp;
 use raytracer::app::depth_tools::{MAX_HANDLE_LABEL, MIN_HANDLE_LABEL, histogram_axis};
 use raytracer::app::images::ORBIT_RAD_PER_POINT;
-use raytracer::depth::DepthRange;
-use raytracer::depth_tuning::visible_t;
-use raytracer::navigate;
-use raytracer::render::reference::render_reference;
+use raytracer::explore::depth_stats::visible_t;
+use raytracer::explore::navigate;
+use raytracer::oracle::ray_loop::render_reference;
+use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{NO_HIT, View};
 
 mod common;
@@ -456,9 +456,9 @@ fn export_writes_raw_depth_scene_and_command_and_save_view_writes_the_camera() {
     settle(&mut harness);
     {
         let settings = harness.state_mut().settings_mut();
-        settings.depth.colour_map = raytracer::depth::DepthColourMap::Viridis;
+        settings.depth.colour_map = raytracer::render::depth_map::DepthColourMap::Viridis;
         settings.export.extra_depth =
-            raytracer::reproduce::ExtraDepth::Raw(raytracer::depth_file::RawDepthFormat::Exr);
+            raytracer::export::ExtraDepth::Raw(raytracer::output::depth_file::RawDepthFormat::Exr);
         settings.export.path = folder.path().join("shot.png").display().to_string();
         settings.export.scene_path = folder.path().join("view.txt").display().to_string();
     }
@@ -471,7 +471,8 @@ fn export_writes_raw_depth_scene_and_command_and_save_view_writes_the_camera() {
         let (frame, view) = harness.state().shown_frame().unwrap();
         (frame.clone(), *view)
     };
-    let raw = raytracer::depth_file::read_raw_depth(&folder.path().join("shot_depth.exr")).unwrap();
+    let raw = raytracer::output::depth_file::read_raw_depth(&folder.path().join("shot_depth.exr"))
+        .unwrap();
     assert_eq!(raw.t.len(), frame.t.len());
     for (&got, &t) in raw.t.iter().zip(&frame.t) {
         assert!(got == t as f32 || (got.is_infinite() && t.is_infinite()));
@@ -483,7 +484,7 @@ fn export_writes_raw_depth_scene_and_command_and_save_view_writes_the_camera() {
         depth
             == frame.depth_image_mapped(
                 shown_view.depth_range,
-                raytracer::depth::DepthColourMap::Viridis,
+                raytracer::render::depth_map::DepthColourMap::Viridis,
                 [0, 0, 0]
             )
     );

@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 
 use egui::accesskit::Role;
 use egui_kittest::kittest::{NodeT, Queryable};
-use raytracer::generate::SplitMix64;
+use raytracer::render::rng::SplitMix64;
 
 mod common;
 

@@ -3,7 +3,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use raytracer::depth::DepthRange;
+use raytracer::render::depth_map::DepthRange;
 use raytracer::explore::initial_depth_range;
 use raytracer::render::{Precision, Quality, View, render_with};
 use raytracer::scene::parse_scene_bytes;

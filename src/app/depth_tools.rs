@@ -1,14 +1,14 @@
 //! Depth tuning in the viewer: the histogram of visible t under the depth image (the depth range
 //! drawn on it, its two ends draggable, a legend strip of the colour map below it) and the
 //! side-panel section with the colour map, the no-hit mark and "auto range". The statistics
-//! themselves are in [`crate::depth_tuning`].
+//! themselves are in [`crate::explore::depth_stats`].
 
 use egui::{Color32, CursorIcon, Pos2, Rect, RichText, Sense, Stroke, Ui, Vec2};
 
 use super::images::short_number;
 use super::state::DepthDisplay;
-use crate::depth::{DepthColourMap, DepthRange};
-use crate::depth_tuning::{DepthHistogram, MAX_PERCENTILE_CUT};
+use crate::explore::depth_stats::{DepthHistogram, MAX_PERCENTILE_CUT};
+use crate::render::depth_map::{DepthColourMap, DepthRange};
 
 /// Height of the histogram block (bars, legend strip and labels), in points.
 pub const HISTOGRAM_POINTS: f32 = 88.0;

@@ -1,15 +1,15 @@
 //! The central area: the colour and depth images side by side, and under them the pixel probe
 //! (left) and the depth histogram with its legend (right). Pointer input on either image comes
 //! back as [`ImageGestures`] in image pixels (y up), which the viewer turns into navigation (see
-//! [`crate::navigate`]); nothing here changes the view itself except the histogram's handles.
+//! [`crate::explore::navigate`]); nothing here changes the view itself except the histogram's handles.
 
 use egui::{Color32, PointerButton, Pos2, Rect, RichText, Sense, Stroke, TextureHandle, Ui, Vec2};
 use glam::DVec2;
 
 use super::depth_tools::{HISTOGRAM_POINTS, histogram_ui};
-use crate::depth::{DepthColourMap, DepthRange};
-use crate::depth_tuning::DepthHistogram;
+use crate::explore::depth_stats::DepthHistogram;
 use crate::render::MAX_SIDE_PX;
+use crate::render::depth_map::{DepthColourMap, DepthRange};
 
 /// Space between the two images, in points.
 const IMAGE_GAP_POINTS: f32 = 8.0;
@@ -60,7 +60,7 @@ pub struct Footer<'a> {
     pub no_hit_rgb: [u8; 3],
 }
 
-/// Pointer input on the images, in image pixels with y up (see [`crate::navigate`]).
+/// Pointer input on the images, in image pixels with y up (see [`crate::explore::navigate`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ImageGestures {
     /// Image size in physical pixels the area asks for.

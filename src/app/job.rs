@@ -7,8 +7,8 @@ use std::sync::Arc;
 use egui::{Color32, ColorImage};
 use rayon::prelude::*;
 
-use crate::depth::DepthColourMap;
-use crate::depth_tuning::DepthHistogram;
+use crate::explore::depth_stats::DepthHistogram;
+use crate::render::depth_map::DepthColourMap;
 use crate::render::worker::{RenderResult, RenderWorker};
 use crate::render::{Frame, Quality, View, ViewError, render_with};
 use crate::scene::Scene;

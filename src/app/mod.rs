@@ -11,8 +11,8 @@
 //! * [`reload`]: watching the open file for changes
 //! * [`loading`]: reading and parsing a scene file off the UI thread, with progress
 //!
-//! Navigation (mouse and keyboard) turns gestures into [`crate::navigate`] calls; the probe is
-//! [`crate::probe`]; exports go through [`crate::reproduce`].
+//! Navigation (mouse and keyboard) turns gestures into [`crate::explore::navigate`] calls; the probe is
+//! [`crate::explore::probe`]; exports go through [`crate::export`].
 
 pub mod depth_tools;
 pub mod dialogs;
@@ -40,12 +40,12 @@ use self::loading::{LoadKind, LoadState, PendingLoad};
 use self::panels::StatusLine;
 use self::state::{ExportFormat, LoadedScene, Settings};
 use crate::cli::ViewerRequest;
-use crate::depth_tuning::{DepthHistogram, auto_range};
-use crate::export::ImageFormat;
-use crate::navigate;
-use crate::probe::{Probe, probe};
+use crate::explore::depth_stats::{DepthHistogram, auto_range};
+use crate::explore::navigate;
+use crate::explore::probe::{Probe, probe};
+use crate::export::{ExportPlan, save_view_as_scene, write_export};
+use crate::output::ImageFormat;
 use crate::render::{Frame, Quality, View, check_image_size};
-use crate::reproduce::{ExportPlan, save_view_as_scene, write_export};
 
 /// Keyboard pan step, as a fraction of the image's shorter side.
 pub const KEY_PAN_FRACTION: f64 = 0.1;

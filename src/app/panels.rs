@@ -5,11 +5,11 @@
 use egui::{RichText, Ui};
 
 use super::state::{ExportFormat, ExportSettings};
-use crate::depth_file::RawDepthFormat;
 use crate::explore::SliderRanges;
+use crate::export::ExtraDepth;
+use crate::output::depth_file::RawDepthFormat;
 use crate::render::sampling::MAX_FILTER_SIZE;
 use crate::render::{Filter, MAX_SIDE_PX, Precision, Quality, Sampler, Sampling, View};
-use crate::reproduce::ExtraDepth;
 
 fn widened(range: &std::ops::RangeInclusive<f64>, value: f64) -> std::ops::RangeInclusive<f64> {
     if value.is_finite() {

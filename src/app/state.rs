@@ -4,10 +4,10 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use crate::depth::{DepthColourMap, NO_HIT_MARK};
 use crate::explore::{SliderRanges, initial_depth_range};
+use crate::export::ExtraDepth;
 use crate::render::View;
-use crate::reproduce::ExtraDepth;
+use crate::render::depth_map::{DepthColourMap, NO_HIT_MARK};
 use crate::scene::{LoadError, Scene, load_scene_with_progress, parse_scene};
 use crate::{DEFAULT_SCENE_NAME, DEFAULT_SCENE_TEXT};
 
@@ -144,7 +144,7 @@ impl LoadedScene {
             &scene.camera,
             size_px.0,
             size_px.1,
-            crate::depth::DepthRange::new(0.0, 1.0),
+            crate::render::depth_map::DepthRange::new(0.0, 1.0),
         );
         file_view.depth_range = initial_depth_range(&scene, &file_view);
         Self {

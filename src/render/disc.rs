@@ -20,8 +20,8 @@ use std::ops::{Add, Mul, Sub};
 use rayon::prelude::*;
 
 use super::{Frame, NO_HIT, Precision, View, ViewError};
-use crate::camera::{CameraBasis, PixelGrid};
-use crate::depth::quantize_f32;
+use crate::geometry::camera::{CameraBasis, PixelGrid};
+use crate::render::depth_map::quantize_f32;
 use crate::scene::Scene;
 
 /// Rows per band: the unit of binning and of parallel work.
@@ -609,7 +609,7 @@ mod tests {
 
     #[test]
     fn pixel_spans_hold_every_index_within_a_pixel_of_the_range() {
-        let mut rng = crate::generate::SplitMix64::new(5);
+        let mut rng = crate::render::rng::SplitMix64::new(5);
         let max_index = 99usize;
         for case in 0..100_000 {
             let centre = rng.uniform(-110.0, 210.0);

@@ -4,7 +4,7 @@
 use image::RgbImage;
 use rayon::prelude::*;
 
-use crate::depth::{DepthColourMap, DepthRange};
+use crate::render::depth_map::{DepthColourMap, DepthRange};
 
 /// Sphere index of pixels that no sphere covers.
 pub const NO_HIT: u32 = u32::MAX;
@@ -77,7 +77,7 @@ impl Frame {
                 let t = self.t[index];
                 match filtered {
                     Some(grey) if map == DepthColourMap::Grey && no_hit == [0; 3] => {
-                        [crate::depth::quantize_f32(grey[index]); 3]
+                        [crate::render::depth_map::quantize_f32(grey[index]); 3]
                     }
                     Some(_) | None if t == f64::INFINITY || t.is_nan() => no_hit,
                     Some(grey) => map.rgb_of_grey(f64::from(grey[index])),

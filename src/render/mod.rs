@@ -6,15 +6,16 @@
 //!   screen point lies in the disc, and t follows from the disc's depth. Bands of rows run in
 //!   parallel.
 //! * [`precision`]: f64 / f32 / auto, and when f32 is safe.
-//! * [`reference`]: the oracle — one world-space ray per pixel against every sphere through the
-//!   careful ray–sphere routine of [`crate::intersect`], single-threaded. Tests compare against it.
+//! * [`sampling`]: supersampling with the course's samplers and filters.
+//! * [`depth_map`]: t → grey and colour maps, 8- and 16-bit quantisation.
+//! * [`rng`]: the seeded generator behind random sample positions.
 //! * [`worker`]: a background worker for interactive use.
 
+pub mod depth_map;
 pub mod disc;
 mod frame;
-pub mod high_precision;
 pub mod precision;
-pub mod reference;
+pub mod rng;
 pub mod sampling;
 mod view;
 pub mod worker;

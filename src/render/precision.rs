@@ -18,8 +18,8 @@ use std::fmt;
 use std::str::FromStr;
 
 use super::disc::Disc;
-use crate::camera::PixelGrid;
-use crate::depth::DepthRange;
+use crate::geometry::camera::PixelGrid;
+use crate::render::depth_map::DepthRange;
 
 /// Per-pixel arithmetic precision.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]

@@ -18,9 +18,9 @@ use glam::Vec3;
 use rayon::prelude::*;
 
 use super::disc::{Disc, nearest_hit, pixel_span};
-use crate::camera::PixelGrid;
-use crate::depth::{DepthRange, quantize_f32};
-use crate::generate::SplitMix64;
+use crate::geometry::camera::PixelGrid;
+use crate::render::depth_map::{DepthRange, quantize_f32};
+use crate::render::rng::SplitMix64;
 use crate::scene::Scene;
 
 /// How sample positions are placed in a pixel.

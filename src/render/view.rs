@@ -3,8 +3,8 @@
 
 use glam::DVec3;
 
-use crate::camera::{CameraBasis, CameraError, PixelGrid};
-use crate::depth::DepthRange;
+use crate::geometry::camera::{CameraBasis, CameraError, PixelGrid};
+use crate::render::depth_map::DepthRange;
 use crate::scene::OrthographicCamera;
 
 /// Largest accepted image side, in pixels.
@@ -63,7 +63,6 @@ pub fn check_image_size(width_px: u32, height_px: u32) -> Result<(), ViewError> 
 
 /// A camera placement plus an image size and a depth range.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "gui", derive(serde::Serialize, serde::Deserialize))]
 pub struct View {
     /// World point the screen is centred on.
     pub center_world: DVec3,

@@ -201,7 +201,7 @@ fn worker_loop<J: Clone, T>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::depth::DepthRange;
+    use crate::render::depth_map::DepthRange;
     use crate::render::{Frame, View, ViewError, render};
     use crate::scene::{Scene, parse_scene};
     use std::sync::atomic::{AtomicUsize, Ordering};

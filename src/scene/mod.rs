@@ -1,5 +1,6 @@
 //! Scenes: the plain data model ([`Scene`]), the parser of the 6.837 assignment-1 text format
-//! ([`parse_scene`], [`load_scene`]) and its typed errors.
+//! ([`parse_scene`], [`load_scene`]) and its typed errors, and the writer back to text
+//! ([`scene_to_text`]).
 
 mod error;
 mod lexer;
@@ -7,6 +8,7 @@ mod model;
 mod parse;
 #[cfg(test)]
 mod parse_tests;
+mod writer;
 
 pub use error::{Location, ParseError, ParseErrorKind};
 pub use lexer::{Lexer, Token};
@@ -17,6 +19,7 @@ pub use parse::{
     MAX_GROUP_DEPTH, MAX_MAGNITUDE, parse_scene, parse_scene_bytes,
     parse_scene_bytes_with_progress, parse_scene_with_progress,
 };
+pub use writer::scene_to_text;
 
 use std::path::Path;
 

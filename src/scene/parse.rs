@@ -10,7 +10,7 @@ use glam::{DVec3, Vec3};
 use super::error::{Location, ParseError, ParseErrorKind};
 use super::lexer::{Lexer, Token};
 use super::model::{DEFAULT_BACKGROUND, Material, OrthographicCamera, Scene, Sphere};
-use crate::camera::{CameraBasis, CameraError};
+use crate::geometry::camera::{CameraBasis, CameraError};
 
 /// Largest magnitude of a coordinate, radius or size: squares and sums of squares of such numbers
 /// stay finite in f64, so no input can drive the arithmetic to infinity or NaN.

@@ -17,7 +17,6 @@
 
 /// The range of t mapped onto the grey ramp.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "gui", derive(serde::Serialize, serde::Deserialize))]
 pub struct DepthRange {
     /// t shown white.
     pub min_t: f64,

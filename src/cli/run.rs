@@ -4,12 +4,14 @@ use std::path::Path;
 use std::time::{Duration, Instant};
 
 use crate::cli::RenderRequest;
-use crate::depth::DepthRange;
-use crate::depth_file::{write_depth_png16, write_raw_depth};
-use crate::export::{ExportError, check_writable, check_writable_raw, write_image};
+use crate::cli::progress::StepProgress;
+use crate::output::WriteError;
+use crate::output::depth_file::check_writable_raw;
+use crate::output::depth_file::{write_depth_png16, write_raw_depth};
+use crate::output::image_file::{check_writable, write_image};
+use crate::render::depth_map::DepthRange;
 use crate::render::{View, ViewError, render_with_progress};
 use crate::scene::{LoadError, Scene, load_scene_with_progress};
-use crate::terminal_progress::StepProgress;
 
 /// Why a headless render failed (the program exits with status 1).
 #[derive(Debug, thiserror::Error)]
@@ -22,7 +24,7 @@ pub enum RunError {
     View(#[from] ViewError),
     /// An image could not be written.
     #[error(transparent)]
-    Export(#[from] ExportError),
+    Write(#[from] WriteError),
 }
 
 /// What a headless render did, with its timings.

@@ -83,13 +83,13 @@ pub fn probe(scene: &Scene, view: &View, frame: &Frame, x_px: u32, y_up_px: u32)
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::depth::DepthRange;
+    use crate::render::depth_map::DepthRange;
     use crate::render::render;
     use crate::scene::parse_scene;
 
     #[test]
     fn probe_reports_the_sphere_and_a_point_on_it() {
-        let scene = parse_scene(include_str!("../scenes/scene1_02.txt")).unwrap();
+        let scene = parse_scene(include_str!("../../scenes/scene1_02.txt")).unwrap();
         let view = View::of_camera(&scene.camera, 200, 200, DepthRange::new(8.0, 12.0));
         let frame = render(&scene, &view).unwrap();
         let mut hits = 0;

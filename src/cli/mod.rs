@@ -6,13 +6,16 @@
 //! `-output FILE`, `-depth DMIN DMAX FILE`); no argument-parsing crate handles multi-value
 //! single-dash flags in that style, so this is written by hand.
 
+pub mod progress;
+pub mod run;
+
 use std::collections::BTreeMap;
 use std::ffi::OsString;
 use std::path::PathBuf;
 
-use crate::depth::{DepthColourMap, DepthRange};
-use crate::depth_file::RawDepthFormat;
-use crate::export::ImageFormat;
+use crate::output::ImageFormat;
+use crate::output::depth_file::RawDepthFormat;
+use crate::render::depth_map::{DepthColourMap, DepthRange};
 use crate::render::sampling::SamplingError;
 use crate::render::{
     Filter, MAX_PIXELS, MAX_SIDE_PX, Precision, Quality, Sampler, Sampling, check_image_size,

@@ -6,9 +6,9 @@ use std::ops::RangeInclusive;
 
 use glam::DVec3;
 
-use crate::camera::CameraBasis;
-use crate::depth::DepthRange;
+use crate::geometry::camera::CameraBasis;
 use crate::render::View;
+use crate::render::depth_map::DepthRange;
 use crate::scene::{Bounds, MAX_MAGNITUDE, Scene};
 
 /// The box the viewer explores: the spheres' bounds, or a unit box around the camera centre for

@@ -9,7 +9,7 @@
 
 use twofloat::TwoFloat;
 
-use super::{View, ViewError};
+use crate::render::{View, ViewError};
 use crate::scene::Scene;
 
 type Dd = TwoFloat;

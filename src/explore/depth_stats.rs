@@ -7,8 +7,8 @@
 
 use rayon::prelude::*;
 
-use crate::depth::DepthRange;
 use crate::render::Frame;
+use crate::render::depth_map::DepthRange;
 
 /// Pixels per parallel task when counting the histogram.
 const PIXELS_PER_TASK: usize = 1 << 16;

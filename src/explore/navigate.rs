@@ -4,14 +4,14 @@
 //!
 //! Positions on the image are given in **image pixels with y up** (`(0, 0)` the bottom-left
 //! corner of the image, `(W, H)` the top-right), so they map directly to the camera's screen
-//! coordinates through [`crate::camera::PixelGrid`]. Every function returns the view unchanged
+//! coordinates through [`crate::geometry::camera::PixelGrid`]. Every function returns the view unchanged
 //! when the input view cannot be rendered (no basis) or the request is not a finite number, so a
 //! stray event can never turn a good view into NaN.
 
 use glam::{DQuat, DVec2, DVec3};
 
-use crate::camera::CameraBasis;
 use crate::explore::scene_extent;
+use crate::geometry::camera::CameraBasis;
 use crate::render::View;
 use crate::scene::{MAX_MAGNITUDE, Scene};
 
@@ -156,12 +156,12 @@ pub fn basis_of(view: &View) -> Option<CameraBasis> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::depth::DepthRange;
+    use crate::render::depth_map::DepthRange;
     use crate::render::render;
     use crate::scene::parse_scene;
 
     fn scene() -> Scene {
-        parse_scene(include_str!("../scenes/scene1_02.txt")).unwrap()
+        parse_scene(include_str!("../../scenes/scene1_02.txt")).unwrap()
     }
 
     fn view(scene: &Scene) -> View {

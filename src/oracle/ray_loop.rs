@@ -1,10 +1,10 @@
 //! The oracle: the straightforward per-pixel loop over all spheres, one world-space ray per pixel
-//! through [`crate::intersect::ray_sphere_nearest_t`], single-threaded. Slow and obviously right;
+//! through [`crate::geometry::ray_sphere::ray_sphere_nearest_t`], single-threaded. Slow and obviously right;
 //! the fast path is tested and benchmarked against it.
 
-use super::disc::frame_from_hits;
-use super::{Frame, NO_HIT, View, ViewError};
-use crate::intersect::{Ray, ray_sphere_nearest_t, textbook_nearest_t_f32};
+use crate::geometry::ray_sphere::{Ray, ray_sphere_nearest_t, textbook_nearest_t_f32};
+use crate::render::disc::frame_from_hits;
+use crate::render::{Frame, NO_HIT, Precision, View, ViewError};
 use crate::scene::Scene;
 
 /// Renders `scene` through `view` ray by ray (see the module docs).
@@ -35,17 +35,11 @@ pub fn render_reference(scene: &Scene, view: &View) -> Result<Frame, ViewError> 
             sphere.push(best.1);
         }
     }
-    Ok(frame_from_hits(
-        scene,
-        view,
-        t,
-        sphere,
-        super::Precision::F64,
-    ))
+    Ok(frame_from_hits(scene, view, t, sphere, Precision::F64))
 }
 
 /// The error study's baseline: world-space rays in f32 through the textbook `b² − 4ac`
-/// ([`crate::intersect::textbook_nearest_t_f32`]), the way a first ray tracer is written. Not a
+/// ([`crate::geometry::ray_sphere::textbook_nearest_t_f32`]), the way a first ray tracer is written. Not a
 /// rendering mode; it shows what the camera-relative disc path avoids.
 pub fn render_textbook_f32(scene: &Scene, view: &View) -> Result<Frame, ViewError> {
     let basis = view.validate()?;
@@ -83,11 +77,5 @@ pub fn render_textbook_f32(scene: &Scene, view: &View) -> Result<Frame, ViewErro
             sphere.push(best.1);
         }
     }
-    Ok(frame_from_hits(
-        scene,
-        view,
-        t,
-        sphere,
-        super::Precision::F32,
-    ))
+    Ok(frame_from_hits(scene, view, t, sphere, Precision::F32))
 }

@@ -15,12 +15,48 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::depth::DepthColourMap;
-use crate::depth_file::{RawDepthFormat, write_depth_png16, write_raw_depth};
-use crate::export::{ExportError, ExportPaths, ImageFormat, write_atomically, write_image};
-use crate::generate::scene_to_text;
+use crate::output::depth_file::{RawDepthFormat, write_depth_png16, write_raw_depth};
+use crate::output::{ImageFormat, WriteError, write_atomically, write_image};
+use crate::render::depth_map::DepthColourMap;
 use crate::render::{Filter, Frame, Quality, View};
-use crate::scene::{OrthographicCamera, Scene};
+use crate::scene::{OrthographicCamera, Scene, scene_to_text};
+
+/// The files one export writes, derived from a base path `dir/stem.ext`:
+/// `dir/stem_colour.ext`, `dir/stem_depth.ext` and (optionally) `dir/stem_both.ext`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ExportPaths {
+    /// Colour image.
+    pub colour: PathBuf,
+    /// Depth image.
+    pub depth: PathBuf,
+    /// Colour and depth side by side.
+    pub side_by_side: PathBuf,
+}
+
+impl ExportPaths {
+    /// Paths for base `path`; `format` applies when the path's extension names no format.
+    pub fn new(path: &Path, format: ImageFormat) -> Self {
+        let format = ImageFormat::from_path(path).unwrap_or(format);
+        let extension = match format {
+            ImageFormat::Tga => "tga",
+            ImageFormat::Png => "png",
+        };
+        let has_format = ImageFormat::from_path(path).is_ok();
+        let stem = if has_format {
+            path.file_stem()
+        } else {
+            path.file_name()
+        }
+        .map_or_else(|| "raytracer".into(), |s| s.to_string_lossy().into_owned());
+        let with_suffix =
+            |suffix: &str| path.with_file_name(format!("{stem}_{suffix}.{extension}"));
+        Self {
+            colour: with_suffix("colour"),
+            depth: with_suffix("depth"),
+            side_by_side: with_suffix("both"),
+        }
+    }
+}
 
 /// Extra depth output of an export, besides the 8-bit depth image.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -107,7 +143,7 @@ pub fn scene_with_view(scene: &Scene, view: &View) -> Scene {
 
 /// "Save view as scene": writes `scene` with `view`'s camera to `path` (atomically), numbers in
 /// Rust's shortest round-trip form so parsing it gives exactly this camera back.
-pub fn save_view_as_scene(scene: &Scene, view: &View, path: &Path) -> Result<(), ExportError> {
+pub fn save_view_as_scene(scene: &Scene, view: &View, path: &Path) -> Result<(), WriteError> {
     write_atomically(
         path,
         scene_to_text(&scene_with_view(scene, view)).as_bytes(),
@@ -206,7 +242,7 @@ pub fn write_export(
     quality: &Quality,
     frame: &Frame,
     plan: &ExportPlan,
-) -> Result<Vec<PathBuf>, ExportError> {
+) -> Result<Vec<PathBuf>, WriteError> {
     let files = ExportFiles::of(plan);
     let range = view.depth_range;
     let map = plan.colour_map;
@@ -262,9 +298,21 @@ fn set_executable(path: &Path) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::depth::DepthRange;
+    use crate::render::depth_map::DepthRange;
     use crate::render::{Precision, Sampler, Sampling, render_with};
     use crate::scene::{load_scene, parse_scene};
+
+    #[test]
+    fn export_paths_add_suffixes_and_keep_the_folder() {
+        let paths = ExportPaths::new(Path::new("shots/view.tga"), ImageFormat::Png);
+        assert_eq!(paths.colour, Path::new("shots/view_colour.tga"));
+        assert_eq!(paths.depth, Path::new("shots/view_depth.tga"));
+        assert_eq!(paths.side_by_side, Path::new("shots/view_both.tga"));
+        let paths = ExportPaths::new(Path::new("view"), ImageFormat::Png);
+        assert_eq!(paths.colour, Path::new("view_colour.png"));
+        let paths = ExportPaths::new(Path::new("view.v2"), ImageFormat::Tga);
+        assert_eq!(paths.depth, Path::new("view.v2_depth.tga"));
+    }
 
     #[test]
     fn shell_quoting() {
@@ -277,7 +325,7 @@ mod tests {
 
     #[test]
     fn saved_view_parses_back_to_the_same_camera() {
-        let scene = parse_scene(include_str!("../scenes/scene1_03.txt")).unwrap();
+        let scene = parse_scene(include_str!("../../scenes/scene1_03.txt")).unwrap();
         let mut view = View::of_camera(&scene.camera, 10, 10, DepthRange::new(0.0, 1.0));
         view.center_world += glam::DVec3::new(0.1, 1.0 / 3.0, -7e-9);
         view.size_world = std::f64::consts::PI;
@@ -307,7 +355,7 @@ mod tests {
             files.depth_raw.as_deref(),
             Some(Path::new("shots/my view_depth.exr"))
         );
-        let scene = parse_scene(include_str!("../scenes/scene1_01.txt")).unwrap();
+        let scene = parse_scene(include_str!("../../scenes/scene1_01.txt")).unwrap();
         let view = View::of_camera(&scene.camera, 64, 48, DepthRange::new(9.0, 10.5));
         let quality = Quality {
             precision: Precision::Auto,
@@ -342,7 +390,7 @@ mod tests {
 
     #[test]
     fn export_writes_every_file_and_the_command_reproduces_them() {
-        let scene = parse_scene(include_str!("../scenes/scene1_02.txt")).unwrap();
+        let scene = parse_scene(include_str!("../../scenes/scene1_02.txt")).unwrap();
         let mut view = View::of_camera(&scene.camera, 48, 32, DepthRange::new(8.5, 11.0));
         view.center_world.x += 0.37;
         let quality = Quality::default();
@@ -389,7 +437,7 @@ mod tests {
             else {
                 panic!("a render command");
             };
-            crate::headless::run(&request).unwrap();
+            crate::cli::run::run(&request).unwrap();
             for path in [&files.images.colour, &files.images.depth]
                 .into_iter()
                 .chain(files.depth_raw.as_ref())

@@ -3,14 +3,14 @@
 //! says) or single-channel OpenEXR (`.exr`, channel `Z`, top row first, lossless ZIP compression),
 //! with `+∞` where no ray hits; and the depth image as a 16-bit grey PNG mapped over a depth range.
 //! Readers for both float formats come along (the tests read the files back; users' scripts can
-//! too). Every write is atomic ([`crate::export::write_atomically`]).
+//! too). Every write is atomic ([`super::atomic`]).
 
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
-use crate::depth::{DepthRange, quantize_u16};
-use crate::export::{ExportError, write_atomically};
+use super::atomic::{WriteError, check_folder_writable, write_atomically};
 use crate::render::Frame;
+use crate::render::depth_map::{DepthRange, quantize_u16};
 
 /// Lossless depth formats.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -215,21 +215,33 @@ pub fn decode_exr(bytes: &[u8]) -> Result<RawDepth, String> {
 }
 
 /// Writes `frame`'s raw t to `path` as PFM or OpenEXR, chosen by the extension.
-pub fn write_raw_depth(frame: &Frame, path: &Path) -> Result<(), ExportError> {
-    let format = RawDepthFormat::from_path(path).ok_or_else(|| ExportError::UnknownFormat {
+pub fn write_raw_depth(frame: &Frame, path: &Path) -> Result<(), WriteError> {
+    let format = RawDepthFormat::from_path(path).ok_or_else(|| WriteError::UnknownFormat {
         path: path.to_path_buf(),
+        expected: RawDepthFormat::EXTENSIONS,
     })?;
     let t = t_as_f32(frame);
     let bytes = match format {
         RawDepthFormat::Pfm => encode_pfm(frame.width_px, frame.height_px, &t),
         RawDepthFormat::Exr => {
-            encode_exr(frame.width_px, frame.height_px, &t).map_err(|e| ExportError::Encode {
+            encode_exr(frame.width_px, frame.height_px, &t).map_err(|e| WriteError::Encode {
                 path: path.to_path_buf(),
                 source: image::ImageError::IoError(std::io::Error::other(e.to_string())),
             })?
         }
     };
     write_atomically(path, &bytes)
+}
+
+/// Checks, without touching `path`, that a raw depth file (`.pfm`, `.exr`) could be written there.
+pub fn check_writable_raw(path: &Path) -> Result<(), WriteError> {
+    if RawDepthFormat::from_path(path).is_none() {
+        return Err(WriteError::UnknownFormat {
+            path: path.to_path_buf(),
+            expected: RawDepthFormat::EXTENSIONS,
+        });
+    }
+    check_folder_writable(path)
 }
 
 /// Reads a PFM or OpenEXR depth file written by [`write_raw_depth`].
@@ -268,20 +280,21 @@ pub fn depth_image_u16(
 }
 
 /// Writes the 16-bit grey PNG of `frame`'s depth over `range` to `path` (must end in `.png`).
-pub fn write_depth_png16(frame: &Frame, range: DepthRange, path: &Path) -> Result<(), ExportError> {
+pub fn write_depth_png16(frame: &Frame, range: DepthRange, path: &Path) -> Result<(), WriteError> {
     let is_png = path
         .extension()
         .and_then(|e| e.to_str())
         .is_some_and(|e| e.eq_ignore_ascii_case("png"));
     if !is_png {
-        return Err(ExportError::UnknownFormat {
+        return Err(WriteError::UnknownFormat {
             path: path.to_path_buf(),
+            expected: ".png",
         });
     }
     let mut bytes = Vec::new();
     image::DynamicImage::ImageLuma16(depth_image_u16(frame, range))
         .write_to(&mut Cursor::new(&mut bytes), image::ImageFormat::Png)
-        .map_err(|source| ExportError::Encode {
+        .map_err(|source| WriteError::Encode {
             path: path.to_path_buf(),
             source,
         })?;
@@ -340,7 +353,7 @@ mod tests {
         }
         assert!(matches!(
             write_raw_depth(&frame, &folder.path().join("depth.png")),
-            Err(ExportError::UnknownFormat { .. })
+            Err(WriteError::UnknownFormat { .. })
         ));
     }
 

@@ -1,0 +1,13 @@
+//! Exploring a scene: the math behind the viewer's controls, free of any UI.
+//!
+//! * [`ranges`]: slider ranges and depth ranges derived from a scene
+//! * [`navigate`]: pan, zoom at a point, orbit and "frame all" as math on a view
+//! * [`depth_stats`]: the histogram of visible t and the auto depth range
+//! * [`probe`]: what one pixel of a frame shows (position, t, sphere, material)
+
+pub mod depth_stats;
+pub mod navigate;
+pub mod probe;
+pub mod ranges;
+
+pub use ranges::{SliderRanges, initial_depth_range, scene_extent, visible_depth_range};

@@ -1,0 +1,11 @@
+//! Writing files: atomic writes ([`atomic`]), 8-bit image files chosen by extension
+//! ([`image_file`]), and lossless depth files (PFM, OpenEXR) and 16-bit depth PNGs
+//! ([`depth_file`]). Nothing here knows about the command line or the viewer.
+
+pub mod atomic;
+pub mod depth_file;
+pub mod image_file;
+
+pub use atomic::{WriteError, write_atomically};
+pub use depth_file::{RawDepthFormat, read_raw_depth};
+pub use image_file::{ImageFormat, encode, write_image};
