@@ -10,17 +10,14 @@ use std::process::ExitCode;
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
-use raytracer::cli::{Command, UsageError, parse_command, usage};
+use raytracer::cli::{Command, parse_command, usage};
 
 fn main() -> ExitCode {
     let command = match parse_command(std::env::args_os().skip(1)) {
         Ok(command) => command,
         Err(error) => {
             eprintln!("raytracer: {error}");
-            if matches!(
-                error,
-                UsageError::UnknownFlag(_) | UsageError::StrayArgument(_)
-            ) {
+            if error.wants_usage() {
                 eprint!("\n{}", usage());
             }
             return ExitCode::from(2);

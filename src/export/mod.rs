@@ -13,13 +13,17 @@
 //!   colour and depth files, byte for byte (same size, depth range, colour map, precision and
 //!   supersampling flags). It `cd`s to its own folder, so it runs from anywhere.
 
+mod command;
+
 use std::path::{Path, PathBuf};
 
 use crate::output::depth_file::{RawDepthFormat, write_depth_png16, write_raw_depth};
 use crate::output::{ImageFormat, WriteError, write_atomically, write_image};
 use crate::render::depth_map::DepthColourMap;
-use crate::render::{Filter, Frame, Quality, View};
+use crate::render::{Frame, Quality, View};
+
 use crate::scene::{OrthographicCamera, Scene, scene_to_text};
+pub use command::{command_arguments, command_script, export_request, shell_quote};
 
 /// The files one export writes, derived from a base path `dir/stem.ext`:
 /// `dir/stem_colour.ext`, `dir/stem_depth.ext` and (optionally) `dir/stem_both.ext`.
@@ -150,89 +154,6 @@ pub fn save_view_as_scene(scene: &Scene, view: &View, path: &Path) -> Result<(),
     )
 }
 
-/// The command-line arguments (after the program name) that render `files.scene` into the same
-/// colour and depth files as the export, file names relative to the export's folder.
-pub fn command_arguments(
-    plan: &ExportPlan,
-    files: &ExportFiles,
-    view: &View,
-    quality: &Quality,
-) -> Vec<String> {
-    let name = |path: &Path| {
-        path.file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default()
-    };
-    let range = view.depth_range;
-    let mut arguments: Vec<String> = vec![
-        "-input".into(),
-        name(&files.scene),
-        "-size".into(),
-        view.width_px.to_string(),
-        view.height_px.to_string(),
-        "-output".into(),
-        name(&files.images.colour),
-        "-depth".into(),
-        range.min_t.to_string(),
-        range.max_t.to_string(),
-        name(&files.images.depth),
-    ];
-    if plan.colour_map != DepthColourMap::Grey {
-        arguments.extend(["-depth_colormap".into(), plan.colour_map.name().into()]);
-    }
-    match (plan.extra_depth, &files.depth_raw) {
-        (ExtraDepth::Png16, _) => arguments.extend([
-            "-depth16".into(),
-            range.min_t.to_string(),
-            range.max_t.to_string(),
-            name(&files.depth16),
-        ]),
-        (ExtraDepth::Raw(_), Some(path)) => {
-            arguments.extend(["-depth_raw".into(), name(path)]);
-        }
-        _ => {}
-    }
-    if quality.precision != crate::render::Precision::F64 {
-        arguments.extend(["-precision".into(), quality.precision.name().into()]);
-    }
-    if let Some(sampling) = quality.sampling {
-        arguments.extend([
-            format!("-{}_samples", sampling.sampler.name()),
-            sampling.samples.to_string(),
-        ]);
-        if sampling.filter != Filter::PIXEL_BOX {
-            arguments.extend([
-                format!("-{}_filter", sampling.filter.name()),
-                sampling.filter.size().to_string(),
-            ]);
-        }
-    }
-    arguments
-}
-
-/// Quotes a word for a POSIX shell (single quotes; words of safe characters stay bare).
-pub fn shell_quote(word: &str) -> String {
-    let safe = !word.is_empty()
-        && word
-            .chars()
-            .all(|c| c.is_ascii_alphanumeric() || "-_.,/+=:".contains(c));
-    if safe {
-        word.to_owned()
-    } else {
-        format!("'{}'", word.replace('\'', r"'\''"))
-    }
-}
-
-/// The `name_command.sh` text for `arguments`.
-pub fn command_script(arguments: &[String]) -> String {
-    let words: Vec<String> = arguments.iter().map(|a| shell_quote(a)).collect();
-    format!(
-        "#!/bin/sh\n# Renders this export's colour and depth images again from its scene file.\n\
-         cd \"$(dirname \"$0\")\" || exit 1\nexec raytracer {}\n",
-        words.join(" ")
-    )
-}
-
 /// Writes every file of `plan` for `frame`, rendered from `scene` through `view` at `quality`.
 /// Returns the paths written. Each file is written atomically; the first failure stops the export
 /// and is returned (files already written stay, each complete).
@@ -299,7 +220,7 @@ fn set_executable(path: &Path) {
 mod tests {
     use super::*;
     use crate::render::depth_map::DepthRange;
-    use crate::render::{Precision, Sampler, Sampling, render_with};
+    use crate::render::{Filter, Precision, Sampler, Sampling, render_with};
     use crate::scene::{load_scene, parse_scene};
 
     #[test]

@@ -1,0 +1,99 @@
+//! [`UsageError`]: a command-line mistake; the program prints it and exits with status 2. Flags
+//! are named through [`Flag`], so the messages follow the flag table.
+
+use super::flags::Flag;
+use crate::output::{ImageFormat, RawDepthFormat};
+use crate::render::sampling::SamplingError;
+use crate::render::{MAX_PIXELS, MAX_SIDE_PX};
+
+/// A command-line mistake.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum UsageError {
+    /// A flag the program does not know.
+    #[error("unknown flag '{0}' (raytracer {help} lists the flags)", help = Flag::Help)]
+    UnknownFlag(String),
+    /// A word that is not a flag where a flag was expected.
+    #[error(
+        "unexpected argument '{0}': expected a flag such as {input} (raytracer {help} lists them)",
+        input = Flag::Input,
+        help = Flag::Help
+    )]
+    StrayArgument(String),
+    /// A flag given twice.
+    #[error("flag {0} is given twice")]
+    Repeated(Flag),
+    /// Too few values after a flag.
+    #[error("flag {0} needs {n} value(s): {synopsis}", n = .0.arity(), synopsis = .0.synopsis())]
+    MissingValue(Flag),
+    /// A value that should be a number is not one.
+    #[error("{flag}: expected {what}, found '{found}'")]
+    BadNumber {
+        /// The flag.
+        flag: Flag,
+        /// What kind of number.
+        what: &'static str,
+        /// The value as given.
+        found: String,
+    },
+    /// An image size outside the supported range.
+    #[error(
+        "{flag}: {width_px}×{height_px} is out of range: each side 1..={MAX_SIDE_PX}, \
+         at most {MAX_PIXELS} pixels in all",
+        flag = Flag::Size
+    )]
+    BadSize {
+        /// Requested width.
+        width_px: u64,
+        /// Requested height.
+        height_px: u64,
+    },
+    /// An output whose extension names no format the flag writes.
+    #[error("{flag}: '{path}' has an unknown format; use one of {}", extensions_of(*flag))]
+    UnknownFormat {
+        /// The flag.
+        flag: Flag,
+        /// The path as given.
+        path: String,
+    },
+    /// Two outputs name the same file.
+    #[error("two outputs name the same file '{0}'")]
+    SameOutput(String),
+    /// A depth colour map that does not exist.
+    #[error("{flag}: expected grey, turbo or viridis, found '{0}'", flag = Flag::DepthColourMap)]
+    BadColourMap(String),
+    /// An argument that is not valid Unicode where text is needed.
+    #[error("{0}: value is not valid text")]
+    NotText(Flag),
+    /// Rendering needs a scene.
+    #[error(
+        "{} need {}",
+        [Flag::Output, Flag::Depth, Flag::Depth16, Flag::DepthRaw].map(Flag::name).join(", "),
+        Flag::Input.synopsis()
+    )]
+    MissingInput,
+    /// A precision that is not f64, f32 or auto.
+    #[error("{flag}: expected f64, f32 or auto, found '{0}'", flag = Flag::Precision)]
+    BadPrecision(String),
+    /// Two flags that exclude each other.
+    #[error("{0} and {1} exclude each other: give one")]
+    Conflicting(Flag, Flag),
+    /// Unusable sampling settings.
+    #[error("{0}")]
+    BadSampling(#[from] SamplingError),
+}
+
+impl UsageError {
+    /// Whether the usage text should follow the message (the user may not know the flags).
+    pub fn wants_usage(&self) -> bool {
+        matches!(self, Self::UnknownFlag(_) | Self::StrayArgument(_))
+    }
+}
+
+/// The extensions an output flag accepts, for messages.
+pub(crate) fn extensions_of(flag: Flag) -> &'static str {
+    match flag {
+        Flag::DepthRaw => RawDepthFormat::EXTENSIONS,
+        Flag::Depth16 => ".png",
+        _ => ImageFormat::EXTENSIONS,
+    }
+}

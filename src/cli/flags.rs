@@ -1,0 +1,274 @@
+//! The flag table: every flag's spelling, the values that follow it and its help line, in one
+//! place. Parsing ([`RawArgs::parse`]), the usage text ([`usage`]) and writing a request back to
+//! arguments ([`super::RenderRequest::to_arguments`]) all read it, so renaming a flag is a
+//! one-line change here; the rest of the program names flags by [`Flag`].
+//!
+//! Flags are spelled as the course spells them, with a single dash (`-input FILE`, `-size W H`,
+//! `-depth DMIN DMAX FILE`); no argument-parsing crate handles multi-value single-dash flags in
+//! that style, so the parsing is written here.
+
+use std::collections::BTreeMap;
+use std::ffi::OsString;
+use std::fmt;
+
+use super::error::UsageError;
+
+/// A command-line flag.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Flag {
+    /// The scene file.
+    Input,
+    /// Image size.
+    Size,
+    /// Colour image.
+    Output,
+    /// 8-bit depth image.
+    Depth,
+    /// Colour map of the depth image.
+    DepthColourMap,
+    /// 16-bit depth PNG.
+    Depth16,
+    /// Lossless depth (PFM, EXR).
+    DepthRaw,
+    /// Per-pixel arithmetic.
+    Precision,
+    /// Uniform supersampling.
+    UniformSamples,
+    /// Jittered supersampling.
+    JitteredSamples,
+    /// Random supersampling.
+    RandomSamples,
+    /// Box reconstruction filter.
+    BoxFilter,
+    /// Tent reconstruction filter.
+    TentFilter,
+    /// Gaussian reconstruction filter.
+    GaussianFilter,
+    /// Timings and counts after rendering.
+    Stats,
+    /// The usage text.
+    Help,
+}
+
+/// One row of the table.
+pub(crate) struct FlagSpec {
+    pub flag: Flag,
+    /// The spelling on the command line.
+    pub name: &'static str,
+    /// Other spellings accepted (never written).
+    pub aliases: &'static [&'static str],
+    /// Names of the values that follow the flag, as the usage text shows them.
+    pub values: &'static [&'static str],
+    /// What the flag does, for the usage text.
+    pub help: &'static str,
+}
+
+/// The table, in the order the usage text lists the flags.
+#[rustfmt::skip]
+pub(crate) const FLAGS: &[FlagSpec] = &[
+    FlagSpec { flag: Flag::Input, name: "-input", aliases: &[], values: &["FILE"], help: "scene file (6.837 assignment-1 format)" },
+    FlagSpec { flag: Flag::Size, name: "-size", aliases: &[], values: &["W", "H"], help: "image size in pixels (default 200 200)" },
+    FlagSpec { flag: Flag::Output, name: "-output", aliases: &[], values: &["FILE"], help: "write the colour image (.tga or .png)" },
+    FlagSpec { flag: Flag::Depth, name: "-depth", aliases: &[], values: &["DMIN", "DMAX", "FILE"], help: "write the depth image: t = DMIN white … DMAX black" },
+    FlagSpec { flag: Flag::DepthColourMap, name: "-depth_colormap", aliases: &[], values: &["MAP"], help: "depth image colours: grey (default), turbo or viridis" },
+    FlagSpec { flag: Flag::Depth16, name: "-depth16", aliases: &[], values: &["DMIN", "DMAX", "FILE"], help: "write the depth as a 16-bit grey PNG over DMIN … DMAX" },
+    FlagSpec { flag: Flag::DepthRaw, name: "-depth_raw", aliases: &[], values: &["FILE"], help: "write raw t as 32-bit floats (.pfm or .exr), +inf = no hit" },
+    FlagSpec { flag: Flag::Precision, name: "-precision", aliases: &[], values: &["f64|f32|auto"], help: "per-pixel arithmetic (default f64: exact)" },
+    FlagSpec { flag: Flag::UniformSamples, name: "-uniform_samples", aliases: &[], values: &["N"], help: "supersample on an n×n grid (N = n²)" },
+    FlagSpec { flag: Flag::JitteredSamples, name: "-jittered_samples", aliases: &[], values: &["N"], help: "one random sample in each cell of an n×n grid (N = n²)" },
+    FlagSpec { flag: Flag::RandomSamples, name: "-random_samples", aliases: &[], values: &["N"], help: "N random samples per pixel" },
+    FlagSpec { flag: Flag::BoxFilter, name: "-box_filter", aliases: &[], values: &["R"], help: "reconstruction filter, half-width R pixels (default 0.5)" },
+    FlagSpec { flag: Flag::TentFilter, name: "-tent_filter", aliases: &[], values: &["R"], help: "tent filter of radius R pixels" },
+    FlagSpec { flag: Flag::GaussianFilter, name: "-gaussian_filter", aliases: &[], values: &["SIGMA"], help: "Gaussian filter, sigma in pixels (support 2·sigma)" },
+    FlagSpec { flag: Flag::Stats, name: "-stats", aliases: &[], values: &[], help: "print timings and counts after rendering" },
+    FlagSpec { flag: Flag::Help, name: "-help", aliases: &["--help", "-h"], values: &[], help: "print this help" },
+];
+
+impl Flag {
+    /// The flag's row in the table.
+    fn spec(self) -> &'static FlagSpec {
+        // Every flag has a row (a unit test checks it); the first row stands in otherwise.
+        FLAGS
+            .iter()
+            .find(|spec| spec.flag == self)
+            .unwrap_or(&FLAGS[0])
+    }
+
+    /// The flag as written on the command line.
+    pub fn name(self) -> &'static str {
+        self.spec().name
+    }
+
+    /// How many values follow the flag.
+    pub fn arity(self) -> usize {
+        self.spec().values.len()
+    }
+
+    /// The flag and its values, as the usage text and error messages show them
+    /// (`-depth DMIN DMAX FILE`).
+    pub fn synopsis(self) -> String {
+        let spec = self.spec();
+        std::iter::once(spec.name)
+            .chain(spec.values.iter().copied())
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+
+    /// The flag spelled `word` (or one of its aliases).
+    pub fn named(word: &str) -> Option<Self> {
+        FLAGS
+            .iter()
+            .find(|spec| spec.name == word || spec.aliases.contains(&word))
+            .map(|spec| spec.flag)
+    }
+}
+
+impl fmt::Display for Flag {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// The usage text printed by `-help`.
+pub fn usage() -> String {
+    let input = Flag::Input.synopsis();
+    let render = [Flag::Size, Flag::Output, Flag::Depth]
+        .map(|flag| format!("[{}]", flag.synopsis()))
+        .join(" ");
+    let mut text = format!(
+        "raytracer: ray-casts 6.837 assignment-1 scenes (orthographic camera, spheres)\n\n\
+         usage:\n  raytracer [{input}]   open the viewer (default scene without {input_flag})\n  \
+         raytracer {input} {render} [more outputs]\n      render without a window\n\nflags:\n",
+        input_flag = Flag::Input,
+    );
+    for spec in FLAGS {
+        let synopsis = spec.flag.synopsis();
+        text.push_str(&format!("  {synopsis:<24} {}\n", spec.help));
+    }
+    text.push_str(&format!(
+        "\nexit status: 0 success, 1 scene or file error, 2 usage error\n\
+         example:\n  raytracer {} scene1_01.txt {} 200 200 {} output1_01.tga {} 9 10 depth1_01.tga\n",
+        Flag::Input,
+        Flag::Size,
+        Flag::Output,
+        Flag::Depth
+    ));
+    text
+}
+
+/// Stage one of parsing: flags recognised, values collected, nothing interpreted.
+#[derive(Debug, Clone, Default)]
+pub struct RawArgs {
+    values: BTreeMap<Flag, Vec<OsString>>,
+}
+
+impl RawArgs {
+    /// Splits arguments (without the program name) into flags and values: unknown and repeated
+    /// flags and missing values are usage errors.
+    pub fn parse<I, S>(arguments: I) -> Result<Self, UsageError>
+    where
+        I: IntoIterator<Item = S>,
+        S: Into<OsString>,
+    {
+        let mut arguments = arguments.into_iter().map(Into::into).peekable();
+        let mut values = BTreeMap::new();
+        while let Some(argument) = arguments.next() {
+            let word = argument.to_string_lossy();
+            let flag = match Flag::named(&word) {
+                Some(flag) => flag,
+                None if word.starts_with('-') && word.len() > 1 => {
+                    return Err(UsageError::UnknownFlag(word.into_owned()));
+                }
+                None => return Err(UsageError::StrayArgument(word.into_owned())),
+            };
+            let mut flag_values = Vec::with_capacity(flag.arity());
+            for _ in 0..flag.arity() {
+                // A value may start with '-' (a negative depth); a known flag may not be a value.
+                let next_is_flag = arguments
+                    .peek()
+                    .is_some_and(|next| Flag::named(&next.to_string_lossy()).is_some());
+                match arguments.next() {
+                    Some(value) if !next_is_flag => flag_values.push(value),
+                    _ => return Err(UsageError::MissingValue(flag)),
+                }
+            }
+            if values.insert(flag, flag_values).is_some() {
+                return Err(UsageError::Repeated(flag));
+            }
+        }
+        Ok(Self { values })
+    }
+
+    /// Whether `flag` was given.
+    pub fn has(&self, flag: Flag) -> bool {
+        self.values.contains_key(&flag)
+    }
+
+    /// Value `index` of `flag`, if given.
+    pub fn value(&self, flag: Flag, index: usize) -> Option<&OsString> {
+        self.values.get(&flag).and_then(|values| values.get(index))
+    }
+
+    /// Value `index` of `flag` as text ("" when the flag is absent).
+    pub fn text(&self, flag: Flag, index: usize) -> Result<&str, UsageError> {
+        self.value(flag, index)
+            .map(|value| value.to_str().ok_or(UsageError::NotText(flag)))
+            .unwrap_or(Ok(""))
+    }
+
+    /// The one flag of `flags` that is given, if any; two of them are a conflict.
+    pub fn one_of(&self, flags: &[Flag]) -> Result<Option<Flag>, UsageError> {
+        let given: Vec<Flag> = flags.iter().copied().filter(|&f| self.has(f)).collect();
+        match given.as_slice() {
+            [] => Ok(None),
+            [one] => Ok(Some(*one)),
+            [first, second, ..] => Err(UsageError::Conflicting(*first, *second)),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const ALL: [Flag; 16] = [
+        Flag::Input,
+        Flag::Size,
+        Flag::Output,
+        Flag::Depth,
+        Flag::DepthColourMap,
+        Flag::Depth16,
+        Flag::DepthRaw,
+        Flag::Precision,
+        Flag::UniformSamples,
+        Flag::JitteredSamples,
+        Flag::RandomSamples,
+        Flag::BoxFilter,
+        Flag::TentFilter,
+        Flag::GaussianFilter,
+        Flag::Stats,
+        Flag::Help,
+    ];
+
+    #[test]
+    fn every_flag_has_one_row_and_a_distinct_spelling() {
+        assert_eq!(FLAGS.len(), ALL.len());
+        for flag in ALL {
+            assert_eq!(FLAGS.iter().filter(|spec| spec.flag == flag).count(), 1);
+            assert_eq!(Flag::named(flag.name()), Some(flag), "{flag:?}");
+        }
+        let mut names: Vec<&str> = FLAGS.iter().map(|spec| spec.name).collect();
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), FLAGS.len());
+    }
+
+    #[test]
+    fn usage_lists_every_flag_with_its_values() {
+        let text = usage();
+        for flag in ALL {
+            assert!(text.contains(&flag.synopsis()), "{flag:?} in\n{text}");
+        }
+        assert!(text.contains("-depth DMIN DMAX FILE"), "{text}");
+    }
+}

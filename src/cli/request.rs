@@ -1,0 +1,356 @@
+//! Stage two of parsing: [`RawArgs`] interpreted into a typed [`Command`] (numbers, sizes,
+//! formats), and the way back: [`RenderRequest::to_arguments`] writes a request as the arguments
+//! that parse to it again (the viewer's exports write their command line with it).
+
+use std::ffi::OsString;
+use std::path::PathBuf;
+
+use super::error::UsageError;
+use super::flags::{Flag, RawArgs};
+use crate::output::{ImageFormat, RawDepthFormat};
+use crate::render::depth_map::{DepthColourMap, DepthRange};
+use crate::render::{Filter, Precision, Quality, Sampler, Sampling, check_image_size};
+
+/// Image size used when `-size` is not given: the course's 200 × 200.
+pub const DEFAULT_SIZE_PX: (u32, u32) = (200, 200);
+
+/// The sampler flags and the sampler each chooses.
+const SAMPLER_FLAGS: [(Flag, Sampler); 3] = [
+    (Flag::UniformSamples, Sampler::Uniform),
+    (Flag::JitteredSamples, Sampler::Jittered),
+    (Flag::RandomSamples, Sampler::Random),
+];
+
+/// The filter flags and the filter each chooses (of a size in pixels).
+const FILTER_FLAGS: [(Flag, fn(f32) -> Filter); 3] = [
+    (Flag::BoxFilter, |radius| Filter::Box { radius }),
+    (Flag::TentFilter, |radius| Filter::Tent { radius }),
+    (Flag::GaussianFilter, |sigma| Filter::Gaussian { sigma }),
+];
+
+/// A depth image to write.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DepthOutput {
+    /// t range mapped white … black.
+    pub range: DepthRange,
+    /// Where to write it.
+    pub path: PathBuf,
+}
+
+/// A headless render: what to read, how large, what to write.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RenderRequest {
+    /// Scene file.
+    pub input: PathBuf,
+    /// Image width in pixels.
+    pub width_px: u32,
+    /// Image height in pixels.
+    pub height_px: u32,
+    /// Colour image destination.
+    pub colour_output: Option<PathBuf>,
+    /// Depth image destination and range.
+    pub depth_output: Option<DepthOutput>,
+    /// Colour map of the depth image (`-depth_colormap`; grey by default).
+    pub depth_colour_map: DepthColourMap,
+    /// 16-bit grey depth PNG destination and range (`-depth16`).
+    pub depth16_output: Option<DepthOutput>,
+    /// Raw t destination (`-depth_raw`, `.pfm` or `.exr`).
+    pub depth_raw_output: Option<PathBuf>,
+    /// Precision and other quality knobs.
+    pub quality: Quality,
+    /// Print timings and counts after rendering.
+    pub stats: bool,
+}
+
+/// Opening the viewer.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ViewerRequest {
+    /// Scene file; the embedded default scene when `None`.
+    pub input: Option<PathBuf>,
+    /// `-size W H`, if given: the export size the viewer starts with.
+    pub size_px: Option<(u32, u32)>,
+    /// `-precision`, if given: the viewer's precision mode.
+    pub precision: Option<Precision>,
+}
+
+/// What the command line asks for.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Command {
+    /// Print the usage text.
+    Help,
+    /// Render without a window.
+    Render(RenderRequest),
+    /// Open the viewer.
+    View(ViewerRequest),
+}
+
+/// Both stages: arguments (without the program name) → [`Command`].
+pub fn parse_command<I, S>(arguments: I) -> Result<Command, UsageError>
+where
+    I: IntoIterator<Item = S>,
+    S: Into<OsString>,
+{
+    RawArgs::parse(arguments)?.validate()
+}
+
+impl RawArgs {
+    /// Stage two: interprets the values into a typed [`Command`].
+    pub fn validate(&self) -> Result<Command, UsageError> {
+        if self.has(Flag::Help) {
+            return Ok(Command::Help);
+        }
+        let input = self.value(Flag::Input, 0).map(PathBuf::from);
+        let size_px = match self.has(Flag::Size) {
+            true => Some(self.size()?),
+            false => None,
+        };
+        let colour_output = self.output_path(Flag::Output, 0)?;
+        let depth_output = self.depth_output(Flag::Depth)?;
+        let depth16_output = self.depth_output(Flag::Depth16)?;
+        let depth_raw_output = self.output_path(Flag::DepthRaw, 0)?;
+        let outputs: Vec<&PathBuf> = colour_output
+            .iter()
+            .chain(depth_output.iter().map(|d| &d.path))
+            .chain(depth16_output.iter().map(|d| &d.path))
+            .chain(depth_raw_output.iter())
+            .collect();
+        for (index, path) in outputs.iter().enumerate() {
+            if outputs[..index].contains(path) {
+                return Err(UsageError::SameOutput(path.display().to_string()));
+            }
+        }
+        let depth_colour_map = match self.has(Flag::DepthColourMap) {
+            true => {
+                let text = self.text(Flag::DepthColourMap, 0)?;
+                DepthColourMap::from_name(text)
+                    .ok_or_else(|| UsageError::BadColourMap(text.to_owned()))?
+            }
+            false => DepthColourMap::Grey,
+        };
+        let precision = match self.has(Flag::Precision) {
+            true => {
+                let text = self.text(Flag::Precision, 0)?;
+                Some(
+                    text.parse::<Precision>()
+                        .map_err(|_| UsageError::BadPrecision(text.to_owned()))?,
+                )
+            }
+            false => None,
+        };
+        if outputs.is_empty() {
+            return Ok(Command::View(ViewerRequest {
+                input,
+                size_px,
+                precision,
+            }));
+        }
+        let input = input.ok_or(UsageError::MissingInput)?;
+        let (width_px, height_px) = size_px.unwrap_or(DEFAULT_SIZE_PX);
+        Ok(Command::Render(RenderRequest {
+            input,
+            width_px,
+            height_px,
+            colour_output,
+            depth_output,
+            depth_colour_map,
+            depth16_output,
+            depth_raw_output,
+            quality: Quality {
+                precision: precision.unwrap_or_default(),
+                sampling: self.sampling()?,
+            },
+            stats: self.has(Flag::Stats),
+        }))
+    }
+
+    /// Supersampling from the course's sampler and filter flags; `None` without either.
+    fn sampling(&self) -> Result<Option<Sampling>, UsageError> {
+        let sampler_flag = self.one_of(&SAMPLER_FLAGS.map(|(flag, _)| flag))?;
+        let filter_flag = self.one_of(&FILTER_FLAGS.map(|(flag, _)| flag))?;
+        if sampler_flag.is_none() && filter_flag.is_none() {
+            return Ok(None);
+        }
+        let (sampler, samples) = match sampler_flag {
+            Some(flag) => {
+                let text = self.text(flag, 0)?;
+                let samples = text.parse::<u32>().map_err(|_| UsageError::BadNumber {
+                    flag,
+                    what: "a whole number of samples",
+                    found: text.to_owned(),
+                })?;
+                let sampler = SAMPLER_FLAGS
+                    .iter()
+                    .find(|(f, _)| *f == flag)
+                    .map_or(Sampler::Uniform, |(_, sampler)| *sampler);
+                (sampler, samples)
+            }
+            None => (Sampler::Uniform, 1),
+        };
+        let filter = match filter_flag {
+            Some(flag) => {
+                let text = self.text(flag, 0)?;
+                let size = text
+                    .parse::<f32>()
+                    .ok()
+                    .filter(|size| size.is_finite())
+                    .ok_or_else(|| UsageError::BadNumber {
+                        flag,
+                        what: "a size in pixels",
+                        found: text.to_owned(),
+                    })?;
+                let make = FILTER_FLAGS
+                    .iter()
+                    .find(|(f, _)| *f == flag)
+                    .map_or(FILTER_FLAGS[0].1, |(_, make)| *make);
+                make(size)
+            }
+            None => Filter::PIXEL_BOX,
+        };
+        let sampling = Sampling {
+            sampler,
+            samples,
+            filter,
+            seed: 0,
+        };
+        sampling.validate()?;
+        Ok(Some(sampling))
+    }
+
+    fn finite(&self, flag: Flag, index: usize, what: &'static str) -> Result<f64, UsageError> {
+        let text = self.text(flag, index)?;
+        match text.parse::<f64>() {
+            Ok(value) if value.is_finite() => Ok(value),
+            _ => Err(UsageError::BadNumber {
+                flag,
+                what,
+                found: text.to_owned(),
+            }),
+        }
+    }
+
+    fn size(&self) -> Result<(u32, u32), UsageError> {
+        let side = |index, what| {
+            let text = self.text(Flag::Size, index)?;
+            text.parse::<u64>().map_err(|_| UsageError::BadNumber {
+                flag: Flag::Size,
+                what,
+                found: text.to_owned(),
+            })
+        };
+        let (width_px, height_px) = (
+            side(0, "a whole number of pixels (W)")?,
+            side(1, "a whole number of pixels (H)")?,
+        );
+        let bad = UsageError::BadSize {
+            width_px,
+            height_px,
+        };
+        let (Ok(width), Ok(height)) = (u32::try_from(width_px), u32::try_from(height_px)) else {
+            return Err(bad);
+        };
+        check_image_size(width, height).map_err(|_| bad)?;
+        Ok((width, height))
+    }
+
+    /// A `-depth`-style output: DMIN DMAX FILE.
+    fn depth_output(&self, flag: Flag) -> Result<Option<DepthOutput>, UsageError> {
+        if !self.has(flag) {
+            return Ok(None);
+        }
+        Ok(Some(DepthOutput {
+            range: DepthRange::new(
+                self.finite(flag, 0, "a number (DMIN)")?,
+                self.finite(flag, 1, "a number (DMAX)")?,
+            ),
+            path: self.output_path(flag, 2)?.unwrap_or_default(),
+        }))
+    }
+
+    /// An output path whose extension names a format the flag writes.
+    fn output_path(&self, flag: Flag, index: usize) -> Result<Option<PathBuf>, UsageError> {
+        let Some(value) = self.value(flag, index) else {
+            return Ok(None);
+        };
+        let path = PathBuf::from(value);
+        let known = match flag {
+            Flag::DepthRaw => RawDepthFormat::from_path(&path).is_some(),
+            Flag::Depth16 => matches!(ImageFormat::from_path(&path), Ok(ImageFormat::Png)),
+            _ => ImageFormat::from_path(&path).is_ok(),
+        };
+        if !known {
+            return Err(UsageError::UnknownFormat {
+                flag,
+                path: path.display().to_string(),
+            });
+        }
+        Ok(Some(path))
+    }
+}
+
+impl RenderRequest {
+    /// The arguments (without the program name) that parse to this request again: every
+    /// setting, flags spelled by the table. Numbers are written in their shortest exact form,
+    /// so they parse back to the same values.
+    pub fn to_arguments(&self) -> Vec<OsString> {
+        let mut arguments: Vec<OsString> = Vec::new();
+        let mut push = |flag: Flag, values: Vec<OsString>| {
+            arguments.push(flag.name().into());
+            arguments.extend(values);
+        };
+        push(Flag::Input, vec![self.input.clone().into()]);
+        push(
+            Flag::Size,
+            vec![
+                self.width_px.to_string().into(),
+                self.height_px.to_string().into(),
+            ],
+        );
+        if let Some(path) = &self.colour_output {
+            push(Flag::Output, vec![path.clone().into()]);
+        }
+        let depth_values = |depth: &DepthOutput| -> Vec<OsString> {
+            vec![
+                depth.range.min_t.to_string().into(),
+                depth.range.max_t.to_string().into(),
+                depth.path.clone().into(),
+            ]
+        };
+        if let Some(depth) = &self.depth_output {
+            push(Flag::Depth, depth_values(depth));
+        }
+        if self.depth_colour_map != DepthColourMap::Grey {
+            push(
+                Flag::DepthColourMap,
+                vec![self.depth_colour_map.name().into()],
+            );
+        }
+        if let Some(depth) = &self.depth16_output {
+            push(Flag::Depth16, depth_values(depth));
+        }
+        if let Some(path) = &self.depth_raw_output {
+            push(Flag::DepthRaw, vec![path.clone().into()]);
+        }
+        if self.quality.precision != Precision::default() {
+            push(Flag::Precision, vec![self.quality.precision.name().into()]);
+        }
+        if let Some(sampling) = &self.quality.sampling {
+            let sampler_flag = SAMPLER_FLAGS
+                .iter()
+                .find(|(_, sampler)| *sampler == sampling.sampler)
+                .map_or(Flag::UniformSamples, |(flag, _)| *flag);
+            push(sampler_flag, vec![sampling.samples.to_string().into()]);
+            if sampling.filter != Filter::PIXEL_BOX {
+                let size = sampling.filter.size();
+                let filter_flag = FILTER_FLAGS
+                    .iter()
+                    .find(|(_, make)| make(size) == sampling.filter)
+                    .map_or(Flag::BoxFilter, |(flag, _)| *flag);
+                push(filter_flag, vec![size.to_string().into()]);
+            }
+        }
+        if self.stats {
+            push(Flag::Stats, Vec::new());
+        }
+        arguments
+    }
+}

@@ -1,0 +1,245 @@
+//! Unit tests of the command line: parsing, validation, messages, writing a request back.
+
+use super::*;
+use crate::render::depth_map::{DepthColourMap, DepthRange};
+use crate::render::{Filter, Precision, Quality, Sampler, Sampling};
+
+fn parse(line: &str) -> Result<Command, UsageError> {
+    parse_command(line.split_whitespace())
+}
+
+#[test]
+fn course_command_line_gives_a_render_request() {
+    let command =
+        parse("-input scene1_01.txt -size 200 100 -output out.tga -depth 9 10 depth.tga").unwrap();
+    assert_eq!(
+        command,
+        Command::Render(RenderRequest {
+            input: "scene1_01.txt".into(),
+            width_px: 200,
+            height_px: 100,
+            colour_output: Some("out.tga".into()),
+            depth_output: Some(DepthOutput {
+                range: DepthRange::new(9.0, 10.0),
+                path: "depth.tga".into()
+            }),
+            depth_colour_map: DepthColourMap::Grey,
+            depth16_output: None,
+            depth_raw_output: None,
+            quality: Quality::default(),
+            stats: false,
+        })
+    );
+}
+
+#[test]
+fn negative_depth_values_are_values_not_flags() {
+    let Command::Render(request) = parse("-input a.txt -depth -2 2 d.png").unwrap() else {
+        panic!("expected a render request");
+    };
+    assert_eq!(
+        request.depth_output.unwrap().range,
+        DepthRange::new(-2.0, 2.0)
+    );
+    assert_eq!((request.width_px, request.height_px), DEFAULT_SIZE_PX);
+}
+
+#[test]
+fn precision_flag_selects_the_mode() {
+    let Command::Render(request) = parse("-input a.txt -output x.png -precision auto").unwrap()
+    else {
+        panic!("expected a render request");
+    };
+    assert_eq!(request.quality.precision, Precision::Auto);
+}
+
+#[test]
+fn course_sampling_flags_give_a_sampling() {
+    let Command::Render(request) =
+        parse("-input a.txt -output x.png -jittered_samples 16 -gaussian_filter 0.8 -stats")
+            .unwrap()
+    else {
+        panic!("expected a render request");
+    };
+    let sampling = request.quality.sampling.unwrap();
+    assert_eq!(sampling.sampler, Sampler::Jittered);
+    assert_eq!(sampling.samples, 16);
+    assert_eq!(sampling.filter, Filter::Gaussian { sigma: 0.8 });
+    assert!(request.stats);
+    let Command::Render(request) = parse("-input a.txt -output x.png").unwrap() else {
+        panic!("expected a render request");
+    };
+    assert_eq!(
+        request.quality.sampling, None,
+        "no flags: one centre sample"
+    );
+}
+
+#[test]
+fn without_outputs_the_viewer_opens() {
+    assert_eq!(parse("").unwrap(), Command::View(ViewerRequest::default()));
+    assert_eq!(
+        parse("-input a.txt -size 640 480").unwrap(),
+        Command::View(ViewerRequest {
+            input: Some("a.txt".into()),
+            size_px: Some((640, 480)),
+            precision: None,
+        })
+    );
+    assert_eq!(parse("-help").unwrap(), Command::Help);
+    assert_eq!(parse("--help").unwrap(), Command::Help);
+}
+
+#[test]
+fn mistakes_are_usage_errors() {
+    let cases = [
+        ("-inptu a.txt", "unknown flag '-inptu'"),
+        ("a.txt", "unexpected argument 'a.txt'"),
+        ("-input", "-input needs 1 value"),
+        ("-input a.txt -size 200", "-size needs 2 value"),
+        (
+            "-input a.txt -size 200 -output x.tga",
+            "-size needs 2 value",
+        ),
+        ("-input a.txt -size 0 200 -output x.tga", "out of range"),
+        ("-input a.txt -size 20000 200 -output x.tga", "out of range"),
+        (
+            "-input a.txt -size 99999999999 200 -output x.tga",
+            "out of range",
+        ),
+        (
+            "-input a.txt -size -5 200 -output x.tga",
+            "expected a whole number",
+        ),
+        (
+            "-input a.txt -size 2.5 200 -output x.tga",
+            "expected a whole number",
+        ),
+        (
+            "-input a.txt -depth a 1 d.tga",
+            "expected a number (DMIN), found 'a'",
+        ),
+        (
+            "-input a.txt -depth 1 inf d.tga",
+            "expected a number (DMAX), found 'inf'",
+        ),
+        ("-input a.txt -output x.jpg", "unknown format"),
+        ("-input a.txt -depth_raw x.png", "use one of .pfm, .exr"),
+        ("-input a.txt -depth16 0 1 x.tga", "use one of .png"),
+        ("-input a.txt -output x.png -depth16 0 1 x.png", "same file"),
+        (
+            "-input a.txt -depth_raw d.pfm -depth_colormap jet",
+            "expected grey, turbo or viridis, found 'jet'",
+        ),
+        ("-input a.txt -output x.tga -output y.tga", "given twice"),
+        ("-input a.txt -output x.tga -depth 1 2 x.tga", "same file"),
+        ("-output x.tga", "need -input"),
+        (
+            "-input a.txt -output x.tga -precision f16",
+            "expected f64, f32 or auto, found 'f16'",
+        ),
+    ];
+    for (line, message) in cases {
+        let error = parse(line).expect_err(line).to_string();
+        assert!(error.contains(message), "{line}: {error}");
+    }
+}
+
+#[test]
+fn depth_outputs_and_colour_map() {
+    let Command::Render(request) =
+        parse("-input a.txt -depth_raw t.exr -depth16 -1 2.5 d16.png -depth_colormap viridis")
+            .unwrap()
+    else {
+        panic!("a render request");
+    };
+    assert_eq!(request.depth_raw_output, Some("t.exr".into()));
+    assert_eq!(
+        request.depth16_output,
+        Some(DepthOutput {
+            range: DepthRange::new(-1.0, 2.5),
+            path: "d16.png".into()
+        })
+    );
+    assert_eq!(request.depth_colour_map, DepthColourMap::Viridis);
+    assert!(request.colour_output.is_none() && request.depth_output.is_none());
+}
+
+/// A request with every setting, and variations of its sampling.
+fn requests_with_every_setting() -> Vec<RenderRequest> {
+    let full = RenderRequest {
+        input: "scenes/my scene.txt".into(),
+        width_px: 640,
+        height_px: 360,
+        colour_output: Some("out/colour.png".into()),
+        depth_output: Some(DepthOutput {
+            range: DepthRange::new(-0.1, 1.0 / 3.0),
+            path: "out/depth.tga".into(),
+        }),
+        depth_colour_map: DepthColourMap::Viridis,
+        depth16_output: Some(DepthOutput {
+            range: DepthRange::new(1e-300, 7e12),
+            path: "out/depth16.png".into(),
+        }),
+        depth_raw_output: Some("out/t.exr".into()),
+        quality: Quality {
+            precision: Precision::Auto,
+            sampling: Some(Sampling {
+                sampler: Sampler::Jittered,
+                samples: 16,
+                filter: Filter::Gaussian { sigma: 0.7 },
+                seed: 0,
+            }),
+        },
+        stats: true,
+    };
+    let mut requests = vec![
+        full.clone(),
+        RenderRequest {
+            colour_output: None,
+            depth_output: None,
+            depth16_output: None,
+            depth_colour_map: DepthColourMap::Grey,
+            quality: Quality::default(),
+            stats: false,
+            ..full.clone()
+        },
+    ];
+    for sampler in Sampler::ALL {
+        for filter in [
+            Filter::PIXEL_BOX,
+            Filter::Box { radius: 1.25 },
+            Filter::Tent { radius: 0.1 },
+            Filter::Gaussian { sigma: 2.0 },
+        ] {
+            let mut request = full.clone();
+            request.quality.sampling = Some(Sampling {
+                sampler,
+                samples: 9,
+                filter,
+                seed: 0,
+            });
+            requests.push(request);
+        }
+    }
+    requests
+}
+
+#[test]
+fn a_request_written_back_to_arguments_parses_to_the_same_request() {
+    for request in requests_with_every_setting() {
+        let arguments = request.to_arguments();
+        // Every flag written is spelled as the table spells it.
+        for word in &arguments {
+            let word = word.to_string_lossy();
+            if word.starts_with('-') && word.parse::<f64>().is_err() {
+                assert!(Flag::named(&word).is_some(), "{word}");
+            }
+        }
+        assert_eq!(
+            parse_command(arguments.clone()),
+            Ok(Command::Render(request.clone())),
+            "{arguments:?}"
+        );
+    }
+}

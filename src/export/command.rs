@@ -1,0 +1,74 @@
+//! The command line of an export: the render request that makes the export's colour and depth
+//! files again from its scene file, written back to arguments through the command line's flag
+//! table ([`RenderRequest::to_arguments`]), and the `name_command.sh` script that runs it.
+
+use std::path::{Path, PathBuf};
+
+use super::{ExportFiles, ExportPlan, ExtraDepth};
+use crate::cli::{DepthOutput, RenderRequest};
+use crate::render::{Quality, View};
+
+/// The render request that draws `files.scene` into the same colour and depth files as the
+/// export, file names relative to the export's folder.
+pub fn export_request(
+    plan: &ExportPlan,
+    files: &ExportFiles,
+    view: &View,
+    quality: &Quality,
+) -> RenderRequest {
+    let name = |path: &Path| PathBuf::from(path.file_name().unwrap_or_default());
+    let depth_output = |path: &Path| DepthOutput {
+        range: view.depth_range,
+        path: name(path),
+    };
+    RenderRequest {
+        input: name(&files.scene),
+        width_px: view.width_px,
+        height_px: view.height_px,
+        colour_output: Some(name(&files.images.colour)),
+        depth_output: Some(depth_output(&files.images.depth)),
+        depth_colour_map: plan.colour_map,
+        depth16_output: (plan.extra_depth == ExtraDepth::Png16)
+            .then(|| depth_output(&files.depth16)),
+        depth_raw_output: files.depth_raw.as_deref().map(name),
+        quality: *quality,
+        stats: false,
+    }
+}
+
+/// The command-line arguments (after the program name) of [`export_request`], as text.
+pub fn command_arguments(
+    plan: &ExportPlan,
+    files: &ExportFiles,
+    view: &View,
+    quality: &Quality,
+) -> Vec<String> {
+    export_request(plan, files, view, quality)
+        .to_arguments()
+        .into_iter()
+        .map(|word| word.to_string_lossy().into_owned())
+        .collect()
+}
+
+/// Quotes a word for a POSIX shell (single quotes; words of safe characters stay bare).
+pub fn shell_quote(word: &str) -> String {
+    let safe = !word.is_empty()
+        && word
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_.,/+=:".contains(c));
+    if safe {
+        word.to_owned()
+    } else {
+        format!("'{}'", word.replace('\'', r"'\''"))
+    }
+}
+
+/// The `name_command.sh` text for `arguments`.
+pub fn command_script(arguments: &[String]) -> String {
+    let words: Vec<String> = arguments.iter().map(|a| shell_quote(a)).collect();
+    format!(
+        "#!/bin/sh\n# Renders this export's colour and depth images again from its scene file.\n\
+         cd \"$(dirname \"$0\")\" || exit 1\nexec raytracer {}\n",
+        words.join(" ")
+    )
+}
