@@ -1,0 +1,215 @@
+//! Binning: each disc is listed in the bands of [`BAND_ROWS`] rows its screen extent touches, so
+//! a band tests only its own discs; and the conservative pixel spans (rows of a disc, columns of a
+//! chord) that bound which pixels the exact test looks at.
+
+use rayon::prelude::*;
+
+use super::Disc;
+use crate::geometry::camera::PixelGrid;
+
+/// Rows per band: the unit of binning and of parallel work.
+pub const BAND_ROWS: usize = 8;
+
+/// Discs listed per band of [`BAND_ROWS`] rows, binned in parallel: the discs are split into
+/// consecutive chunks, each chunk lists its discs per band (compressed rows), and a band's list is
+/// the chunks' lists one after the other — file order, with no serial merge.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Bands {
+    chunks: Vec<ChunkBands>,
+}
+
+/// One chunk's lists: band `b`'s discs are `indices[offsets[b]..offsets[b + 1]]`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+struct ChunkBands {
+    offsets: Vec<usize>,
+    indices: Vec<u32>,
+}
+
+impl Bands {
+    /// The discs (indices into the projected discs) listed in band `band`, in file order.
+    pub fn band(&self, band: usize) -> impl Iterator<Item = u32> + '_ {
+        self.chunks.iter().flat_map(move |chunk| {
+            let listed = match chunk.offsets.get(band..=band + 1) {
+                Some(&[start, end]) => &chunk.indices[start..end],
+                _ => &[],
+            };
+            listed.iter().copied()
+        })
+    }
+
+    /// How many (disc, band) entries the lists hold.
+    pub fn listed(&self) -> usize {
+        self.chunks.iter().map(|chunk| chunk.indices.len()).sum()
+    }
+}
+
+/// Image rows (top row first) `[first, last]` whose centres a disc may cover; conservative by
+/// one row.
+fn row_span(grid: &PixelGrid, disc: &Disc) -> Option<(usize, usize)> {
+    let radius = disc.radius_sq.sqrt();
+    let inverse_pixel = 1.0 / grid.pixel_size_world;
+    // y_up (from the bottom) of a screen v: v = (y_up + ½ − height/2)·s.
+    let offset = 0.5 * f64::from(grid.height_px) - 0.5;
+    let max_row = grid.height_px as usize - 1;
+    let (low, high) = pixel_span(
+        (disc.v - radius) * inverse_pixel + offset,
+        (disc.v + radius) * inverse_pixel + offset,
+        max_row,
+    )?;
+    // Rows count from the top: row = height − 1 − y_up.
+    Some((max_row - high, max_row - low))
+}
+
+/// Whole pixel indices `[first, last]` within `[0, max_index]` covering the fractional pixel
+/// coordinates `[low, high]` widened by at least one pixel each side (conservative: the exact
+/// test decides); `None` when that misses `[0, max_index]` or is NaN. Truncating conversions
+/// instead of `floor`/`ceil` (library calls on baseline x86-64, in the hottest loop) and no
+/// division.
+#[inline]
+pub(crate) fn pixel_span(low: f64, high: f64, max_index: usize) -> Option<(usize, usize)> {
+    let max = max_index as f64;
+    // NaN fails both tests.
+    let reaches_the_range = low < max + 2.0 && high > -2.0;
+    if !reaches_the_range {
+        return None;
+    }
+    // For low ≥ 1, (low − 1) truncated is floor(low) − 1; below, the first index is 0.
+    let first = if low >= 1.0 { (low - 1.0) as usize } else { 0 };
+    // trunc(high + 1) + 1 ≥ ceil(high) + 1 (high + 1 > −1 here).
+    let last = if high + 1.0 < max {
+        (high + 1.0) as usize + 1
+    } else {
+        max_index
+    };
+    (first <= last).then_some((first, last.min(max_index)))
+}
+
+/// Columns `[first, last]` (clamped to the image) whose pixel centres may lie within
+/// `half_chord_px` pixels of column coordinate `center_column` (`u / s + width/2 − ½`).
+/// Conservative by one pixel; the exact test decides.
+#[inline]
+pub(super) fn column_span(
+    grid: &PixelGrid,
+    center_column: f64,
+    half_chord_px: f64,
+) -> Option<(usize, usize)> {
+    pixel_span(
+        center_column - half_chord_px,
+        center_column + half_chord_px,
+        grid.width_px as usize - 1,
+    )
+}
+
+/// Smallest chunk of discs binned by one task.
+const MIN_BIN_CHUNK: usize = 16_384;
+
+/// Lists each disc in the bands its rows touch: chunks in parallel, each in two passes (count,
+/// then fill).
+pub fn bin_discs(discs: &[Disc], grid: &PixelGrid) -> Bands {
+    let band_count = (grid.height_px as usize).div_ceil(BAND_ROWS);
+    let chunk_len = discs
+        .len()
+        .div_ceil(4 * rayon::current_num_threads())
+        .max(MIN_BIN_CHUNK);
+    let chunks = discs
+        .par_chunks(chunk_len)
+        .enumerate()
+        .map(|(chunk_index, chunk)| {
+            // Sphere counts fit u32 (the parser's limit), so do disc indices.
+            let first_index = u32::try_from(chunk_index * chunk_len).unwrap_or(u32::MAX);
+            bin_chunk(chunk, first_index, grid, band_count)
+        })
+        .collect();
+    Bands { chunks }
+}
+
+/// Bins `discs` (the first has index `first_index`) into `band_count` bands.
+fn bin_chunk(discs: &[Disc], first_index: u32, grid: &PixelGrid, band_count: usize) -> ChunkBands {
+    let spans: Vec<Option<(usize, usize)>> = discs
+        .iter()
+        .map(|disc| row_span(grid, disc).map(|(first, last)| (first / BAND_ROWS, last / BAND_ROWS)))
+        .collect();
+    let mut offsets = vec![0usize; band_count + 1];
+    for &(first, last) in spans.iter().flatten() {
+        for count in &mut offsets[first + 1..=last + 1] {
+            *count += 1;
+        }
+    }
+    for band in 0..band_count {
+        offsets[band + 1] += offsets[band];
+    }
+    let mut cursor = offsets.clone();
+    let mut indices = vec![0u32; offsets[band_count]];
+    for (index, span) in (first_index..).zip(&spans) {
+        if let &Some((first, last)) = span {
+            for band in first..=last {
+                indices[cursor[band]] = index;
+                cursor[band] += 1;
+            }
+        }
+    }
+    ChunkBands { offsets, indices }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pixel_spans_hold_every_index_within_a_pixel_of_the_range() {
+        let mut rng = crate::render::rng::SplitMix64::new(5);
+        let max_index = 99usize;
+        for case in 0..100_000 {
+            let centre = rng.uniform(-110.0, 210.0);
+            let half = if case % 7 == 0 {
+                0.0
+            } else {
+                rng.log_uniform(1e-6, 300.0)
+            };
+            let (low, high) = (centre - half, centre + half);
+            // What floor/ceil with a one-pixel margin would cover.
+            let wanted_first = (low.floor() - 1.0).max(0.0);
+            let wanted_last = (high.ceil() + 1.0).min(max_index as f64);
+            match pixel_span(low, high, max_index) {
+                Some((first, last)) => {
+                    assert!(first as f64 <= wanted_first && last as f64 >= wanted_last);
+                    assert!(first <= last && last <= max_index);
+                }
+                None => assert!(wanted_first > wanted_last, "{low} {high}"),
+            }
+        }
+        assert_eq!(pixel_span(f64::NAN, 5.0, max_index), None);
+        assert_eq!(pixel_span(1.0, f64::NAN, max_index), None);
+        assert_eq!(
+            pixel_span(f64::NEG_INFINITY, f64::INFINITY, max_index),
+            Some((0, 99))
+        );
+        assert_eq!(pixel_span(1e300, 2e300, max_index), None);
+    }
+
+    #[test]
+    fn bands_list_each_disc_where_its_rows_are_in_file_order() {
+        let grid = PixelGrid::new(32, 32, 32.0); // one world unit per pixel
+        let disc = |v: f64, r: f64, sphere| Disc {
+            u: 0.0,
+            v,
+            w: 0.0,
+            radius_sq: r * r,
+            sphere,
+        };
+        // Top band holds rows 0..8 (v from 16 down to 8); the disc at v = 12 sits in it.
+        let discs = [disc(12.0, 1.0, 0), disc(-100.0, 1.0, 1), disc(0.0, 20.0, 2)];
+        let bands = bin_discs(&discs, &grid);
+        let band = |b: usize| bands.band(b).collect::<Vec<_>>();
+        assert_eq!(band(0), [0, 2]);
+        assert!(band(4).is_empty(), "four bands of eight rows");
+        assert!(
+            (0..4).all(|b| !band(b).contains(&1)),
+            "off-screen disc listed nowhere"
+        );
+        assert_eq!(bands.listed(), 5);
+        for b in 1..4 {
+            assert!(band(b).contains(&2), "the big disc is in every band");
+        }
+    }
+}

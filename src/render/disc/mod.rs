@@ -1,0 +1,97 @@
+//! The fast path: spheres projected to screen discs, binned into bands of rows, rasterised band
+//! by band in parallel.
+//!
+//! Each sphere's centre is moved into camera space once per frame, in f64 and relative to the
+//! camera centre, so coordinates of 1e7 cost no precision. For a pixel at screen (u, v) and a disc
+//! (c_u, c_v, r) the test is `du² + dv² ≤ r²` with `du = u − c_u`, `dv = v − c_v` — the same
+//! expression everywhere, so hit/miss is decided once — and the visible depth is
+//! `t = c_w − √(r² − du² − dv²)` (tmin = −∞: the front root even behind the camera centre).
+//!
+//! Cost: a disc is listed in the bands its rows touch; within a row only the columns its chord can
+//! cover are tested. A frame costs in proportion to the discs plus the pixels they cover, not to
+//! pixels × spheres. Ties keep the sphere that comes first in the file (bands list discs in file
+//! order and a hit replaces the current one only when strictly nearer).
+//!
+//! The per-pixel arithmetic is generic over [`Real`]: f64 (exact mode) or f32 (fast mode); the
+//! projection and the column spans are always f64.
+//!
+//! * this module: the projected [`Disc`] and the projection ([`project_discs`])
+//! * [`bins`]: listing each disc in the bands of rows it touches; row and column spans
+//! * [`real`]: the per-pixel number type
+//! * [`raster`]: filling a band's pixels, and a whole frame
+//! * [`shade`]: colours from the visible spheres
+
+mod bins;
+mod raster;
+mod real;
+mod shade;
+
+pub(crate) use bins::pixel_span;
+pub use bins::{BAND_ROWS, Bands, bin_discs};
+pub(crate) use raster::rasterise_frame;
+pub use real::Real;
+pub(crate) use shade::frame_from_hits;
+
+use crate::geometry::camera::CameraBasis;
+use crate::render::View;
+use crate::scene::Scene;
+
+/// A sphere projected into camera space.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Disc {
+    /// Screen u of the centre (world units, relative to the camera centre).
+    pub u: f64,
+    /// Screen v of the centre.
+    pub v: f64,
+    /// Depth of the centre along the view direction (t of the centre).
+    pub w: f64,
+    /// r², the disc's squared radius.
+    pub radius_sq: f64,
+    /// Index of the sphere in file order.
+    pub sphere: u32,
+}
+
+impl Disc {
+    /// t of the front surface at screen (u, v), or `None` outside the disc. Tangent points hit.
+    #[inline]
+    pub fn hit_t(&self, u: f64, v: f64) -> Option<f64> {
+        let du = u - self.u;
+        let dv = v - self.v;
+        let distance_sq = du * du + dv * dv;
+        (distance_sq <= self.radius_sq).then(|| self.w - (self.radius_sq - distance_sq).sqrt())
+    }
+}
+
+/// Projects every sphere of `scene` into the camera space of `view` (basis from
+/// [`View::validate`]), in file order.
+pub fn project_discs(scene: &Scene, view: &View, basis: &CameraBasis) -> Vec<Disc> {
+    scene
+        .spheres
+        .iter()
+        .zip(0u32..)
+        .map(|(sphere, index)| {
+            let center_camera = basis.to_camera(sphere.center_world - view.center_world);
+            Disc {
+                u: center_camera.x,
+                v: center_camera.y,
+                w: center_camera.z,
+                radius_sq: sphere.radius_world * sphere.radius_world,
+                sphere: index,
+            }
+        })
+        .collect()
+}
+
+/// The visible hit at screen (u, v) among `discs`: (t, sphere), smallest t, first in file order
+/// on a tie.
+pub fn nearest_hit(discs: &[Disc], u: f64, v: f64) -> Option<(f64, u32)> {
+    let mut best: Option<(f64, u32)> = None;
+    for disc in discs {
+        if let Some(t) = disc.hit_t(u, v)
+            && best.is_none_or(|(best_t, _)| t < best_t)
+        {
+            best = Some((t, disc.sphere));
+        }
+    }
+    best
+}

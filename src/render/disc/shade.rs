@@ -1,0 +1,48 @@
+//! Shading: a frame's colours from its visible spheres — the material's flat colour, or the
+//! background — quantised to 8 bits once per material.
+
+use rayon::prelude::*;
+
+use crate::render::depth_map::quantize_f32;
+use crate::render::{Frame, Precision, View};
+use crate::scene::Scene;
+
+/// Completes a frame from per-pixel t and sphere indices: colour from the sphere's material or
+/// the background, quantised to 8 bits.
+pub(crate) fn frame_from_hits(
+    scene: &Scene,
+    view: &View,
+    t: Vec<f64>,
+    sphere: Vec<u32>,
+    precision: Precision,
+) -> Frame {
+    // Colours per material (few), looked up per pixel: the cost follows the pixels, not the
+    // sphere count.
+    let material_rgb: Vec<[u8; 3]> = scene
+        .materials
+        .iter()
+        .map(|material| material.diffuse_colour.to_array().map(quantize_f32))
+        .collect();
+    let default_rgb = crate::scene::DEFAULT_DIFFUSE.to_array().map(quantize_f32);
+    let background = scene.background.to_array().map(quantize_f32);
+    let colour = sphere
+        .par_iter()
+        .map(|&index| match scene.spheres.get(index as usize) {
+            Some(hit) => hit
+                .material
+                .and_then(|material| material_rgb.get(material as usize).copied())
+                .unwrap_or(default_rgb),
+            None => background,
+        })
+        .collect();
+    Frame {
+        width_px: view.width_px,
+        height_px: view.height_px,
+        colour,
+        t,
+        sphere,
+        precision,
+        depth_grey: None,
+        disc_tests: 0,
+    }
+}
