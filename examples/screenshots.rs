@@ -130,7 +130,7 @@ fn main() {
 
     let depth = harness.get_by_label("depth image").rect();
     let probe_text = centre(&harness, "Unpin") + vec2(60.0, 0.0);
-    let max_handle = centre(&harness, raytracer::app::depth_tools::MAX_HANDLE_LABEL);
+    let max_handle = centre(&harness, raytracer::app::ui::histogram::MAX_HANDLE_LABEL);
     let legend = Pos2::new(depth.center().x, max_handle.y + 20.0);
     let marks = [
         colour.center(),                // 1 drag, wheel, right-drag

@@ -1,10 +1,11 @@
-//! Native file dialogs (rfd) without blocking the UI: each dialog runs on its own thread and its
-//! answer arrives through a channel. Where no dialog can be shown (no desktop portal on the
+//! Native file dialogs (rfd) without blocking the UI: each dialog runs as a [`Task`] and its
+//! answer is polled. Where no dialog can be shown (no desktop portal on the
 //! session bus and no zenity), [`dialog_unavailable_reason`] says so and the viewer's path fields
 //! do the job instead.
 
 use std::path::PathBuf;
-use std::sync::mpsc::{Receiver, TryRecvError, channel};
+
+use super::tasks::{Poll, Task};
 
 /// Which dialog an answer belongs to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -21,7 +22,7 @@ pub enum DialogKind {
 #[derive(Debug)]
 pub struct PendingDialog {
     kind: DialogKind,
-    answer: Receiver<Option<PathBuf>>,
+    task: Task<Option<PathBuf>>,
 }
 
 /// The dialog's outcome.
@@ -38,10 +39,10 @@ pub enum DialogAnswer {
 impl PendingDialog {
     /// Checks for the answer without blocking.
     pub fn poll(&self) -> DialogAnswer {
-        match self.answer.try_recv() {
-            Ok(Some(path)) => DialogAnswer::Chosen(self.kind, path),
-            Ok(None) | Err(TryRecvError::Disconnected) => DialogAnswer::Cancelled(self.kind),
-            Err(TryRecvError::Empty) => DialogAnswer::Waiting,
+        match self.task.poll() {
+            Poll::Done(Some(path)) => DialogAnswer::Chosen(self.kind, path),
+            Poll::Done(None) | Poll::Lost => DialogAnswer::Cancelled(self.kind),
+            Poll::Running => DialogAnswer::Waiting,
         }
     }
 }
@@ -68,34 +69,27 @@ pub fn spawn_dialog(
     ctx: &egui::Context,
     suggested_name: &str,
 ) -> std::io::Result<PendingDialog> {
-    let (sender, answer) = channel();
-    let ctx = ctx.clone();
     let suggested_name = suggested_name.to_owned();
-    std::thread::Builder::new()
-        .name("file-dialog".into())
-        .spawn(move || {
-            let dialog = rfd::FileDialog::new();
-            let chosen = match kind {
-                DialogKind::Open => dialog
-                    .add_filter("6.837 scene", &["txt"])
-                    .add_filter("any file", &["*"])
-                    .set_title("Open scene")
-                    .pick_file(),
-                DialogKind::Export => dialog
-                    .add_filter("PNG", &["png"])
-                    .add_filter("TGA", &["tga"])
-                    .set_title("Export images")
-                    .set_file_name(suggested_name)
-                    .save_file(),
-                DialogKind::SaveScene => dialog
-                    .add_filter("6.837 scene", &["txt"])
-                    .set_title("Save view as scene")
-                    .set_file_name(suggested_name)
-                    .save_file(),
-            };
-            // The viewer may have closed meanwhile; then nobody needs the answer.
-            let _ = sender.send(chosen);
-            ctx.request_repaint();
-        })?;
-    Ok(PendingDialog { kind, answer })
+    let task = Task::spawn("file-dialog", ctx, move |_| {
+        let dialog = rfd::FileDialog::new();
+        match kind {
+            DialogKind::Open => dialog
+                .add_filter("6.837 scene", &["txt"])
+                .add_filter("any file", &["*"])
+                .set_title("Open scene")
+                .pick_file(),
+            DialogKind::Export => dialog
+                .add_filter("PNG", &["png"])
+                .add_filter("TGA", &["tga"])
+                .set_title("Export images")
+                .set_file_name(suggested_name)
+                .save_file(),
+            DialogKind::SaveScene => dialog
+                .add_filter("6.837 scene", &["txt"])
+                .set_title("Save view as scene")
+                .set_file_name(suggested_name)
+                .save_file(),
+        }
+    })?;
+    Ok(PendingDialog { kind, task })
 }

@@ -85,39 +85,25 @@ pub fn prepare_frame(job: &ViewerJob) -> JobOutput {
     })
 }
 
-/// The colour and depth textures of `frame`.
+/// The colour and depth textures of `frame` (the depth through [`Frame::depth_pixels`], as files
+/// have it, with the style's colour for no-hit pixels).
 fn textures(job: &ViewerJob, frame: &Frame, size: [usize; 2]) -> (ColorImage, ColorImage) {
+    let to_colour32 = |[r, g, b]: [u8; 3]| Color32::from_rgb(r, g, b);
     let colour = ColorImage::new(
         size,
         frame
             .colour
             .par_iter()
-            .map(|&[r, g, b]| Color32::from_rgb(r, g, b))
+            .map(|&rgb| to_colour32(rgb))
             .collect(),
     );
-    let range = job.view.depth_range;
     let DepthStyle {
         colour_map,
         no_hit_rgb,
     } = job.depth_style;
-    let depth = if frame.depth_grey.is_some() {
-        // Supersampled: the filtered greys, as the exported depth image has them.
-        let image = frame.depth_image_mapped(range, colour_map, no_hit_rgb);
-        ColorImage::from_rgb(size, image.as_raw())
-    } else {
-        ColorImage::new(
-            size,
-            frame
-                .t
-                .par_iter()
-                .map(|&t| {
-                    let [r, g, b] = colour_map.rgb(&range, t, no_hit_rgb);
-                    Color32::from_rgb(r, g, b)
-                })
-                .collect(),
-        )
-    };
-    (colour, depth)
+    let depth_pixels =
+        frame.depth_pixels(job.view.depth_range, colour_map, no_hit_rgb, to_colour32);
+    (colour, ColorImage::new(size, depth_pixels))
 }
 
 /// The viewer's worker type.

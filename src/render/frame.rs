@@ -66,26 +66,40 @@ impl Frame {
         map: DepthColourMap,
         no_hit: [u8; 3],
     ) -> RgbImage {
+        let pixels = self.depth_pixels(range, map, no_hit, |rgb| rgb);
+        image_from_pixels(self.width_px, self.height_px, pixels)
+    }
+
+    /// The depth image's pixels (see [`Self::depth_image_mapped`]), top row first, each made
+    /// from its RGB by `pixel` (the viewer makes texture pixels): the one place where t becomes
+    /// a depth colour.
+    pub fn depth_pixels<P: Send>(
+        &self,
+        range: DepthRange,
+        map: DepthColourMap,
+        no_hit: [u8; 3],
+        pixel: impl Fn([u8; 3]) -> P + Sync,
+    ) -> Vec<P> {
         let filtered = self
             .depth_grey
             .as_ref()
             .filter(|(grey_range, _)| *grey_range == range)
             .map(|(_, grey)| grey);
-        let pixels = (0..self.t.len())
+        (0..self.t.len())
             .into_par_iter()
             .map(|index| {
                 let t = self.t[index];
-                match filtered {
+                let rgb = match filtered {
                     Some(grey) if map == DepthColourMap::Grey && no_hit == [0; 3] => {
                         [crate::render::depth_map::quantize_f32(grey[index]); 3]
                     }
                     Some(_) | None if t == f64::INFINITY || t.is_nan() => no_hit,
                     Some(grey) => map.rgb_of_grey(f64::from(grey[index])),
                     None => map.rgb(&range, t, no_hit),
-                }
+                };
+                pixel(rgb)
             })
-            .collect();
-        image_from_pixels(self.width_px, self.height_px, pixels)
+            .collect()
     }
 
     /// Colour and depth images side by side in one picture (colour left), as users share them.

@@ -6,7 +6,8 @@
 use egui::{Color32, PointerButton, Pos2, Rect, RichText, Sense, Stroke, TextureHandle, Ui, Vec2};
 use glam::DVec2;
 
-use super::depth_tools::{HISTOGRAM_POINTS, histogram_ui};
+use super::histogram::{HISTOGRAM_POINTS, histogram_ui};
+use super::probe_text::short_number;
 use crate::explore::depth_stats::DepthHistogram;
 use crate::render::MAX_SIDE_PX;
 use crate::render::depth_map::{DepthColourMap, DepthRange};
@@ -272,17 +273,6 @@ fn probe_ui(ui: &mut Ui, lines: &[String], pinned: bool, gestures: &mut ImageGes
     }
 }
 
-/// A number shortened for captions (up to 6 significant digits).
-pub fn short_number(value: f64) -> String {
-    let text = format!("{value:.6}");
-    let trimmed = text.trim_end_matches('0').trim_end_matches('.');
-    if trimmed.len() > 12 {
-        format!("{value:.4e}")
-    } else {
-        trimmed.to_owned()
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -313,13 +303,5 @@ mod tests {
         let px = DVec2::new(50.0, 25.0);
         let back = image_px_of(pos_of_image_px(px, rect, size), rect, size);
         assert!((back - px).length() < 1e-3);
-    }
-
-    #[test]
-    fn short_numbers_for_captions() {
-        assert_eq!(short_number(9.0), "9");
-        assert_eq!(short_number(14.5), "14.5");
-        assert_eq!(short_number(-2.0), "-2");
-        assert_eq!(short_number(1e12), "1.0000e12");
     }
 }

@@ -1,13 +1,11 @@
-//! Depth tuning in the viewer: the histogram of visible t under the depth image (the depth range
-//! drawn on it, its two ends draggable, a legend strip of the colour map below it) and the
-//! side-panel section with the colour map, the no-hit mark and "auto range". The statistics
+//! The histogram of visible t under the depth image: the depth range drawn on it with its two
+//! ends draggable, a legend strip of the colour map below it, and the axis labels. The statistics
 //! themselves are in [`crate::explore::depth_stats`].
 
-use egui::{Color32, CursorIcon, Pos2, Rect, RichText, Sense, Stroke, Ui, Vec2};
+use egui::{Color32, CursorIcon, Pos2, Rect, Sense, Stroke, Ui, Vec2};
 
-use super::images::short_number;
-use super::state::DepthDisplay;
-use crate::explore::depth_stats::{DepthHistogram, MAX_PERCENTILE_CUT};
+use super::probe_text::short_number;
+use crate::explore::depth_stats::DepthHistogram;
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 
 /// Height of the histogram block (bars, legend strip and labels), in points.
@@ -53,6 +51,53 @@ pub fn histogram_axis(histogram: &DepthHistogram, range: &DepthRange) -> (f64, f
     (low - pad, high + pad)
 }
 
+/// Where the histogram's parts are drawn and how its x axis maps t.
+struct Layout {
+    /// The whole block (bars, legend, labels).
+    block: Rect,
+    /// The bars.
+    bars: Rect,
+    /// The colour-map strip under the bars.
+    legend: Rect,
+    /// The t at the axis's left and right ends.
+    axis_low: f64,
+    axis_high: f64,
+}
+
+impl Layout {
+    fn new(block: Rect, histogram: &DepthHistogram, range: &DepthRange) -> Self {
+        let width = block.width();
+        let bars = Rect::from_min_size(
+            Pos2::new(block.left(), block.top() + 4.0),
+            Vec2::new(width, BARS_POINTS),
+        );
+        let legend = Rect::from_min_size(
+            Pos2::new(block.left(), bars.bottom() + 2.0),
+            Vec2::new(width, LEGEND_POINTS),
+        );
+        let (axis_low, axis_high) = histogram_axis(histogram, range);
+        Self {
+            block,
+            bars,
+            legend,
+            axis_low,
+            axis_high,
+        }
+    }
+
+    /// The x of `t` on the axis.
+    fn x_of(&self, t: f64) -> f32 {
+        let share = (t - self.axis_low) / (self.axis_high - self.axis_low);
+        self.bars.left() + share as f32 * self.bars.width()
+    }
+
+    /// The t at `x` on the axis.
+    fn t_of(&self, x: f32) -> f64 {
+        let share = f64::from((x - self.bars.left()) / self.bars.width());
+        self.axis_low + share * (self.axis_high - self.axis_low)
+    }
+}
+
 /// The histogram with the range on it; dragging a handle sets that end of `range` to the t under
 /// the pointer (within the axis). Returns true when a handle moved the range.
 pub fn histogram_ui(
@@ -74,19 +119,19 @@ pub fn histogram_ui(
         );
         return false;
     };
-    let top = block.top() + 4.0;
-    let bars = Rect::from_min_size(Pos2::new(block.left(), top), Vec2::new(width, BARS_POINTS));
-    let legend = Rect::from_min_size(
-        Pos2::new(block.left(), bars.bottom() + 2.0),
-        Vec2::new(width, LEGEND_POINTS),
-    );
-    let (axis_low, axis_high) = histogram_axis(histogram, range);
-    let x_of = |t: f64| bars.left() + ((t - axis_low) / (axis_high - axis_low)) as f32 * width;
-    let t_of = |x: f32| axis_low + f64::from((x - bars.left()) / width) * (axis_high - axis_low);
+    let layout = Layout::new(block, histogram, range);
     let painter = ui.painter_at(block);
-    painter.rect_filled(bars, 0.0, ui.visuals().extreme_bg_color);
+    paint_bars(ui, &painter, &layout, histogram);
+    paint_legend(&painter, &layout, range, colour_map, no_hit_rgb);
+    let moved = range_handles_ui(ui, &painter, &layout, range);
+    paint_labels(ui, &painter, &layout, histogram, no_hit_rgb);
+    moved
+}
 
-    // Bars: each bin from its t interval, height by count relative to the tallest bin.
+/// Bars: each bin from its t interval, height by count relative to the tallest bin.
+fn paint_bars(ui: &Ui, painter: &egui::Painter, layout: &Layout, histogram: &DepthHistogram) {
+    let bars = layout.bars;
+    painter.rect_filled(bars, 0.0, ui.visuals().extreme_bg_color);
     let tallest = histogram.max_count().max(1) as f32;
     let bin_width_t = histogram.bin_width();
     let bar_colour = ui.visuals().text_color().gamma_multiply(0.7);
@@ -95,37 +140,52 @@ pub fn histogram_ui(
             continue;
         }
         let t0 = histogram.t_low + bin as f64 * bin_width_t;
-        let (x0, x1) = (x_of(t0), x_of(t0 + bin_width_t).max(x_of(t0) + 1.0));
+        let x0 = layout.x_of(t0);
+        let x1 = layout.x_of(t0 + bin_width_t).max(x0 + 1.0);
         let height = (count as f32 / tallest).sqrt() * BARS_POINTS;
-        painter.rect_filled(
-            Rect::from_min_max(
-                Pos2::new(x0, bars.bottom() - height),
-                Pos2::new(x1, bars.bottom()),
-            ),
-            0.0,
-            bar_colour,
+        let bar = Rect::from_min_max(
+            Pos2::new(x0, bars.bottom() - height),
+            Pos2::new(x1, bars.bottom()),
         );
+        painter.rect_filled(bar, 0.0, bar_colour);
     }
+}
 
-    // Legend: the colour each t of the axis gets.
-    let columns = (width / 2.0).ceil() as usize;
+/// Legend: the colour each t of the axis gets.
+fn paint_legend(
+    painter: &egui::Painter,
+    layout: &Layout,
+    range: &DepthRange,
+    colour_map: DepthColourMap,
+    no_hit_rgb: [u8; 3],
+) {
+    let legend = layout.legend;
+    let columns = (legend.width() / 2.0).ceil() as usize;
     for column in 0..columns {
         let x = legend.left() + column as f32 * 2.0;
-        let [r, g, b] = colour_map.rgb(range, t_of(x + 1.0), no_hit_rgb);
+        let [r, g, b] = colour_map.rgb(range, layout.t_of(x + 1.0), no_hit_rgb);
         painter.rect_filled(
             Rect::from_min_size(Pos2::new(x, legend.top()), Vec2::new(2.0, LEGEND_POINTS)),
             0.0,
             Color32::from_rgb(r, g, b),
         );
     }
+}
 
-    // The range's two ends, each draggable.
+/// The range's two ends, each a draggable line. Returns true when one moved.
+fn range_handles_ui(
+    ui: &Ui,
+    painter: &egui::Painter,
+    layout: &Layout,
+    range: &mut DepthRange,
+) -> bool {
+    let (bars, legend) = (layout.bars, layout.legend);
     let mut moved = false;
     let accent = ui.visuals().selection.stroke.color;
     for (is_min, label) in [(true, MIN_HANDLE_LABEL), (false, MAX_HANDLE_LABEL)] {
         let t = if is_min { range.min_t } else { range.max_t };
         // NaN (a degenerate axis) puts the handle at the left edge: widget rects must be numbers.
-        let x = match x_of(t) {
+        let x = match layout.x_of(t) {
             x if x.is_nan() => bars.left(),
             x => x.clamp(bars.left(), bars.right()),
         };
@@ -150,7 +210,7 @@ pub fn histogram_ui(
         if response.dragged()
             && let Some(pointer) = response.interact_pointer_pos()
         {
-            let t = t_of(pointer.x.clamp(bars.left(), bars.right()));
+            let t = layout.t_of(pointer.x.clamp(bars.left(), bars.right()));
             if is_min {
                 range.min_t = t;
             } else {
@@ -159,37 +219,48 @@ pub fn histogram_ui(
             moved = true;
         }
     }
+    moved
+}
 
-    let label_y = legend.bottom() + 2.0;
+/// The axis's end labels, the pixel counts, and a swatch of the no-hit colour.
+fn paint_labels(
+    ui: &Ui,
+    painter: &egui::Painter,
+    layout: &Layout,
+    histogram: &DepthHistogram,
+    no_hit_rgb: [u8; 3],
+) {
+    let block = layout.block;
+    let label_y = layout.legend.bottom() + 2.0;
     let font = egui::FontId::proportional(11.0);
     let weak = ui.visuals().weak_text_color();
     painter.text(
         Pos2::new(block.left(), label_y),
         egui::Align2::LEFT_TOP,
-        format!("t {}", short_number(axis_low)),
+        format!("t {}", short_number(layout.axis_low)),
         font.clone(),
         weak,
     );
     painter.text(
         Pos2::new(block.right(), label_y),
         egui::Align2::RIGHT_TOP,
-        format!("t {}", short_number(axis_high)),
+        format!("t {}", short_number(layout.axis_high)),
         font.clone(),
         weak,
     );
-    let [r, g, b] = no_hit_rgb;
+    let counts = format!(
+        "{} visible px · {} no-hit px",
+        histogram.total(),
+        histogram.no_hit
+    );
     let text_rect = painter.text(
         Pos2::new(block.center().x, label_y),
         egui::Align2::CENTER_TOP,
-        format!(
-            "{} visible px · {} no-hit px",
-            histogram.total(),
-            histogram.no_hit
-        ),
+        counts,
         font,
         weak,
     );
-    // A swatch of the no-hit colour after the count.
+    let [r, g, b] = no_hit_rgb;
     painter.rect_filled(
         Rect::from_min_size(
             Pos2::new(text_rect.right() + 4.0, text_rect.top() + 2.0),
@@ -198,52 +269,6 @@ pub fn histogram_ui(
         0.0,
         Color32::from_rgb(r, g, b),
     );
-    moved
-}
-
-/// What the depth section asked for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct DepthToolRequests {
-    /// Fit the depth range to the visible t now.
-    pub auto_range: bool,
-}
-
-/// The side panel's depth section: colour map, no-hit mark, auto range with its percentile cut.
-pub fn depth_tools_ui(ui: &mut Ui, display: &mut DepthDisplay) -> DepthToolRequests {
-    let mut requests = DepthToolRequests::default();
-    ui.horizontal(|ui| {
-        ui.label("colour map");
-        for map in DepthColourMap::ALL {
-            ui.radio_value(&mut display.colour_map, map, map.name());
-        }
-    });
-    ui.checkbox(&mut display.mark_no_hit, "mark no-hit pixels")
-        .on_hover_text(
-            "show pixels where no ray hits in dark blue instead of black (files keep black)",
-        );
-    ui.horizontal(|ui| {
-        if ui
-            .button("Auto range")
-            .on_hover_text("fit depth min and max to the t visible in the view (A)")
-            .clicked()
-        {
-            requests.auto_range = true;
-        }
-        let label = ui.label("ignore % at each end");
-        ui.add(
-            egui::DragValue::new(&mut display.auto_cut_percent)
-                .range(0.0..=MAX_PERCENTILE_CUT)
-                .speed(0.1)
-                .max_decimals(1),
-        )
-        .labelled_by(label.id);
-    });
-    ui.label(
-        RichText::new("drag the lines on the histogram to set the range")
-            .small()
-            .weak(),
-    );
-    requests
 }
 
 #[cfg(test)]

@@ -1,0 +1,218 @@
+//! What the user can ask the viewer for, as [`Action`]s (the toolbar, the panels and the keyboard
+//! report them; [`ViewerApp::apply`] carries them out), and the background writes (exports, the
+//! view saved as a scene) and file dialogs they start.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use super::ViewerApp;
+use super::dialogs::{DialogAnswer, DialogKind, spawn_dialog};
+use super::job::{DepthStyle, ViewerJob, prepare_frame};
+use super::state::ExportFormat;
+use super::status::Status;
+use super::tasks::{Poll, Task};
+use crate::explore::depth_stats::auto_range;
+use crate::explore::navigate;
+use crate::export::{ExportPlan, save_view_as_scene, write_export};
+use crate::output::ImageFormat;
+use crate::render::{View, check_image_size};
+
+/// Something the user asked for.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Action {
+    /// Show a file dialog.
+    OpenDialog(DialogKind),
+    /// Open the scene file at this path.
+    Open(PathBuf),
+    /// Read the open scene file again.
+    Reload,
+    /// Fit centre and size to the scene.
+    FrameAll,
+    /// Back to the file's camera and depth range.
+    ResetView,
+    /// Fit the depth range to the visible t.
+    AutoRange,
+    /// Export the current view to this base path.
+    ExportTo(PathBuf),
+    /// Write the scene with the current camera to this path.
+    SaveViewTo(PathBuf),
+    /// Release the pinned probe.
+    Unpin,
+}
+
+impl ViewerApp {
+    /// Carries out `action`.
+    pub fn apply(&mut self, action: Action) {
+        match action {
+            Action::OpenDialog(kind) => self.open_dialog(kind),
+            Action::Open(path) => self.open(&path),
+            Action::Reload => self.reload(),
+            Action::FrameAll => self.frame_all(),
+            Action::ResetView => self.reset_view(),
+            Action::AutoRange => self.auto_range(),
+            Action::ExportTo(path) => self.export_to(path),
+            Action::SaveViewTo(path) => self.save_view_to(path),
+            Action::Unpin => self.probe.pinned_px = None,
+        }
+    }
+
+    /// "Auto range": fits the depth range to the t visible in the frame on screen, ignoring
+    /// the settings' percentage at each end. Says so when no sphere is visible.
+    pub fn auto_range(&mut self) {
+        let cut = self.settings.depth.auto_cut_percent;
+        match self.shown.as_ref().and_then(|s| auto_range(&s.frame, cut)) {
+            Some(range) => self.view.depth_range = range,
+            None => self.status = Some(Status::info("auto range: no sphere is visible")),
+        }
+    }
+
+    /// "Frame all": fits centre and size to the scene's bounds (direction and up stay).
+    pub fn frame_all(&mut self) {
+        self.view = navigate::frame_all(&self.loaded.scene, &self.view);
+    }
+
+    /// Restores the file's camera and initial depth range, keeping the image size.
+    pub fn reset_view(&mut self) {
+        let (width_px, height_px) = (self.view.width_px, self.view.height_px);
+        self.view = View {
+            width_px,
+            height_px,
+            ..self.loaded.file_view
+        };
+    }
+
+    /// Exports the current view to `base_path` (see [`crate::export::ExportPaths`]) on a
+    /// background thread; the outcome appears in the status bar.
+    pub fn export_to(&mut self, base_path: PathBuf) {
+        let export = self.settings.export.clone();
+        let format = match export.format {
+            ExportFormat::Png => ImageFormat::Png,
+            ExportFormat::Tga => ImageFormat::Tga,
+        };
+        let mut view = self.view;
+        if !export.displayed_size {
+            view.width_px = export.size_px[0];
+            view.height_px = export.size_px[1];
+            if let Err(error) = check_image_size(view.width_px, view.height_px) {
+                self.status = Some(Status::error(format!("export: {error}")));
+                return;
+            }
+        }
+        let plan = ExportPlan {
+            base_path,
+            format,
+            side_by_side: export.side_by_side,
+            colour_map: self.settings.depth.colour_map,
+            extra_depth: export.extra_depth,
+        };
+        let quality = self.settings.quality;
+        // Reuse the frame on screen when it is exactly what would be exported.
+        let ready = self
+            .shown
+            .as_ref()
+            .filter(|s| s.view == view && s.scene_epoch == self.scene_epoch && s.quality == quality)
+            .map(|s| Arc::clone(&s.frame));
+        let job = ViewerJob {
+            scene: Arc::clone(&self.loaded.scene),
+            view,
+            scene_epoch: self.scene_epoch,
+            quality,
+            depth_style: DepthStyle::default(),
+        };
+        self.write_in_background("exporting…", move || {
+            let frame = match ready {
+                Some(frame) => frame,
+                None => prepare_frame(&job).map_err(|e| e.to_string())?.frame,
+            };
+            let written = write_export(&job.scene, &view, &quality, &frame, &plan)
+                .map_err(|e| e.to_string())?;
+            let names: Vec<String> = written.iter().map(|p| p.display().to_string()).collect();
+            Ok(format!("exported {}", names.join(", ")))
+        });
+    }
+
+    /// "Save view as scene": writes the scene with the current camera to `path` (in the
+    /// background; the outcome appears in the status bar).
+    pub fn save_view_to(&mut self, path: PathBuf) {
+        let scene = Arc::clone(&self.loaded.scene);
+        let view = self.view;
+        self.write_in_background("saving the view…", move || {
+            save_view_as_scene(&scene, &view, &path).map_err(|e| e.to_string())?;
+            Ok(format!("saved the view as {}", path.display()))
+        });
+    }
+
+    /// Runs `write` as a task; its message lands in the status bar.
+    fn write_in_background(
+        &mut self,
+        running: &str,
+        write: impl FnOnce() -> Result<String, String> + Send + 'static,
+    ) {
+        if self.writing.is_some() {
+            self.status = Some(Status::error("wait: a file is still being written"));
+            return;
+        }
+        match Task::spawn("export", &self.ctx, move |_| write()) {
+            Ok(task) => {
+                self.writing = Some(task);
+                self.status = Some(Status::info(running));
+            }
+            Err(error) => {
+                self.status = Some(Status::error(format!("cannot start writing: {error}")));
+            }
+        }
+    }
+
+    /// Shows a native file dialog, or says why none can be shown.
+    fn open_dialog(&mut self, kind: DialogKind) {
+        if let Some(reason) = self.dialog_note {
+            self.status = Some(Status::error(reason));
+            return;
+        }
+        if self.dialog.is_some() {
+            return;
+        }
+        let suggested = match kind {
+            DialogKind::SaveScene => &self.settings.export.scene_path,
+            _ => &self.settings.export.path,
+        };
+        match spawn_dialog(kind, &self.ctx, suggested) {
+            Ok(dialog) => self.dialog = Some(dialog),
+            Err(error) => {
+                self.status = Some(Status::error(format!("cannot open a file dialog: {error}")));
+            }
+        }
+    }
+
+    /// Takes a dialog's answer and a finished write.
+    pub(super) fn poll_background(&mut self) {
+        if let Some(dialog) = &self.dialog {
+            match dialog.poll() {
+                DialogAnswer::Waiting => {}
+                DialogAnswer::Cancelled(_) => self.dialog = None,
+                DialogAnswer::Chosen(kind, path) => {
+                    self.dialog = None;
+                    match kind {
+                        DialogKind::Open => self.open(&path),
+                        DialogKind::Export => {
+                            self.settings.export.path = path.display().to_string();
+                            self.export_to(path);
+                        }
+                        DialogKind::SaveScene => {
+                            self.settings.export.scene_path = path.display().to_string();
+                            self.save_view_to(path);
+                        }
+                    }
+                }
+            }
+        }
+        let finished = match self.writing.as_ref().map(Task::poll) {
+            None | Some(Poll::Running) => return,
+            Some(Poll::Done(Ok(done))) => Status::info(done),
+            Some(Poll::Done(Err(error))) => Status::error(format!("writing failed: {error}")),
+            Some(Poll::Lost) => Status::error("writing failed: the writing thread stopped"),
+        };
+        self.status = Some(finished);
+        self.writing = None;
+    }
+}

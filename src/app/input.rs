@@ -1,0 +1,155 @@
+//! Input that is not a widget's: keyboard shortcuts, files dropped on the window, the watched
+//! file changing, navigation from the keyboard, and pointer gestures on the images — all turned
+//! into [`crate::explore::navigate`] calls or [`Action`]s.
+
+use egui::{Key, KeyboardShortcut, Modifiers};
+use glam::DVec2;
+
+use super::ViewerApp;
+use super::actions::Action;
+use super::dialogs::DialogKind;
+use super::reload::WatchState;
+use super::ui::images::{ImageGestures, ORBIT_RAD_PER_POINT};
+use crate::explore::navigate;
+
+/// Keyboard pan step, as a fraction of the image's shorter side.
+pub const KEY_PAN_FRACTION: f64 = 0.1;
+
+/// Keyboard orbit step (Shift+arrow), radians.
+pub const KEY_ORBIT_RAD: f64 = std::f64::consts::PI / 36.0;
+
+/// Keyboard zoom step: `+` divides the size by this, `-` multiplies it.
+pub const KEY_ZOOM_FACTOR: f64 = 1.25;
+
+/// The keys navigation listens to.
+const NAVIGATION_KEYS: [Key; 11] = [
+    Key::ArrowLeft,
+    Key::ArrowRight,
+    Key::ArrowUp,
+    Key::ArrowDown,
+    Key::Plus,
+    Key::Equals,
+    Key::Minus,
+    Key::F,
+    Key::Home,
+    Key::A,
+    Key::Escape,
+];
+
+impl ViewerApp {
+    /// Shortcuts (Ctrl+O, Ctrl+S, Ctrl+R), dropped files, the watched file, and navigation keys.
+    pub(super) fn handle_input(&mut self, ctx: &egui::Context) {
+        let shortcuts = [
+            (Key::O, Action::OpenDialog(DialogKind::Open)),
+            (Key::S, Action::OpenDialog(DialogKind::Export)),
+            (Key::R, Action::Reload),
+        ];
+        let (pressed, dropped) = ctx.input_mut(|input| {
+            let pressed: Vec<Action> = shortcuts
+                .into_iter()
+                .filter(|(key, _)| {
+                    input.consume_shortcut(&KeyboardShortcut::new(Modifiers::COMMAND, *key))
+                })
+                .map(|(_, action)| action)
+                .collect();
+            let dropped = input
+                .raw
+                .dropped_files
+                .iter()
+                .map(|file| file.path().to_path_buf())
+                .find(|path| !path.as_os_str().is_empty());
+            (pressed, dropped)
+        });
+        for action in pressed {
+            self.apply(action);
+        }
+        match self.watcher.as_ref().map(|watcher| watcher.poll()) {
+            Some(WatchState::Changed) => self.reload(),
+            Some(WatchState::Settling(wait)) => ctx.request_repaint_after(wait),
+            _ => {}
+        }
+        if let Some(path) = dropped {
+            self.open(&path);
+        }
+        self.navigation_keys(ctx);
+    }
+
+    /// Keyboard navigation while no text field or slider has the keyboard: arrows move the
+    /// camera, Shift+arrows orbit, `+`/`-` zoom at the image centre, F frames all, Home resets,
+    /// A fits the depth range, Escape unpins the probe.
+    fn navigation_keys(&mut self, ctx: &egui::Context) {
+        if ctx.memory(|memory| memory.focused().is_some()) {
+            return;
+        }
+        let (shift, pressed) = ctx.input(|input| {
+            let pressed: Vec<Key> = NAVIGATION_KEYS
+                .into_iter()
+                .filter(|&key| input.key_pressed(key))
+                .collect();
+            (input.modifiers.shift, pressed)
+        });
+        let (width, height) = (
+            f64::from(self.view.width_px),
+            f64::from(self.view.height_px),
+        );
+        let step_px = KEY_PAN_FRACTION * width.min(height);
+        let centre_px = DVec2::new(0.5 * width, 0.5 * height);
+        for key in pressed {
+            let arrow = match key {
+                Key::ArrowLeft => Some(DVec2::NEG_X),
+                Key::ArrowRight => Some(DVec2::X),
+                Key::ArrowUp => Some(DVec2::Y),
+                Key::ArrowDown => Some(DVec2::NEG_Y),
+                _ => None,
+            };
+            match (key, arrow) {
+                (_, Some(direction)) if shift => {
+                    let turn = direction * KEY_ORBIT_RAD;
+                    self.orbit(turn.x, turn.y);
+                }
+                // The camera moves along the arrow: the picture moves the other way.
+                (_, Some(direction)) => {
+                    self.view = navigate::pan(&self.view, -direction * step_px);
+                }
+                (Key::Plus | Key::Equals, _) => {
+                    self.view = navigate::zoom_at(&self.view, 1.0 / KEY_ZOOM_FACTOR, centre_px);
+                }
+                (Key::Minus, _) => {
+                    self.view = navigate::zoom_at(&self.view, KEY_ZOOM_FACTOR, centre_px);
+                }
+                (Key::F, _) => self.apply(Action::FrameAll),
+                (Key::Home, _) => self.apply(Action::ResetView),
+                (Key::A, _) => self.apply(Action::AutoRange),
+                (Key::Escape, _) => self.apply(Action::Unpin),
+                _ => {}
+            }
+        }
+    }
+
+    /// Applies pointer gestures on the images: pan, orbit, zoom, hover and pin.
+    pub fn apply_gestures(&mut self, gestures: &ImageGestures) {
+        if gestures.pan_px != DVec2::ZERO {
+            self.view = navigate::pan(&self.view, gestures.pan_px);
+        }
+        if gestures.orbit_points != DVec2::ZERO {
+            let turn = gestures.orbit_points * ORBIT_RAD_PER_POINT;
+            self.orbit(turn.x, turn.y);
+        }
+        if let Some((factor, anchor_px)) = gestures.zoom {
+            self.view = navigate::zoom_at(&self.view, factor, anchor_px);
+        }
+        self.probe.hover_px = gestures.hover_px;
+        if let Some(px) = gestures.clicked_px {
+            self.probe.pinned_px = Some(px);
+        }
+        if gestures.unpin {
+            self.apply(Action::Unpin);
+        }
+    }
+
+    /// Orbits around the scene's centre: `yaw_rad` as a drag to the right, `pitch_rad` up.
+    fn orbit(&mut self, yaw_rad: f64, pitch_rad: f64) {
+        let pivot = navigate::orbit_pivot(&self.loaded.scene);
+        self.view = navigate::orbit(&self.view, pivot, yaw_rad, pitch_rad);
+    }
+}

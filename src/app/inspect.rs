@@ -1,0 +1,104 @@
+//! What the viewer shows, read from outside: the view, the scene, the frame on screen, the probe,
+//! the messages. The tests and tools (screenshots, benchmarks) drive the viewer through these
+//! and through [`ViewerApp::apply`].
+
+use std::time::Duration;
+
+use glam::DVec2;
+
+use super::ViewerApp;
+use super::state::{LoadedScene, Settings};
+use crate::explore::depth_stats::DepthHistogram;
+use crate::explore::probe::{Probe, probe};
+use crate::render::{Frame, View};
+
+impl ViewerApp {
+    /// The view the controls currently describe.
+    pub fn view(&self) -> &View {
+        &self.view
+    }
+
+    /// Mutable access to the view (as the controls edit it).
+    pub fn view_mut(&mut self) -> &mut View {
+        &mut self.view
+    }
+
+    /// The scene on screen.
+    pub fn loaded_scene(&self) -> &LoadedScene {
+        &self.loaded
+    }
+
+    /// The frame on screen, with the view it was rendered for.
+    pub fn shown_frame(&self) -> Option<(&Frame, &View)> {
+        self.shown
+            .as_ref()
+            .map(|shown| (shown.frame.as_ref(), &shown.view))
+    }
+
+    /// The persisted settings.
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// The persisted settings, to change.
+    pub fn settings_mut(&mut self) -> &mut Settings {
+        &mut self.settings
+    }
+
+    /// The histogram of visible t of the frame on screen.
+    pub fn histogram(&self) -> Option<&DepthHistogram> {
+        self.shown.as_ref().and_then(|s| s.histogram.as_ref())
+    }
+
+    /// Probes the frame on screen at image position `px` (pixels, y up).
+    pub fn probe_at(&self, px: DVec2) -> Option<Probe> {
+        let shown = self.shown.as_ref()?;
+        if shown.scene_epoch != self.scene_epoch || !(px.x >= 0.0 && px.y >= 0.0) {
+            return None;
+        }
+        let (x_px, y_up_px) = (px.x.floor() as u32, px.y.floor() as u32);
+        probe(&self.loaded.scene, &shown.view, &shown.frame, x_px, y_up_px)
+    }
+
+    /// The pointer's position on an image (image pixels, y up), if it is over one.
+    pub fn hover_px(&self) -> Option<DVec2> {
+        self.probe.hover_px
+    }
+
+    /// The probe of the pixel under the pointer.
+    pub fn hover_probe(&self) -> Option<Probe> {
+        self.probe.hover_px.and_then(|px| self.probe_at(px))
+    }
+
+    /// The probe of the pinned pixel.
+    pub fn pinned_probe(&self) -> Option<Probe> {
+        self.probe.pinned_px.and_then(|px| self.probe_at(px))
+    }
+
+    /// The error of the last scene that failed to load, if shown.
+    pub fn scene_error(&self) -> Option<&str> {
+        self.scene_error.as_deref()
+    }
+
+    /// The status bar's message and whether it is an error.
+    pub fn message(&self) -> Option<(&str, bool)> {
+        self.status
+            .as_ref()
+            .map(|s| (s.text.as_str(), s.is_error()))
+    }
+
+    /// True while an export or a saved view is being written.
+    pub fn export_running(&self) -> bool {
+        self.writing.is_some()
+    }
+
+    /// True while a scene file is being read.
+    pub fn loading(&self) -> bool {
+        self.loading.is_some()
+    }
+
+    /// Waits (for tests and tools) until the worker has nothing to do.
+    pub fn wait_for_worker(&self, timeout: Duration) -> bool {
+        self.worker.as_ref().is_none_or(|w| w.wait_idle(timeout))
+    }
+}

@@ -1,0 +1,182 @@
+//! Opening and reloading scene files off the UI thread. A million-sphere file takes about a
+//! second to read and parse; meanwhile the viewer keeps drawing (the previous scene stays on
+//! screen and stays explorable) and, once a load has run for [`SHOW_PROGRESS_AFTER`], shows its
+//! progress. A finished load is adopted here: an open replaces the view and watches the file, a
+//! reload keeps the user's camera unless it was still the file's.
+
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+use super::ViewerApp;
+use super::reload::FileWatcher;
+use super::state::LoadedScene;
+use super::status::Status;
+use super::tasks::{Poll, Task};
+use crate::render::View;
+
+/// Loads shorter than this show no progress (most scenes load in a few milliseconds).
+pub const SHOW_PROGRESS_AFTER: Duration = Duration::from_millis(500);
+
+/// Why a scene is loaded: the viewer adopts a reload differently from an open.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LoadKind {
+    /// A file the user opened.
+    Open,
+    /// The open file again (changed on disk, or Reload).
+    Reload,
+}
+
+/// A load running in the background.
+#[derive(Debug)]
+pub struct PendingLoad {
+    /// The file being loaded.
+    pub path: PathBuf,
+    /// Open or reload.
+    pub kind: LoadKind,
+    task: Task<Result<LoadedScene, String>>,
+}
+
+impl PendingLoad {
+    /// Starts loading `path` (image size `size_px` for the scene's initial view).
+    pub fn start(
+        path: &Path,
+        kind: LoadKind,
+        size_px: (u32, u32),
+        ctx: &egui::Context,
+    ) -> std::io::Result<Self> {
+        let thread_path = path.to_path_buf();
+        let task = Task::spawn("scene-load", ctx, move |progress| {
+            LoadedScene::load_with_progress(&thread_path, size_px, &|share| {
+                progress.report(share);
+            })
+            .map_err(|error| error.to_string())
+        })?;
+        Ok(Self {
+            path: path.to_path_buf(),
+            kind,
+            task,
+        })
+    }
+
+    /// The share of the load done, in [0, 1].
+    pub fn fraction(&self) -> f32 {
+        self.task.fraction()
+    }
+
+    /// Whether the load has run long enough to show its progress.
+    pub fn shows_progress(&self) -> bool {
+        self.task.elapsed() >= SHOW_PROGRESS_AFTER
+    }
+}
+
+impl ViewerApp {
+    /// Starts loading the scene at `path` in the background; once read, it replaces the scene
+    /// on screen and is watched for changes. On failure the error is shown and the previous scene
+    /// stays. A load started while another runs replaces it.
+    pub fn open(&mut self, path: &Path) {
+        self.start_load(path, LoadKind::Open);
+    }
+
+    /// Reads the open file again (in the background). A broken file shows its error and the last
+    /// good scene stays; a good one replaces the scene and keeps the user's camera unless it was
+    /// still the file's.
+    pub fn reload(&mut self) {
+        let Some(path) = self.loaded.path.clone() else {
+            self.status = Some(Status::info(
+                "the embedded default scene has no file to reload",
+            ));
+            return;
+        };
+        self.start_load(&path, LoadKind::Reload);
+    }
+
+    fn start_load(&mut self, path: &Path, kind: LoadKind) {
+        let size = (self.view.width_px, self.view.height_px);
+        match PendingLoad::start(path, kind, size, &self.ctx) {
+            Ok(pending) => self.loading = Some(pending),
+            Err(error) => {
+                self.scene_error =
+                    Some(format!("{}: cannot start loading: {error}", path.display()));
+            }
+        }
+    }
+
+    /// Takes a finished load: adopts the scene or shows the error.
+    pub(super) fn poll_load(&mut self) {
+        let Some(pending) = &self.loading else {
+            return;
+        };
+        let result = match pending.task.poll() {
+            Poll::Running => {
+                let wait = match pending.shows_progress() {
+                    true => Duration::from_millis(50),
+                    false => SHOW_PROGRESS_AFTER,
+                };
+                self.ctx.request_repaint_after(wait);
+                return;
+            }
+            Poll::Done(result) => result,
+            Poll::Lost => Err(format!(
+                "{}: the loading thread stopped",
+                pending.path.display()
+            )),
+        };
+        let (path, kind) = (pending.path.clone(), pending.kind);
+        self.loading = None;
+        let loaded = match result {
+            Ok(loaded) => loaded,
+            Err(error) => {
+                self.scene_error = Some(error);
+                return;
+            }
+        };
+        match kind {
+            LoadKind::Open => self.adopt_opened(loaded, &path),
+            LoadKind::Reload => {
+                let still_file_view = View {
+                    width_px: self.loaded.file_view.width_px,
+                    height_px: self.loaded.file_view.height_px,
+                    ..self.view
+                } == self.loaded.file_view;
+                self.adopt(loaded, !still_file_view);
+                self.status = Some(Status::info(format!("reloaded {}", path.display())));
+            }
+        }
+    }
+
+    /// Puts a newly opened scene on screen, remembers it and watches its file.
+    fn adopt_opened(&mut self, loaded: LoadedScene, path: &Path) {
+        self.adopt(loaded, false);
+        self.probe.pinned_px = None;
+        self.settings.last_scene = Some(path.to_path_buf());
+        self.path_text = path.display().to_string();
+        self.ctx
+            .send_viewport_cmd(egui::ViewportCommand::Title(format!(
+                "raytracer — {}",
+                path.display()
+            )));
+        let ctx = self.ctx.clone();
+        self.watcher = match FileWatcher::watch(path, move || ctx.request_repaint()) {
+            Ok(watcher) => Some(watcher),
+            Err(error) => {
+                self.status = Some(Status::error(format!("live reload is off: {error}")));
+                None
+            }
+        };
+    }
+
+    /// Puts `loaded` on screen; `keep_view` keeps the current camera and depth range.
+    fn adopt(&mut self, loaded: LoadedScene, keep_view: bool) {
+        let (width_px, height_px) = (self.view.width_px, self.view.height_px);
+        self.loaded = loaded;
+        if !keep_view {
+            self.view = View {
+                width_px,
+                height_px,
+                ..self.loaded.file_view
+            };
+        }
+        self.scene_epoch += 1;
+        self.scene_error = None;
+    }
+}

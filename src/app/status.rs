@@ -1,0 +1,65 @@
+//! [`Status`]: the one message the status bar shows — what kind it is, its text, and what clears
+//! it — instead of strings matched by their prefix.
+
+/// Whether a message reports a failure.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StatusKind {
+    /// Something the user asked for happened (or is happening).
+    Info,
+    /// Something failed.
+    Error,
+}
+
+/// What makes a message go away (besides being replaced by another).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Clears {
+    /// It stays until another message replaces it.
+    WhenReplaced,
+    /// The view could not be rendered: the next frame that renders clears it.
+    WhenAFrameRenders,
+}
+
+/// A status-bar message.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Status {
+    /// Info or error.
+    pub kind: StatusKind,
+    /// The text shown.
+    pub text: String,
+    /// What clears it.
+    pub clears: Clears,
+}
+
+impl Status {
+    /// Information that stays until replaced.
+    pub fn info(text: impl Into<String>) -> Self {
+        Self {
+            kind: StatusKind::Info,
+            text: text.into(),
+            clears: Clears::WhenReplaced,
+        }
+    }
+
+    /// An error that stays until replaced.
+    pub fn error(text: impl Into<String>) -> Self {
+        Self {
+            kind: StatusKind::Error,
+            text: text.into(),
+            clears: Clears::WhenReplaced,
+        }
+    }
+
+    /// The view cannot be rendered; cleared once a frame renders again.
+    pub fn view_error(text: impl std::fmt::Display) -> Self {
+        Self {
+            kind: StatusKind::Error,
+            text: format!("view: {text}"),
+            clears: Clears::WhenAFrameRenders,
+        }
+    }
+
+    /// Whether this is an error.
+    pub fn is_error(&self) -> bool {
+        self.kind == StatusKind::Error
+    }
+}

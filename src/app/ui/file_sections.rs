@@ -1,0 +1,128 @@
+//! The side panel's file sections: opening a typed path, saving the view as a scene, and the
+//! export options (all usable without a file dialog).
+
+use egui::{RichText, Ui};
+
+use crate::app::state::{ExportFormat, ExportSettings};
+use crate::export::ExtraDepth;
+use crate::output::depth_file::RawDepthFormat;
+use crate::render::MAX_SIDE_PX;
+
+/// What the file section asked for.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct FileRequests {
+    /// Open the scene at the typed path.
+    pub open_path: Option<String>,
+    /// Write the scene with the current camera to the typed path.
+    pub save_view: bool,
+}
+
+/// A typed scene path with an "Open path" button, and a path to save the current view as a scene
+/// file to (both work without any file dialog).
+pub fn file_ui(ui: &mut Ui, path_text: &mut String, save_path: &mut String) -> FileRequests {
+    let mut requests = FileRequests::default();
+    ui.heading("Scene file");
+    ui.horizontal(|ui| {
+        let label = ui.label("view to");
+        ui.add(egui::TextEdit::singleline(save_path).desired_width(150.0))
+            .labelled_by(label.id);
+        if ui
+            .button("Save view as scene")
+            .on_hover_text("write the scene with the current camera (centre, direction, up, size)")
+            .clicked()
+        {
+            requests.save_view = true;
+        }
+    });
+    ui.horizontal(|ui| {
+        let label = ui.label("path");
+        let field = ui
+            .add(egui::TextEdit::singleline(path_text).desired_width(170.0))
+            .labelled_by(label.id);
+        let entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+        if ui.button("Open path").clicked() || entered {
+            requests.open_path = Some(path_text.clone());
+        }
+    });
+    requests
+}
+
+/// What the export section asked for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct ExportRequests {
+    /// Write to the typed path now.
+    pub export_to_path: bool,
+}
+
+/// Export options: size, format, side by side, and the path to write to.
+pub fn export_ui(
+    ui: &mut Ui,
+    settings: &mut ExportSettings,
+    dialog_note: Option<&str>,
+) -> ExportRequests {
+    let mut requests = ExportRequests::default();
+    ui.heading("Export");
+    ui.checkbox(&mut settings.displayed_size, "displayed size");
+    if !settings.displayed_size {
+        ui.horizontal(|ui| {
+            let label = ui.label("export size");
+            ui.add(egui::DragValue::new(&mut settings.size_px[0]).range(1..=MAX_SIDE_PX))
+                .labelled_by(label.id);
+            ui.label("×");
+            ui.add(egui::DragValue::new(&mut settings.size_px[1]).range(1..=MAX_SIDE_PX))
+                .labelled_by(label.id);
+        });
+    }
+    ui.horizontal(|ui| {
+        ui.radio_value(&mut settings.format, ExportFormat::Png, "PNG");
+        ui.radio_value(&mut settings.format, ExportFormat::Tga, "TGA");
+    });
+    ui.checkbox(&mut settings.side_by_side, "also side by side");
+    ui.horizontal(|ui| {
+        let label = ui.label("depth also as");
+        let choices = [
+            (ExtraDepth::None, "nothing more"),
+            (ExtraDepth::Png16, "16-bit PNG"),
+            (ExtraDepth::Raw(RawDepthFormat::Pfm), "raw t, PFM"),
+            (ExtraDepth::Raw(RawDepthFormat::Exr), "raw t, EXR"),
+        ];
+        let selected = choices
+            .iter()
+            .find(|(choice, _)| *choice == settings.extra_depth)
+            .map_or("nothing more", |(_, name)| name);
+        egui::ComboBox::from_id_salt("extra depth")
+            .selected_text(selected)
+            .show_ui(ui, |ui| {
+                for (choice, name) in choices {
+                    ui.selectable_value(&mut settings.extra_depth, choice, name);
+                }
+            })
+            .response
+            .labelled_by(label.id);
+    });
+    ui.horizontal(|ui| {
+        let label = ui.label("to");
+        ui.add(egui::TextEdit::singleline(&mut settings.path).desired_width(150.0))
+            .labelled_by(label.id);
+        if ui.button("Export to path").clicked() {
+            requests.export_to_path = true;
+        }
+    });
+    ui.label(
+        RichText::new(
+            "writes <name>_colour, <name>_depth (in the colour map on screen), <name>_both, \
+             <name>_scene.txt (the current camera) and <name>_command.sh (the command line \
+             that renders the same files)",
+        )
+        .small()
+        .weak(),
+    );
+    if let Some(note) = dialog_note {
+        ui.label(
+            RichText::new(note)
+                .small()
+                .color(ui.visuals().warn_fg_color),
+        );
+    }
+    requests
+}

@@ -1,0 +1,20 @@
+//! The viewer's drawing: each part a `*_ui` function over plain state that reports what the user
+//! asked for; the coordinator ([`super::ViewerApp`]) applies it.
+//!
+//! * [`toolbar`]: the buttons along the top
+//! * [`view_controls`]: camera and depth-range sliders, the quality section
+//! * [`depth_section`]: colour map, no-hit mark, auto range
+//! * [`file_sections`]: open a typed path, save the view, export options
+//! * [`images`]: the two images, their pointer gestures, the probe under them
+//! * [`histogram`]: the histogram of visible t with the draggable range
+//! * [`probe_text`]: what the probe says about a pixel
+//! * [`status_bar`]: the status bar and the error banner
+
+pub mod depth_section;
+pub mod file_sections;
+pub mod histogram;
+pub mod images;
+pub mod probe_text;
+pub mod status_bar;
+pub mod toolbar;
+pub mod view_controls;

@@ -1,0 +1,75 @@
+//! The probe's text: the lines describing what a pixel's ray hits, and numbers shortened for
+//! captions and labels.
+
+use crate::explore::probe::Probe;
+
+/// Three lines describing a probe: where the pixel is, what its ray hits, and where.
+pub fn describe_probe(name: &str, probe: &Probe) -> Vec<String> {
+    let short = short_number;
+    let mut lines = vec![format!(
+        "{name:<6} pixel ({}, {}) · screen ({}, {})",
+        probe.x_px,
+        probe.y_up_px,
+        short(probe.screen_world.x),
+        short(probe.screen_world.y)
+    )];
+    match &probe.hit {
+        None => lines.push("       no hit".to_owned()),
+        Some(hit) => {
+            let material = match hit.material_index {
+                Some(index) => format!(
+                    "material #{index} ({}, {}, {})",
+                    short(f64::from(hit.diffuse_colour.x)),
+                    short(f64::from(hit.diffuse_colour.y)),
+                    short(f64::from(hit.diffuse_colour.z))
+                ),
+                None => "default material (white)".to_owned(),
+            };
+            lines.push(format!(
+                "       t {} · sphere #{} · {material}",
+                short(hit.t),
+                hit.sphere_index
+            ));
+            lines.push(format!(
+                "       hit at world ({}, {}, {})",
+                short(hit.point_world.x),
+                short(hit.point_world.y),
+                short(hit.point_world.z)
+            ));
+        }
+    }
+    lines
+}
+
+/// The probe's lines: the pinned pixel first, then the hovered one.
+pub fn probe_lines(pinned: Option<Probe>, hover: Option<Probe>) -> Vec<String> {
+    [("pinned", pinned), ("hover", hover)]
+        .into_iter()
+        .filter_map(|(name, probe)| probe.map(|probe| describe_probe(name, &probe)))
+        .flatten()
+        .collect()
+}
+
+/// A number shortened for captions (up to 6 significant digits).
+pub fn short_number(value: f64) -> String {
+    let text = format!("{value:.6}");
+    let trimmed = text.trim_end_matches('0').trim_end_matches('.');
+    if trimmed.len() > 12 {
+        format!("{value:.4e}")
+    } else {
+        trimmed.to_owned()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn short_numbers_for_captions() {
+        assert_eq!(short_number(9.0), "9");
+        assert_eq!(short_number(14.5), "14.5");
+        assert_eq!(short_number(-2.0), "-2");
+        assert_eq!(short_number(1e12), "1.0000e12");
+    }
+}
