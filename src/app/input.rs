@@ -63,10 +63,8 @@ impl ViewerApp {
         for action in pressed {
             self.apply(action);
         }
-        match self.watcher.as_ref().map(|watcher| watcher.poll()) {
-            Some(WatchState::Changed) => self.reload(),
-            Some(WatchState::Settling(wait)) => ctx.request_repaint_after(wait),
-            _ => {}
+        if let Some(WatchState::Changed) = self.watcher.as_ref().map(|watcher| watcher.poll()) {
+            self.reload();
         }
         if let Some(path) = dropped {
             self.open(&path);
