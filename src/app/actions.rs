@@ -19,7 +19,7 @@ use crate::render::{View, check_image_size};
 
 /// Something the user asked for.
 #[derive(Debug, Clone, PartialEq)]
-pub enum Action {
+pub(crate) enum Action {
     /// Show a file dialog.
     OpenDialog(DialogKind),
     /// Open the scene file at this path.
@@ -42,7 +42,7 @@ pub enum Action {
 
 impl ViewerApp {
     /// Carries out `action`.
-    pub fn apply(&mut self, action: Action) {
+    pub(crate) fn apply(&mut self, action: Action) {
         match action {
             Action::OpenDialog(kind) => self.open_dialog(kind),
             Action::Open(path) => self.open(&path),
@@ -72,7 +72,7 @@ impl ViewerApp {
     }
 
     /// Restores the file's camera and initial depth range, keeping the image size.
-    pub fn reset_view(&mut self) {
+    pub(crate) fn reset_view(&mut self) {
         let (width_px, height_px) = (self.view.width_px, self.view.height_px);
         self.view = View {
             width_px,
@@ -83,7 +83,7 @@ impl ViewerApp {
 
     /// Exports the current view to `base_path` (see [`crate::export::ExportPaths`]) on a
     /// background thread; the outcome appears in the status bar.
-    pub fn export_to(&mut self, base_path: PathBuf) {
+    pub(crate) fn export_to(&mut self, base_path: PathBuf) {
         let export = self.settings.export.clone();
         let format = match export.format {
             ExportFormat::Png => ImageFormat::Png,
@@ -133,7 +133,7 @@ impl ViewerApp {
 
     /// "Save view as scene": writes the scene with the current camera to `path` (in the
     /// background; the outcome appears in the status bar).
-    pub fn save_view_to(&mut self, path: PathBuf) {
+    pub(crate) fn save_view_to(&mut self, path: PathBuf) {
         let scene = Arc::clone(&self.loaded.scene);
         let view = self.view;
         self.write_in_background("saving the view…", move || {

@@ -9,7 +9,7 @@ use super::tasks::{Poll, Task};
 
 /// Which dialog an answer belongs to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum DialogKind {
+pub(crate) enum DialogKind {
     /// "Open scene".
     Open,
     /// "Export to".
@@ -20,14 +20,14 @@ pub enum DialogKind {
 
 /// A dialog that is open (or whose answer has not been read yet).
 #[derive(Debug)]
-pub struct PendingDialog {
+pub(crate) struct PendingDialog {
     kind: DialogKind,
     task: Task<Option<PathBuf>>,
 }
 
 /// The dialog's outcome.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub enum DialogAnswer {
+pub(crate) enum DialogAnswer {
     /// Not answered yet.
     Waiting,
     /// The user chose a file.
@@ -38,7 +38,7 @@ pub enum DialogAnswer {
 
 impl PendingDialog {
     /// Checks for the answer without blocking.
-    pub fn poll(&self) -> DialogAnswer {
+    pub(crate) fn poll(&self) -> DialogAnswer {
         match self.task.poll() {
             Poll::Done(Some(path)) => DialogAnswer::Chosen(self.kind, path),
             Poll::Done(None) | Poll::Lost => DialogAnswer::Cancelled(self.kind),
@@ -48,7 +48,7 @@ impl PendingDialog {
 }
 
 /// Why no native dialog can be shown here, or `None` if one probably can.
-pub fn dialog_unavailable_reason() -> Option<&'static str> {
+pub(crate) fn dialog_unavailable_reason() -> Option<&'static str> {
     let has_session_bus = std::env::var_os("DBUS_SESSION_BUS_ADDRESS").is_some();
     let has_zenity = std::env::var_os("PATH").is_some_and(|paths| {
         std::env::split_paths(&paths).any(|folder| folder.join("zenity").is_file())
@@ -64,7 +64,7 @@ pub fn dialog_unavailable_reason() -> Option<&'static str> {
 }
 
 /// Opens a native dialog on its own thread.
-pub fn spawn_dialog(
+pub(crate) fn spawn_dialog(
     kind: DialogKind,
     ctx: &egui::Context,
     suggested_name: &str,

@@ -14,32 +14,32 @@ use crate::explore::depth_stats::DepthHistogram;
 use crate::render::{Frame, Quality, View};
 
 /// How long the view must stay unchanged before a preview is refined to the chosen quality.
-pub const REFINE_DELAY: Duration = Duration::from_millis(150);
+pub(crate) const REFINE_DELAY: Duration = Duration::from_millis(150);
 
 /// What the worker is asked for: a view of a scene load at a quality, its depth drawn in a style.
 pub(super) type Wanted = (View, u64, Quality, DepthStyle);
 
 /// The frame on screen.
 pub(super) struct Shown {
-    pub frame: Arc<Frame>,
-    pub view: View,
-    pub scene_epoch: u64,
-    pub quality: Quality,
-    pub depth_style: DepthStyle,
-    pub colour: TextureHandle,
-    pub depth: TextureHandle,
-    pub histogram: Option<DepthHistogram>,
-    pub render_ms: f64,
+    pub(crate) frame: Arc<Frame>,
+    pub(crate) view: View,
+    pub(crate) scene_epoch: u64,
+    pub(crate) quality: Quality,
+    pub(crate) depth_style: DepthStyle,
+    pub(crate) colour: TextureHandle,
+    pub(crate) depth: TextureHandle,
+    pub(crate) histogram: Option<DepthHistogram>,
+    pub(crate) render_ms: f64,
 }
 
 /// What was asked of the worker and when the wanted picture last changed.
 pub(super) struct Requests {
     /// The last job submitted.
-    pub submitted: Option<Wanted>,
+    pub(crate) submitted: Option<Wanted>,
     /// What the last change was made to.
-    pub last_wanted: Option<Wanted>,
+    pub(crate) last_wanted: Option<Wanted>,
     /// When the view, scene or quality last changed.
-    pub last_change: Instant,
+    pub(crate) last_change: Instant,
 }
 
 impl Default for Requests {

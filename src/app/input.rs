@@ -125,7 +125,7 @@ impl ViewerApp {
     }
 
     /// Applies pointer gestures on the images: pan, orbit, zoom, hover and pin.
-    pub fn apply_gestures(&mut self, gestures: &ImageGestures) {
+    pub(crate) fn apply_gestures(&mut self, gestures: &ImageGestures) {
         if gestures.pan_px != DVec2::ZERO {
             self.view = navigate::pan(&self.view, gestures.pan_px);
         }

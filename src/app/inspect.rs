@@ -35,11 +35,6 @@ impl ViewerApp {
             .map(|shown| (shown.frame.as_ref(), &shown.view))
     }
 
-    /// The persisted settings.
-    pub fn settings(&self) -> &Settings {
-        &self.settings
-    }
-
     /// The persisted settings, to change.
     pub fn settings_mut(&mut self) -> &mut Settings {
         &mut self.settings
@@ -51,7 +46,7 @@ impl ViewerApp {
     }
 
     /// Probes the frame on screen at image position `px` (pixels, y up).
-    pub fn probe_at(&self, px: DVec2) -> Option<Probe> {
+    pub(crate) fn probe_at(&self, px: DVec2) -> Option<Probe> {
         let shown = self.shown.as_ref()?;
         if shown.scene_epoch != self.scene_epoch || !(px.x >= 0.0 && px.y >= 0.0) {
             return None;

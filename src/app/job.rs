@@ -32,9 +32,9 @@ pub struct ViewerJob {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct DepthStyle {
     /// Grey, turbo or viridis.
-    pub colour_map: DepthColourMap,
+    pub(crate) colour_map: DepthColourMap,
     /// Colour of pixels where no ray hits.
-    pub no_hit_rgb: [u8; 3],
+    pub(crate) no_hit_rgb: [u8; 3],
 }
 
 impl Default for DepthStyle {
@@ -47,26 +47,26 @@ impl Default for DepthStyle {
 }
 
 /// Bins of the histogram of visible t drawn under the depth image.
-pub const HISTOGRAM_BINS: usize = 128;
+pub(crate) const HISTOGRAM_BINS: usize = 128;
 
 /// A rendered frame with the pixels of its two textures.
 #[derive(Debug, Clone)]
 pub struct PreparedFrame {
     /// The frame (colour, t, sphere per pixel).
-    pub frame: Arc<Frame>,
+    pub(crate) frame: Arc<Frame>,
     /// Colour image pixels.
-    pub colour: ColorImage,
+    pub(crate) colour: ColorImage,
     /// Depth image pixels (the view's depth range through the job's colour map).
-    pub depth: ColorImage,
+    pub(crate) depth: ColorImage,
     /// Distribution of the visible t, `None` when no pixel hits.
-    pub histogram: Option<DepthHistogram>,
+    pub(crate) histogram: Option<DepthHistogram>,
 }
 
 /// The worker's output for one job.
-pub type JobOutput = Result<PreparedFrame, ViewError>;
+pub(crate) type JobOutput = Result<PreparedFrame, ViewError>;
 
 /// A finished job as the UI receives it.
-pub type JobResult = RenderResult<ViewerJob, JobOutput>;
+pub(crate) type JobResult = RenderResult<ViewerJob, JobOutput>;
 
 /// Renders `job` and prepares both texture images (what the worker runs).
 pub fn prepare_frame(job: &ViewerJob) -> JobOutput {
@@ -107,10 +107,10 @@ fn textures(job: &ViewerJob, frame: &Frame, size: [usize; 2]) -> (ColorImage, Co
 }
 
 /// The viewer's worker type.
-pub type ViewerWorker = RenderWorker<ViewerJob, JobOutput>;
+pub(crate) type ViewerWorker = RenderWorker<ViewerJob, JobOutput>;
 
 /// Starts the viewer's worker; it asks `ctx` for a repaint whenever a frame lands.
-pub fn start_worker(ctx: &egui::Context) -> std::io::Result<ViewerWorker> {
+pub(crate) fn start_worker(ctx: &egui::Context) -> std::io::Result<ViewerWorker> {
     let ctx = ctx.clone();
     RenderWorker::new(prepare_frame, move || ctx.request_repaint())
 }

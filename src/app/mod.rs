@@ -15,17 +15,17 @@
 //! * [`inspect`]: read access for tests and tools
 //! * [`ui`]: the drawing, one `*_ui` function per part
 
-pub mod actions;
-pub mod dialogs;
-pub mod frames;
-pub mod input;
-pub mod inspect;
+pub(crate) mod actions;
+pub(crate) mod dialogs;
+pub(crate) mod frames;
+pub(crate) mod input;
+pub(crate) mod inspect;
 pub mod job;
-pub mod reload;
-pub mod scene_loading;
+pub(crate) mod reload;
+pub(crate) mod scene_loading;
 pub mod state;
-pub mod status;
-pub mod tasks;
+pub(crate) mod status;
+pub(crate) mod tasks;
 pub mod ui;
 
 use std::path::PathBuf;

@@ -14,17 +14,17 @@ use notify_debouncer_full::notify::{self, EventKind, RecommendedWatcher, Recursi
 use notify_debouncer_full::{DebounceEventResult, Debouncer, RecommendedCache, new_debouncer};
 
 /// How long the file must be quiet before it is reloaded.
-pub const SETTLE_TIME: Duration = Duration::from_millis(150);
+pub(crate) const SETTLE_TIME: Duration = Duration::from_millis(150);
 
 /// Watches one file.
-pub struct FileWatcher {
+pub(crate) struct FileWatcher {
     _debouncer: Debouncer<RecommendedWatcher, RecommendedCache>,
     changed: Arc<AtomicBool>,
 }
 
 /// What the watcher has seen.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum WatchState {
+pub(crate) enum WatchState {
     /// Nothing since the last reload.
     Quiet,
     /// The file changed and has settled: reload it.
@@ -34,7 +34,10 @@ pub enum WatchState {
 impl FileWatcher {
     /// Starts watching `path`; `on_change` runs (on the watcher's thread) once a change has
     /// settled, e.g. to request a repaint.
-    pub fn watch(path: &Path, on_change: impl Fn() + Send + 'static) -> notify::Result<Self> {
+    pub(crate) fn watch(
+        path: &Path,
+        on_change: impl Fn() + Send + 'static,
+    ) -> notify::Result<Self> {
         let target: PathBuf = std::fs::canonicalize(path)?;
         let folder = target
             .parent()
@@ -69,7 +72,7 @@ impl FileWatcher {
     }
 
     /// Whether the file changed; a `Changed` answer is given once per change.
-    pub fn poll(&self) -> WatchState {
+    pub(crate) fn poll(&self) -> WatchState {
         match self.changed.swap(false, Ordering::Acquire) {
             true => WatchState::Changed,
             false => WatchState::Quiet,

@@ -15,11 +15,11 @@ use super::tasks::{Poll, Task};
 use crate::render::View;
 
 /// Loads shorter than this show no progress (most scenes load in a few milliseconds).
-pub const SHOW_PROGRESS_AFTER: Duration = Duration::from_millis(500);
+pub(crate) const SHOW_PROGRESS_AFTER: Duration = Duration::from_millis(500);
 
 /// Why a scene is loaded: the viewer adopts a reload differently from an open.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum LoadKind {
+pub(crate) enum LoadKind {
     /// A file the user opened.
     Open,
     /// The open file again (changed on disk, or Reload).
@@ -28,17 +28,17 @@ pub enum LoadKind {
 
 /// A load running in the background.
 #[derive(Debug)]
-pub struct PendingLoad {
+pub(crate) struct PendingLoad {
     /// The file being loaded.
-    pub path: PathBuf,
+    pub(crate) path: PathBuf,
     /// Open or reload.
-    pub kind: LoadKind,
+    pub(crate) kind: LoadKind,
     task: Task<Result<LoadedScene, String>>,
 }
 
 impl PendingLoad {
     /// Starts loading `path` (image size `size_px` for the scene's initial view).
-    pub fn start(
+    pub(crate) fn start(
         path: &Path,
         kind: LoadKind,
         size_px: (u32, u32),
@@ -59,12 +59,12 @@ impl PendingLoad {
     }
 
     /// The share of the load done, in [0, 1].
-    pub fn fraction(&self) -> f32 {
+    pub(crate) fn fraction(&self) -> f32 {
         self.task.fraction()
     }
 
     /// Whether the load has run long enough to show its progress.
-    pub fn shows_progress(&self) -> bool {
+    pub(crate) fn shows_progress(&self) -> bool {
         self.task.elapsed() >= SHOW_PROGRESS_AFTER
     }
 }
@@ -80,7 +80,7 @@ impl ViewerApp {
     /// Reads the open file again (in the background). A broken file shows its error and the last
     /// good scene stays; a good one replaces the scene and keeps the user's camera unless it was
     /// still the file's.
-    pub fn reload(&mut self) {
+    pub(crate) fn reload(&mut self) {
         let Some(path) = self.loaded.path.clone() else {
             self.status = Some(Status::info(
                 "the embedded default scene has no file to reload",

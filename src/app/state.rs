@@ -20,16 +20,6 @@ pub enum ExportFormat {
     Tga,
 }
 
-impl ExportFormat {
-    /// The file extension, without the dot.
-    pub fn extension(self) -> &'static str {
-        match self {
-            Self::Png => "png",
-            Self::Tga => "tga",
-        }
-    }
-}
-
 /// Export options, remembered between runs.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(default)]
@@ -69,9 +59,9 @@ impl Default for ExportSettings {
 #[serde(default)]
 pub struct Settings {
     /// The last scene file opened successfully.
-    pub last_scene: Option<PathBuf>,
+    pub(crate) last_scene: Option<PathBuf>,
     /// Whether the controls panel is open.
-    pub show_controls: bool,
+    pub(crate) show_controls: bool,
     /// Export options.
     pub export: ExportSettings,
     /// Rendering quality (precision).
@@ -105,7 +95,7 @@ impl Default for DepthDisplay {
 
 impl DepthDisplay {
     /// The on-screen colour of no-hit pixels.
-    pub fn no_hit_rgb(&self) -> [u8; 3] {
+    pub(crate) fn no_hit_rgb(&self) -> [u8; 3] {
         if self.mark_no_hit {
             NO_HIT_MARK
         } else {
@@ -134,7 +124,7 @@ pub struct LoadedScene {
     /// The file it came from; `None` for the embedded default scene.
     pub path: Option<PathBuf>,
     /// The file's own camera at the initial depth range ("reset view" returns here).
-    pub file_view: View,
+    pub(crate) file_view: View,
 }
 
 impl LoadedScene {
@@ -155,7 +145,7 @@ impl LoadedScene {
     }
 
     /// The embedded default scene.
-    pub fn default_scene(size_px: (u32, u32)) -> Self {
+    pub(crate) fn default_scene(size_px: (u32, u32)) -> Self {
         match parse_scene(DEFAULT_SCENE_TEXT) {
             Ok(scene) => Self::new(scene, None, size_px),
             // The embedded scene is parsed by a test; this arm only guards against a bad build.
@@ -163,13 +153,8 @@ impl LoadedScene {
         }
     }
 
-    /// Reads a scene file.
-    pub fn load(path: &Path, size_px: (u32, u32)) -> Result<Self, LoadError> {
-        Self::load_with_progress(path, size_px, &|_| {})
-    }
-
     /// Reads a scene file, telling `progress` the share done (0 to 1) as it goes.
-    pub fn load_with_progress(
+    pub(crate) fn load_with_progress(
         path: &Path,
         size_px: (u32, u32),
         progress: &(dyn Fn(f64) + Sync),
@@ -190,7 +175,7 @@ impl LoadedScene {
     }
 
     /// Slider ranges for this scene and `view`.
-    pub fn ranges(&self, view: &View) -> SliderRanges {
+    pub(crate) fn ranges(&self, view: &View) -> SliderRanges {
         SliderRanges::new(&self.scene, view)
     }
 }

@@ -3,7 +3,7 @@
 
 /// Whether a message reports a failure.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum StatusKind {
+pub(crate) enum StatusKind {
     /// Something the user asked for happened (or is happening).
     Info,
     /// Something failed.
@@ -12,7 +12,7 @@ pub enum StatusKind {
 
 /// What makes a message go away (besides being replaced by another).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Clears {
+pub(crate) enum Clears {
     /// It stays until another message replaces it.
     WhenReplaced,
     /// The view could not be rendered: the next frame that renders clears it.
@@ -21,18 +21,18 @@ pub enum Clears {
 
 /// A status-bar message.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Status {
+pub(crate) struct Status {
     /// Info or error.
-    pub kind: StatusKind,
+    pub(crate) kind: StatusKind,
     /// The text shown.
-    pub text: String,
+    pub(crate) text: String,
     /// What clears it.
-    pub clears: Clears,
+    pub(crate) clears: Clears,
 }
 
 impl Status {
     /// Information that stays until replaced.
-    pub fn info(text: impl Into<String>) -> Self {
+    pub(crate) fn info(text: impl Into<String>) -> Self {
         Self {
             kind: StatusKind::Info,
             text: text.into(),
@@ -41,7 +41,7 @@ impl Status {
     }
 
     /// An error that stays until replaced.
-    pub fn error(text: impl Into<String>) -> Self {
+    pub(crate) fn error(text: impl Into<String>) -> Self {
         Self {
             kind: StatusKind::Error,
             text: text.into(),
@@ -50,7 +50,7 @@ impl Status {
     }
 
     /// The view cannot be rendered; cleared once a frame renders again.
-    pub fn view_error(text: impl std::fmt::Display) -> Self {
+    pub(crate) fn view_error(text: impl std::fmt::Display) -> Self {
         Self {
             kind: StatusKind::Error,
             text: format!("view: {text}"),
@@ -59,7 +59,7 @@ impl Status {
     }
 
     /// Whether this is an error.
-    pub fn is_error(&self) -> bool {
+    pub(crate) fn is_error(&self) -> bool {
         self.kind == StatusKind::Error
     }
 }

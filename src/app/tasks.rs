@@ -13,25 +13,25 @@ const PROGRESS_SCALE: f64 = 1_000_000.0;
 
 /// Where a task reports the share of its work done.
 #[derive(Debug, Clone, Default)]
-pub struct Progress(Arc<AtomicU32>);
+pub(crate) struct Progress(Arc<AtomicU32>);
 
 impl Progress {
     /// Records that `share` (0 to 1) of the work is done.
-    pub fn report(&self, share: f64) {
+    pub(crate) fn report(&self, share: f64) {
         let share = if share.is_nan() { 0.0 } else { share };
         let parts = (share.clamp(0.0, 1.0) * PROGRESS_SCALE) as u32;
         self.0.store(parts, Ordering::Relaxed);
     }
 
     /// The share done, in [0, 1].
-    pub fn fraction(&self) -> f32 {
+    pub(crate) fn fraction(&self) -> f32 {
         (f64::from(self.0.load(Ordering::Relaxed)) / PROGRESS_SCALE) as f32
     }
 }
 
 /// The state of a task.
 #[derive(Debug)]
-pub enum Poll<T> {
+pub(crate) enum Poll<T> {
     /// Still running.
     Running,
     /// Finished with this answer.
@@ -42,7 +42,7 @@ pub enum Poll<T> {
 
 /// Work running on a thread of its own.
 #[derive(Debug)]
-pub struct Task<T> {
+pub(crate) struct Task<T> {
     answer: Receiver<T>,
     progress: Progress,
     started: Instant,
@@ -50,7 +50,7 @@ pub struct Task<T> {
 
 impl<T: Send + 'static> Task<T> {
     /// Runs `work` on a thread named `name`; `ctx` is asked for a repaint when it is done.
-    pub fn spawn(
+    pub(crate) fn spawn(
         name: &str,
         ctx: &egui::Context,
         work: impl FnOnce(&Progress) -> T + Send + 'static,
@@ -74,7 +74,7 @@ impl<T: Send + 'static> Task<T> {
     }
 
     /// Checks for the answer without blocking.
-    pub fn poll(&self) -> Poll<T> {
+    pub(crate) fn poll(&self) -> Poll<T> {
         match self.answer.try_recv() {
             Ok(answer) => Poll::Done(answer),
             Err(TryRecvError::Empty) => Poll::Running,
@@ -83,12 +83,12 @@ impl<T: Send + 'static> Task<T> {
     }
 
     /// The share of the work done, as the work reported it.
-    pub fn fraction(&self) -> f32 {
+    pub(crate) fn fraction(&self) -> f32 {
         self.progress.fraction()
     }
 
     /// How long the task has run.
-    pub fn elapsed(&self) -> Duration {
+    pub(crate) fn elapsed(&self) -> Duration {
         self.started.elapsed()
     }
 }

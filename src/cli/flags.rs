@@ -52,15 +52,15 @@ pub enum Flag {
 
 /// One row of the table.
 pub(crate) struct FlagSpec {
-    pub flag: Flag,
+    pub(crate) flag: Flag,
     /// The spelling on the command line.
-    pub name: &'static str,
+    pub(crate) name: &'static str,
     /// Other spellings accepted (never written).
-    pub aliases: &'static [&'static str],
+    pub(crate) aliases: &'static [&'static str],
     /// Names of the values that follow the flag, as the usage text shows them.
-    pub values: &'static [&'static str],
+    pub(crate) values: &'static [&'static str],
     /// What the flag does, for the usage text.
-    pub help: &'static str,
+    pub(crate) help: &'static str,
 }
 
 /// The table, in the order the usage text lists the flags.
@@ -100,13 +100,13 @@ impl Flag {
     }
 
     /// How many values follow the flag.
-    pub fn arity(self) -> usize {
+    pub(crate) fn arity(self) -> usize {
         self.spec().values.len()
     }
 
     /// The flag and its values, as the usage text and error messages show them
     /// (`-depth DMIN DMAX FILE`).
-    pub fn synopsis(self) -> String {
+    pub(crate) fn synopsis(self) -> String {
         let spec = self.spec();
         std::iter::once(spec.name)
             .chain(spec.values.iter().copied())
@@ -115,7 +115,7 @@ impl Flag {
     }
 
     /// The flag spelled `word` (or one of its aliases).
-    pub fn named(word: &str) -> Option<Self> {
+    pub(crate) fn named(word: &str) -> Option<Self> {
         FLAGS
             .iter()
             .find(|spec| spec.name == word || spec.aliases.contains(&word))
@@ -165,7 +165,7 @@ pub struct RawArgs {
 impl RawArgs {
     /// Splits arguments (without the program name) into flags and values: unknown and repeated
     /// flags and missing values are usage errors.
-    pub fn parse<I, S>(arguments: I) -> Result<Self, UsageError>
+    pub(crate) fn parse<I, S>(arguments: I) -> Result<Self, UsageError>
     where
         I: IntoIterator<Item = S>,
         S: Into<OsString>,
@@ -200,24 +200,24 @@ impl RawArgs {
     }
 
     /// Whether `flag` was given.
-    pub fn has(&self, flag: Flag) -> bool {
+    pub(crate) fn has(&self, flag: Flag) -> bool {
         self.values.contains_key(&flag)
     }
 
     /// Value `index` of `flag`, if given.
-    pub fn value(&self, flag: Flag, index: usize) -> Option<&OsString> {
+    pub(crate) fn value(&self, flag: Flag, index: usize) -> Option<&OsString> {
         self.values.get(&flag).and_then(|values| values.get(index))
     }
 
     /// Value `index` of `flag` as text ("" when the flag is absent).
-    pub fn text(&self, flag: Flag, index: usize) -> Result<&str, UsageError> {
+    pub(crate) fn text(&self, flag: Flag, index: usize) -> Result<&str, UsageError> {
         self.value(flag, index)
             .map(|value| value.to_str().ok_or(UsageError::NotText(flag)))
             .unwrap_or(Ok(""))
     }
 
     /// The one flag of `flags` that is given, if any; two of them are a conflict.
-    pub fn one_of(&self, flags: &[Flag]) -> Result<Option<Flag>, UsageError> {
+    pub(crate) fn one_of(&self, flags: &[Flag]) -> Result<Option<Flag>, UsageError> {
         let given: Vec<Flag> = flags.iter().copied().filter(|&f| self.has(f)).collect();
         match given.as_slice() {
             [] => Ok(None),

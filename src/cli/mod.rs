@@ -9,7 +9,7 @@
 
 mod error;
 mod flags;
-pub mod progress;
+pub(crate) mod progress;
 mod request;
 pub mod run;
 #[cfg(test)]

@@ -7,13 +7,13 @@ use std::time::{Duration, Instant};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 /// How long a step runs before its bar appears.
-pub const SHOW_AFTER: Duration = Duration::from_millis(500);
+pub(crate) const SHOW_AFTER: Duration = Duration::from_millis(500);
 
 /// Steps of a bar: the share done is shown in thousandths.
 const STEPS: u64 = 1000;
 
 /// A lazily shown progress bar for one step (loading, rendering).
-pub struct StepProgress {
+pub(crate) struct StepProgress {
     label: &'static str,
     started: Instant,
     bar: OnceLock<ProgressBar>,
@@ -21,7 +21,7 @@ pub struct StepProgress {
 
 impl StepProgress {
     /// Starts timing a step named `label`.
-    pub fn start(label: &'static str) -> Self {
+    pub(crate) fn start(label: &'static str) -> Self {
         Self {
             label,
             started: Instant::now(),
@@ -30,7 +30,7 @@ impl StepProgress {
     }
 
     /// Reports the share done (0 to 1); shows the bar once the step has run for [`SHOW_AFTER`].
-    pub fn report(&self, share: f64) {
+    pub(crate) fn report(&self, share: f64) {
         let bar = match self.bar.get() {
             Some(bar) => bar,
             None if self.started.elapsed() >= SHOW_AFTER => self.bar.get_or_init(|| {
@@ -53,8 +53,9 @@ impl StepProgress {
         bar.set_position((share * STEPS as f64) as u64);
     }
 
+    #[cfg(test)]
     /// Whether the bar has been created (the step ran longer than [`SHOW_AFTER`]).
-    pub fn was_shown(&self) -> bool {
+    pub(crate) fn was_shown(&self) -> bool {
         self.bar.get().is_some()
     }
 }

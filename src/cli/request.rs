@@ -21,8 +21,11 @@ const SAMPLER_FLAGS: [(Flag, Sampler); 3] = [
     (Flag::RandomSamples, Sampler::Random),
 ];
 
+/// Makes a filter of a size in pixels.
+type MakeFilter = fn(f32) -> Filter;
+
 /// The filter flags and the filter each chooses (of a size in pixels).
-const FILTER_FLAGS: [(Flag, fn(f32) -> Filter); 3] = [
+const FILTER_FLAGS: [(Flag, MakeFilter); 3] = [
     (Flag::BoxFilter, |radius| Filter::Box { radius }),
     (Flag::TentFilter, |radius| Filter::Tent { radius }),
     (Flag::GaussianFilter, |sigma| Filter::Gaussian { sigma }),
@@ -32,32 +35,32 @@ const FILTER_FLAGS: [(Flag, fn(f32) -> Filter); 3] = [
 #[derive(Debug, Clone, PartialEq)]
 pub struct DepthOutput {
     /// t range mapped white … black.
-    pub range: DepthRange,
+    pub(crate) range: DepthRange,
     /// Where to write it.
-    pub path: PathBuf,
+    pub(crate) path: PathBuf,
 }
 
 /// A headless render: what to read, how large, what to write.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RenderRequest {
     /// Scene file.
-    pub input: PathBuf,
+    pub(crate) input: PathBuf,
     /// Image width in pixels.
-    pub width_px: u32,
+    pub(crate) width_px: u32,
     /// Image height in pixels.
-    pub height_px: u32,
+    pub(crate) height_px: u32,
     /// Colour image destination.
-    pub colour_output: Option<PathBuf>,
+    pub(crate) colour_output: Option<PathBuf>,
     /// Depth image destination and range.
-    pub depth_output: Option<DepthOutput>,
+    pub(crate) depth_output: Option<DepthOutput>,
     /// Colour map of the depth image (`-depth_colormap`; grey by default).
-    pub depth_colour_map: DepthColourMap,
+    pub(crate) depth_colour_map: DepthColourMap,
     /// 16-bit grey depth PNG destination and range (`-depth16`).
-    pub depth16_output: Option<DepthOutput>,
+    pub(crate) depth16_output: Option<DepthOutput>,
     /// Raw t destination (`-depth_raw`, `.pfm` or `.exr`).
-    pub depth_raw_output: Option<PathBuf>,
+    pub(crate) depth_raw_output: Option<PathBuf>,
     /// Precision and other quality knobs.
-    pub quality: Quality,
+    pub(crate) quality: Quality,
     /// Print timings and counts after rendering.
     pub stats: bool,
 }
@@ -95,7 +98,7 @@ where
 
 impl RawArgs {
     /// Stage two: interprets the values into a typed [`Command`].
-    pub fn validate(&self) -> Result<Command, UsageError> {
+    pub(crate) fn validate(&self) -> Result<Command, UsageError> {
         if self.has(Flag::Help) {
             return Ok(Command::Help);
         }
@@ -291,7 +294,7 @@ impl RenderRequest {
     /// The arguments (without the program name) that parse to this request again: every
     /// setting, flags spelled by the table. Numbers are written in their shortest exact form,
     /// so they parse back to the same values.
-    pub fn to_arguments(&self) -> Vec<OsString> {
+    pub(crate) fn to_arguments(&self) -> Vec<OsString> {
         let mut arguments: Vec<OsString> = Vec::new();
         let mut push = |flag: Flag, values: Vec<OsString>| {
             arguments.push(flag.name().into());

@@ -31,23 +31,23 @@ pub enum RunError {
 #[derive(Debug, Clone, PartialEq)]
 pub struct RunReport {
     /// Spheres in the scene.
-    pub sphere_count: usize,
+    pub(crate) sphere_count: usize,
     /// Time to read and parse the scene.
-    pub parse: Duration,
+    pub(crate) parse: Duration,
     /// Time to render the frame.
-    pub render: Duration,
+    pub(crate) render: Duration,
     /// Time to encode and write the images.
-    pub write: Duration,
+    pub(crate) write: Duration,
     /// Image size.
-    pub size_px: (u32, u32),
+    pub(crate) size_px: (u32, u32),
     /// Samples per pixel (1 without supersampling).
-    pub samples_per_pixel: u32,
+    pub(crate) samples_per_pixel: u32,
     /// Worker threads rendering used.
-    pub threads: usize,
+    pub(crate) threads: usize,
     /// Sphere/disc tests performed.
-    pub disc_tests: u64,
+    pub(crate) disc_tests: u64,
     /// The precision used.
-    pub precision: crate::render::Precision,
+    pub(crate) precision: crate::render::Precision,
 }
 
 impl RunReport {
@@ -80,7 +80,7 @@ const UNUSED_DEPTH_RANGE: DepthRange = DepthRange {
 
 /// The view a request renders: the scene's camera at the requested size and depth range (of
 /// `-depth`, else of `-depth16`).
-pub fn request_view(scene: &Scene, request: &RenderRequest) -> View {
+pub(crate) fn request_view(scene: &Scene, request: &RenderRequest) -> View {
     let range = request
         .depth_output
         .as_ref()

@@ -14,7 +14,7 @@ use crate::render::depth_map::DepthRange;
 const PIXELS_PER_TASK: usize = 1 << 16;
 
 /// Largest accepted percentile cut for [`auto_range`] (each end), in percent.
-pub const MAX_PERCENTILE_CUT: f64 = 49.0;
+pub(crate) const MAX_PERCENTILE_CUT: f64 = 49.0;
 
 /// The visible t of a frame (finite values only), in storage order.
 pub fn visible_t(frame: &Frame) -> Vec<f64> {
@@ -26,7 +26,7 @@ pub fn visible_t(frame: &Frame) -> Vec<f64> {
 /// percentile is the nearest-rank one: the value at index `round(p/100 · (n − 1))` of the sorted
 /// t. `None` when no pixel hits anything. `cut_percent` is clamped to
 /// `[0, MAX_PERCENTILE_CUT]` (NaN counts as 0).
-pub fn auto_range(frame: &Frame, cut_percent: f64) -> Option<DepthRange> {
+pub(crate) fn auto_range(frame: &Frame, cut_percent: f64) -> Option<DepthRange> {
     let mut t = visible_t(frame);
     if t.is_empty() {
         return None;
@@ -49,13 +49,13 @@ pub fn auto_range(frame: &Frame, cut_percent: f64) -> Option<DepthRange> {
 #[derive(Debug, Clone, PartialEq)]
 pub struct DepthHistogram {
     /// Left edge of the first bin (the nearest visible t).
-    pub t_low: f64,
+    pub(crate) t_low: f64,
     /// Right edge of the last bin (the farthest visible t).
-    pub t_high: f64,
+    pub(crate) t_high: f64,
     /// Pixels per bin; bin `i` spans `[t_low + i·w, t_low + (i+1)·w)` with the last bin closed.
-    pub counts: Vec<u32>,
+    pub(crate) counts: Vec<u32>,
     /// Pixels with no hit (not in any bin).
-    pub no_hit: u32,
+    pub(crate) no_hit: u32,
 }
 
 impl DepthHistogram {
@@ -121,17 +121,17 @@ impl DepthHistogram {
     }
 
     /// Width of one bin in t.
-    pub fn bin_width(&self) -> f64 {
+    pub(crate) fn bin_width(&self) -> f64 {
         (self.t_high - self.t_low) / self.counts.len() as f64
     }
 
     /// The largest count (for scaling a plot); 0 for an empty histogram.
-    pub fn max_count(&self) -> u32 {
+    pub(crate) fn max_count(&self) -> u32 {
         self.counts.iter().copied().max().unwrap_or(0)
     }
 
     /// Visible pixels counted.
-    pub fn total(&self) -> u64 {
+    pub(crate) fn total(&self) -> u64 {
         self.counts.iter().map(|&c| u64::from(c)).sum()
     }
 }

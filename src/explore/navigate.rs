@@ -11,18 +11,17 @@
 use glam::{DQuat, DVec2, DVec3};
 
 use crate::explore::scene_extent;
-use crate::geometry::camera::CameraBasis;
 use crate::render::View;
 use crate::scene::{MAX_MAGNITUDE, Scene};
 
 /// Margin "frame all" leaves around the scene, as a fraction of the screen (5% on each side).
-pub const FRAME_ALL_MARGIN: f64 = 0.05;
+pub(crate) const FRAME_ALL_MARGIN: f64 = 0.05;
 
 /// Moves the camera centre in the screen plane so that the picture follows a drag of
 /// `drag_px` image pixels (x right, y up): the world point under the cursor stays under it.
 /// t values (and so the depth range) are unchanged: the centre moves perpendicular to the view
 /// direction.
-pub fn pan(view: &View, drag_px: DVec2) -> View {
+pub(crate) fn pan(view: &View, drag_px: DVec2) -> View {
     let Ok(basis) = view.validate() else {
         return *view;
     };
@@ -38,7 +37,7 @@ pub fn pan(view: &View, drag_px: DVec2) -> View {
 /// Scales the screen size by `factor` (< 1 zooms in) keeping the world point under
 /// `anchor_px` (image pixels, y up) where it is on the image. The size stays in
 /// `(0, 1e150]`; a factor that would leave that range is cut to its edge.
-pub fn zoom_at(view: &View, factor: f64, anchor_px: DVec2) -> View {
+pub(crate) fn zoom_at(view: &View, factor: f64, anchor_px: DVec2) -> View {
     let Ok(basis) = view.validate() else {
         return *view;
     };
@@ -61,7 +60,7 @@ pub fn zoom_at(view: &View, factor: f64, anchor_px: DVec2) -> View {
 /// right: the scene turns right), `pitch_rad` about the horizontal axis. The direction, the
 /// centre (around the pivot) and up rotate together, and up becomes the rotated `screen_up`, so
 /// it stays perpendicular to the direction and the camera can never become degenerate.
-pub fn orbit(view: &View, pivot_world: DVec3, yaw_rad: f64, pitch_rad: f64) -> View {
+pub(crate) fn orbit(view: &View, pivot_world: DVec3, yaw_rad: f64, pitch_rad: f64) -> View {
     let Ok(basis) = view.validate() else {
         return *view;
     };
@@ -148,14 +147,15 @@ fn with_center(view: &View, center: DVec3) -> View {
     }
 }
 
-/// The camera basis of a view, if it has one (for callers that convert drags to angles).
-pub fn basis_of(view: &View) -> Option<CameraBasis> {
-    view.validate().ok()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::camera::CameraBasis;
+
+    /// The camera basis of a view, if it has one.
+    fn basis_of(view: &View) -> Option<CameraBasis> {
+        view.validate().ok()
+    }
     use crate::render::depth_map::DepthRange;
     use crate::render::render;
     use crate::scene::parse_scene;

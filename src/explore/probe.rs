@@ -22,7 +22,7 @@ pub struct ProbeHit {
     /// The sphere's `MaterialIndex`, `None` when no `MaterialIndex` preceded it.
     pub material_index: Option<u32>,
     /// The material's diffuse colour.
-    pub diffuse_colour: Vec3,
+    pub(crate) diffuse_colour: Vec3,
 }
 
 /// One probed pixel.
@@ -33,9 +33,9 @@ pub struct Probe {
     /// Pixel row, 0 at the **bottom** (SPEC's convention).
     pub y_up_px: u32,
     /// Screen coordinates (u, v) of the pixel centre relative to the camera centre, world units.
-    pub screen_world: DVec2,
+    pub(crate) screen_world: DVec2,
     /// The pixel centre on the screen plane, in world coordinates (the ray's origin at t = 0).
-    pub ray_origin_world: DVec3,
+    pub(crate) ray_origin_world: DVec3,
     /// The hit, `None` where the ray sees the background.
     pub hit: Option<ProbeHit>,
 }
@@ -43,7 +43,13 @@ pub struct Probe {
 /// Probes pixel (`x_px`, `y_up_px`) of `frame`, which must have been rendered from `scene` through
 /// `view`. `None` outside the frame, for an unusable view, or when the frame's size is not the
 /// view's.
-pub fn probe(scene: &Scene, view: &View, frame: &Frame, x_px: u32, y_up_px: u32) -> Option<Probe> {
+pub(crate) fn probe(
+    scene: &Scene,
+    view: &View,
+    frame: &Frame,
+    x_px: u32,
+    y_up_px: u32,
+) -> Option<Probe> {
     if x_px >= frame.width_px
         || y_up_px >= frame.height_px
         || (frame.width_px, frame.height_px) != (view.width_px, view.height_px)

@@ -34,12 +34,12 @@ pub fn scene_extent(scene: &Scene) -> Bounds {
 pub struct SliderRanges {
     /// Camera centre x, y and z: the scene's extent along the axis, widened by the scene's
     /// diagonal on both sides (and by the current value, so it is never clamped).
-    pub center_world: [RangeInclusive<f64>; 3],
+    pub(crate) center_world: [RangeInclusive<f64>; 3],
     /// Screen size (logarithmic): from 1/1000 of the diagonal to 10 diagonals.
-    pub size_world: RangeInclusive<f64>,
+    pub(crate) size_world: RangeInclusive<f64>,
     /// Depth min and max: t of the scene's bounding sphere along the view direction, widened by
     /// half its radius on both sides.
-    pub depth_t: RangeInclusive<f64>,
+    pub(crate) depth_t: RangeInclusive<f64>,
 }
 
 /// `range` widened to contain `value`, if `value` is a usable number (finite and at most

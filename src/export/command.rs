@@ -10,7 +10,7 @@ use crate::render::{Quality, View};
 
 /// The render request that draws `files.scene` into the same colour and depth files as the
 /// export, file names relative to the export's folder.
-pub fn export_request(
+pub(crate) fn export_request(
     plan: &ExportPlan,
     files: &ExportFiles,
     view: &View,
@@ -37,7 +37,7 @@ pub fn export_request(
 }
 
 /// The command-line arguments (after the program name) of [`export_request`], as text.
-pub fn command_arguments(
+pub(crate) fn command_arguments(
     plan: &ExportPlan,
     files: &ExportFiles,
     view: &View,
@@ -51,7 +51,7 @@ pub fn command_arguments(
 }
 
 /// Quotes a word for a POSIX shell (single quotes; words of safe characters stay bare).
-pub fn shell_quote(word: &str) -> String {
+pub(crate) fn shell_quote(word: &str) -> String {
     let safe = !word.is_empty()
         && word
             .chars()
@@ -64,7 +64,7 @@ pub fn shell_quote(word: &str) -> String {
 }
 
 /// The `name_command.sh` text for `arguments`.
-pub fn command_script(arguments: &[String]) -> String {
+pub(crate) fn command_script(arguments: &[String]) -> String {
     let words: Vec<String> = arguments.iter().map(|a| shell_quote(a)).collect();
     format!(
         "#!/bin/sh\n# Renders this export's colour and depth images again from its scene file.\n\

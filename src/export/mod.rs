@@ -23,18 +23,18 @@ use crate::render::depth_map::DepthColourMap;
 use crate::render::{Frame, Quality, View};
 
 use crate::scene::{OrthographicCamera, Scene, scene_to_text};
-pub use command::{command_arguments, command_script, export_request, shell_quote};
+pub(crate) use command::{command_arguments, command_script};
 
 /// The files one export writes, derived from a base path `dir/stem.ext`:
 /// `dir/stem_colour.ext`, `dir/stem_depth.ext` and (optionally) `dir/stem_both.ext`.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct ExportPaths {
+pub(crate) struct ExportPaths {
     /// Colour image.
-    pub colour: PathBuf,
+    pub(crate) colour: PathBuf,
     /// Depth image.
-    pub depth: PathBuf,
+    pub(crate) depth: PathBuf,
     /// Colour and depth side by side.
-    pub side_by_side: PathBuf,
+    pub(crate) side_by_side: PathBuf,
 }
 
 impl ExportPaths {
@@ -77,37 +77,37 @@ pub enum ExtraDepth {
 
 /// What one export writes.
 #[derive(Debug, Clone, PartialEq)]
-pub struct ExportPlan {
+pub(crate) struct ExportPlan {
     /// Base path; see [`ExportPaths::new`].
-    pub base_path: PathBuf,
+    pub(crate) base_path: PathBuf,
     /// Format of the 8-bit images when the base path's extension names none.
-    pub format: ImageFormat,
+    pub(crate) format: ImageFormat,
     /// Also write colour and depth side by side.
-    pub side_by_side: bool,
+    pub(crate) side_by_side: bool,
     /// Colour map of the depth image.
-    pub colour_map: DepthColourMap,
+    pub(crate) colour_map: DepthColourMap,
     /// Lossless or 16-bit depth, if any.
-    pub extra_depth: ExtraDepth,
+    pub(crate) extra_depth: ExtraDepth,
 }
 
 /// Every file of one export.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct ExportFiles {
+pub(crate) struct ExportFiles {
     /// The 8-bit images.
-    pub images: ExportPaths,
+    pub(crate) images: ExportPaths,
     /// `name_depth16.png`.
-    pub depth16: PathBuf,
+    pub(crate) depth16: PathBuf,
     /// `name_depth.pfm` or `.exr` (the extension follows the chosen format).
-    pub depth_raw: Option<PathBuf>,
+    pub(crate) depth_raw: Option<PathBuf>,
     /// `name_scene.txt`.
-    pub scene: PathBuf,
+    pub(crate) scene: PathBuf,
     /// `name_command.sh`.
-    pub command: PathBuf,
+    pub(crate) command: PathBuf,
 }
 
 impl ExportFiles {
     /// The files `plan` writes.
-    pub fn of(plan: &ExportPlan) -> Self {
+    pub(crate) fn of(plan: &ExportPlan) -> Self {
         let images = ExportPaths::new(&plan.base_path, plan.format);
         let sibling = |suffix: &str| {
             let name = images
@@ -133,7 +133,7 @@ impl ExportFiles {
 
 /// `scene` with its camera replaced by `view`'s (image size and depth range are not part of a
 /// scene file).
-pub fn scene_with_view(scene: &Scene, view: &View) -> Scene {
+pub(crate) fn scene_with_view(scene: &Scene, view: &View) -> Scene {
     Scene {
         camera: OrthographicCamera {
             center_world: view.center_world,
@@ -147,7 +147,11 @@ pub fn scene_with_view(scene: &Scene, view: &View) -> Scene {
 
 /// "Save view as scene": writes `scene` with `view`'s camera to `path` (atomically), numbers in
 /// Rust's shortest round-trip form so parsing it gives exactly this camera back.
-pub fn save_view_as_scene(scene: &Scene, view: &View, path: &Path) -> Result<(), WriteError> {
+pub(crate) fn save_view_as_scene(
+    scene: &Scene,
+    view: &View,
+    path: &Path,
+) -> Result<(), WriteError> {
     write_atomically(
         path,
         scene_to_text(&scene_with_view(scene, view)).as_bytes(),
@@ -157,7 +161,7 @@ pub fn save_view_as_scene(scene: &Scene, view: &View, path: &Path) -> Result<(),
 /// Writes every file of `plan` for `frame`, rendered from `scene` through `view` at `quality`.
 /// Returns the paths written. Each file is written atomically; the first failure stops the export
 /// and is returned (files already written stay, each complete).
-pub fn write_export(
+pub(crate) fn write_export(
     scene: &Scene,
     view: &View,
     quality: &Quality,
@@ -218,6 +222,7 @@ fn set_executable(path: &Path) {
 
 #[cfg(test)]
 mod tests {
+    use super::command::shell_quote;
     use super::*;
     use crate::render::depth_map::DepthRange;
     use crate::render::{Filter, Precision, Sampler, Sampling, render_with};

@@ -23,7 +23,7 @@ pub enum CameraError {
 
 /// Smallest accepted sine of the angle between direction and up; below it they count as parallel
 /// (the basis would be dominated by rounding).
-pub const MIN_UP_SINE: f64 = 1e-12;
+pub(crate) const MIN_UP_SINE: f64 = 1e-12;
 
 /// Unit vector along `v`, robust to very large and very small components.
 fn unit(v: DVec3) -> Option<DVec3> {
@@ -75,8 +75,9 @@ impl CameraBasis {
         )
     }
 
+    #[cfg(test)]
     /// Camera-space (u, v, w) → world vector.
-    pub fn to_world(&self, camera_offset: DVec3) -> DVec3 {
+    pub(crate) fn world_of(&self, camera_offset: DVec3) -> DVec3 {
         camera_offset.x * self.horizontal
             + camera_offset.y * self.screen_up
             + camera_offset.z * self.direction
@@ -87,9 +88,9 @@ impl CameraBasis {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PixelGrid {
     /// Image width in pixels.
-    pub width_px: u32,
+    pub(crate) width_px: u32,
     /// Image height in pixels.
-    pub height_px: u32,
+    pub(crate) height_px: u32,
     /// Side of one (square) pixel in world units: `size / max(width, height)`.
     pub pixel_size_world: f64,
 }
@@ -202,7 +203,7 @@ mod tests {
         let basis =
             CameraBasis::new(DVec3::new(-1.0, -0.5, -1.0), DVec3::new(0.2, 1.0, 0.0)).unwrap();
         let p = DVec3::new(1.5, -2.0, 3.25);
-        assert!((basis.to_world(basis.to_camera(p)) - p).length() < 1e-14);
+        assert!((basis.world_of(basis.to_camera(p)) - p).length() < 1e-14);
     }
 
     #[test]

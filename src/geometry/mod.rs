@@ -3,5 +3,3 @@
 
 pub mod camera;
 pub mod ray_sphere;
-
-pub use camera::{CameraBasis, CameraError, PixelGrid};

@@ -18,16 +18,13 @@ pub struct Ray {
     pub direction_world: DVec3,
 }
 
-impl Ray {
-    /// The point at parameter `t`.
-    pub fn at(&self, t: f64) -> DVec3 {
-        self.origin_world + t * self.direction_world
-    }
-}
-
 /// Both roots (smaller first) of a ray with a sphere, or `None` if the ray misses.
 /// A tangent ray (Δ = 0) hits, with both roots equal.
-pub fn ray_sphere_roots(ray: &Ray, center_world: DVec3, radius_world: f64) -> Option<(f64, f64)> {
+pub(crate) fn ray_sphere_roots(
+    ray: &Ray,
+    center_world: DVec3,
+    radius_world: f64,
+) -> Option<(f64, f64)> {
     let d = ray.direction_world;
     let f = ray.origin_world - center_world;
     let b = f.dot(d);
@@ -56,7 +53,8 @@ pub fn ray_sphere_nearest_t(ray: &Ray, center_world: DVec3, radius_world: f64) -
 /// discriminant `b² − 4ac`, `t = (−b − √disc) / 2a`. Kept only as the error study's baseline:
 /// `b²` and `4ac` cancel catastrophically once distance/radius passes about 4000 (√ of f32's
 /// epsilon⁻¹), and world coordinates far from the origin make `o − c` lose the sphere entirely.
-pub fn textbook_nearest_t_f32(
+#[cfg(any(test, feature = "oracle"))]
+pub(crate) fn textbook_nearest_t_f32(
     origin: [f32; 3],
     direction: [f32; 3],
     center: [f32; 3],

@@ -8,7 +8,7 @@
 //! * [`high_precision`]: the double-double reference (≈ 106-bit arithmetic).
 //! * [`generate`]: seeded random scenes.
 
-pub mod generate;
+pub(crate) mod generate;
 pub mod high_precision;
 pub mod ray_loop;
 

@@ -43,7 +43,7 @@ pub(crate) fn folder_of(path: &Path) -> &Path {
 }
 
 /// `path` is not a folder and a temporary file can be created (and is removed) beside it.
-pub fn check_folder_writable(path: &Path) -> Result<(), WriteError> {
+pub(crate) fn check_folder_writable(path: &Path) -> Result<(), WriteError> {
     let io_error = |source| WriteError::Io {
         path: path.to_path_buf(),
         source,

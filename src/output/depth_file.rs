@@ -24,10 +24,10 @@ pub enum RawDepthFormat {
 
 impl RawDepthFormat {
     /// Extensions accepted, as listed in error messages.
-    pub const EXTENSIONS: &'static str = ".pfm, .exr";
+    pub(crate) const EXTENSIONS: &'static str = ".pfm, .exr";
 
     /// The format a path's extension names (case-insensitive).
-    pub fn from_path(path: &Path) -> Option<Self> {
+    pub(crate) fn from_path(path: &Path) -> Option<Self> {
         match path
             .extension()
             .and_then(|e| e.to_str())
@@ -41,7 +41,7 @@ impl RawDepthFormat {
     }
 
     /// The file extension, without the dot.
-    pub fn extension(self) -> &'static str {
+    pub(crate) fn extension(self) -> &'static str {
         match self {
             Self::Pfm => "pfm",
             Self::Exr => "exr",
@@ -87,7 +87,7 @@ fn t_as_f32(frame: &Frame) -> Vec<f32> {
 }
 
 /// PFM bytes of a one-channel float image given top row first (written bottom row first).
-pub fn encode_pfm(width_px: u32, height_px: u32, t_top_first: &[f32]) -> Vec<u8> {
+pub(crate) fn encode_pfm(width_px: u32, height_px: u32, t_top_first: &[f32]) -> Vec<u8> {
     let header = format!("Pf\n{width_px} {height_px}\n-1.0\n");
     let mut bytes = Vec::with_capacity(header.len() + 4 * t_top_first.len());
     bytes.extend_from_slice(header.as_bytes());
@@ -101,7 +101,7 @@ pub fn encode_pfm(width_px: u32, height_px: u32, t_top_first: &[f32]) -> Vec<u8>
 }
 
 /// Parses PFM bytes (one channel, either byte order) into t top row first.
-pub fn decode_pfm(bytes: &[u8]) -> Result<RawDepth, String> {
+pub(crate) fn decode_pfm(bytes: &[u8]) -> Result<RawDepth, String> {
     // Header: three whitespace-separated words after "Pf", then one whitespace byte.
     let mut words = Vec::new();
     let mut offset = 0;
@@ -166,7 +166,7 @@ pub fn decode_pfm(bytes: &[u8]) -> Result<RawDepth, String> {
 }
 
 /// OpenEXR bytes of a one-channel (`Z`) 32-bit float image given top row first.
-pub fn encode_exr(
+pub(crate) fn encode_exr(
     width_px: u32,
     height_px: u32,
     t_top_first: &[f32],
@@ -188,7 +188,7 @@ pub fn encode_exr(
 }
 
 /// Parses OpenEXR bytes holding one 32-bit float channel into t top row first.
-pub fn decode_exr(bytes: &[u8]) -> Result<RawDepth, String> {
+pub(crate) fn decode_exr(bytes: &[u8]) -> Result<RawDepth, String> {
     use exr::prelude::*;
     let image = read()
         .no_deep_data()
@@ -215,7 +215,7 @@ pub fn decode_exr(bytes: &[u8]) -> Result<RawDepth, String> {
 }
 
 /// Writes `frame`'s raw t to `path` as PFM or OpenEXR, chosen by the extension.
-pub fn write_raw_depth(frame: &Frame, path: &Path) -> Result<(), WriteError> {
+pub(crate) fn write_raw_depth(frame: &Frame, path: &Path) -> Result<(), WriteError> {
     let format = RawDepthFormat::from_path(path).ok_or_else(|| WriteError::UnknownFormat {
         path: path.to_path_buf(),
         expected: RawDepthFormat::EXTENSIONS,
@@ -234,7 +234,7 @@ pub fn write_raw_depth(frame: &Frame, path: &Path) -> Result<(), WriteError> {
 }
 
 /// Checks, without touching `path`, that a raw depth file (`.pfm`, `.exr`) could be written there.
-pub fn check_writable_raw(path: &Path) -> Result<(), WriteError> {
+pub(crate) fn check_writable_raw(path: &Path) -> Result<(), WriteError> {
     if RawDepthFormat::from_path(path).is_none() {
         return Err(WriteError::UnknownFormat {
             path: path.to_path_buf(),
@@ -265,7 +265,7 @@ pub fn read_raw_depth(path: &Path) -> Result<RawDepth, ReadDepthError> {
 
 /// The 16-bit grey depth image of `frame` over `range` (`floor(grey·65535)`, no hit 0), top row
 /// first.
-pub fn depth_image_u16(
+pub(crate) fn depth_image_u16(
     frame: &Frame,
     range: DepthRange,
 ) -> image::ImageBuffer<image::Luma<u16>, Vec<u16>> {
@@ -280,7 +280,11 @@ pub fn depth_image_u16(
 }
 
 /// Writes the 16-bit grey PNG of `frame`'s depth over `range` to `path` (must end in `.png`).
-pub fn write_depth_png16(frame: &Frame, range: DepthRange, path: &Path) -> Result<(), WriteError> {
+pub(crate) fn write_depth_png16(
+    frame: &Frame,
+    range: DepthRange,
+    path: &Path,
+) -> Result<(), WriteError> {
     let is_png = path
         .extension()
         .and_then(|e| e.to_str())

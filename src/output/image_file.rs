@@ -20,10 +20,10 @@ pub enum ImageFormat {
 
 impl ImageFormat {
     /// Extensions accepted, as listed in error messages.
-    pub const EXTENSIONS: &'static str = ".tga, .png";
+    pub(crate) const EXTENSIONS: &'static str = ".tga, .png";
 
     /// The format a path's extension names (case-insensitive).
-    pub fn from_path(path: &Path) -> Result<Self, WriteError> {
+    pub(crate) fn from_path(path: &Path) -> Result<Self, WriteError> {
         let extension = path
             .extension()
             .and_then(|e| e.to_str())
@@ -72,7 +72,7 @@ pub fn write_image(path: &Path, image: &RgbImage) -> Result<(), WriteError> {
 
 /// Checks, without touching `path`, that a file could be written there: the format is known,
 /// `path` is not a folder, and a temporary file can be created (and is removed) in its folder.
-pub fn check_writable(path: &Path) -> Result<(), WriteError> {
+pub(crate) fn check_writable(path: &Path) -> Result<(), WriteError> {
     ImageFormat::from_path(path)?;
     check_folder_writable(path)
 }

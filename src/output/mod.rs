@@ -2,10 +2,10 @@
 //! ([`image_file`]), and lossless depth files (PFM, OpenEXR) and 16-bit depth PNGs
 //! ([`depth_file`]). Nothing here knows about the command line or the viewer.
 
-pub mod atomic;
+pub(crate) mod atomic;
 pub mod depth_file;
-pub mod image_file;
+pub(crate) mod image_file;
 
 pub use atomic::{WriteError, write_atomically};
-pub use depth_file::{RawDepthFormat, read_raw_depth};
+pub use depth_file::RawDepthFormat;
 pub use image_file::{ImageFormat, encode, write_image};

@@ -63,7 +63,7 @@ pub enum DepthColourMap {
 
 impl DepthColourMap {
     /// Every map, in the order menus list them.
-    pub const ALL: [Self; 3] = [Self::Grey, Self::Turbo, Self::Viridis];
+    pub(crate) const ALL: [Self; 3] = [Self::Grey, Self::Turbo, Self::Viridis];
 
     /// The name used on the command line (`-depth_colormap`) and in menus.
     pub fn name(self) -> &'static str {
@@ -75,7 +75,7 @@ impl DepthColourMap {
     }
 
     /// The map a name stands for (as [`Self::name`] spells it; `gray` is accepted too).
-    pub fn from_name(name: &str) -> Option<Self> {
+    pub(crate) fn from_name(name: &str) -> Option<Self> {
         match name {
             "grey" | "gray" => Some(Self::Grey),
             "turbo" => Some(Self::Turbo),
@@ -86,7 +86,7 @@ impl DepthColourMap {
 
     /// The 8-bit colour of a grey value `grey` in [0, 1] (1 = near). Grey quantises by
     /// truncation exactly as [`DepthRange::grey_u8`] does, so the grey map is the course's image.
-    pub fn rgb_of_grey(self, grey: f64) -> [u8; 3] {
+    pub(crate) fn rgb_of_grey(self, grey: f64) -> [u8; 3] {
         // Turbo's darkest tenth is nearly black, which would read as "no hit": the far end
         // starts at its blue instead.
         let (gradient, far_end) = match self {
@@ -105,7 +105,7 @@ impl DepthColourMap {
 
     /// The colour of a pixel whose nearest hit is at `t` (`+∞`: no hit) over `range`.
     /// No-hit pixels are `no_hit` (use [`Self::file_no_hit`] for files).
-    pub fn rgb(self, range: &DepthRange, t: f64, no_hit: [u8; 3]) -> [u8; 3] {
+    pub(crate) fn rgb(self, range: &DepthRange, t: f64, no_hit: [u8; 3]) -> [u8; 3] {
         if t == f64::INFINITY || t.is_nan() {
             no_hit
         } else {
@@ -115,7 +115,7 @@ impl DepthColourMap {
 
     /// What a no-hit pixel looks like in a written file: black (the course's choice for grey;
     /// in the colour maps black is no value of the map).
-    pub const fn file_no_hit(self) -> [u8; 3] {
+    pub(crate) const fn file_no_hit(self) -> [u8; 3] {
         [0, 0, 0]
     }
 }
@@ -131,11 +131,11 @@ const TURBO_FAR_END: f64 = 0.1;
 
 /// The on-screen colour of no-hit pixels when the viewer marks them (a dark blue that the grey
 /// ramp never produces).
-pub const NO_HIT_MARK: [u8; 3] = [24, 36, 96];
+pub(crate) const NO_HIT_MARK: [u8; 3] = [24, 36, 96];
 
 /// 16-bit quantisation by truncation, `clamp(floor(c·65535), 0, 65535)`, for 16-bit depth PNGs.
 /// NaN maps to 0.
-pub fn quantize_u16(c: f64) -> u16 {
+pub(crate) fn quantize_u16(c: f64) -> u16 {
     let scaled = (c * 65535.0).floor();
     if scaled >= 65535.0 {
         u16::MAX
@@ -148,7 +148,7 @@ pub fn quantize_u16(c: f64) -> u16 {
 
 /// 8-bit quantisation by truncation, `clamp(floor(c·255), 0, 255)`, for colour channels (f32, as the
 /// course computed them). NaN maps to 0.
-pub fn quantize_f32(c: f32) -> u8 {
+pub(crate) fn quantize_f32(c: f32) -> u8 {
     let scaled = (c * 255.0).floor();
     if scaled >= 255.0 {
         255
@@ -160,7 +160,7 @@ pub fn quantize_f32(c: f32) -> u8 {
 }
 
 /// 8-bit quantisation by truncation of an f64 value in [0, 1]. NaN maps to 0.
-pub fn quantize_f64(c: f64) -> u8 {
+pub(crate) fn quantize_f64(c: f64) -> u8 {
     let scaled = (c * 255.0).floor();
     if scaled >= 255.0 {
         255

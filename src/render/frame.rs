@@ -30,7 +30,7 @@ pub struct Frame {
     /// range it was mapped with. The raw `t` stays one centre sample per pixel.
     pub depth_grey: Option<(DepthRange, Vec<f32>)>,
     /// Sphere/disc tests performed (pixel–disc and sample–disc).
-    pub disc_tests: u64,
+    pub(crate) disc_tests: u64,
 }
 
 impl Frame {
@@ -73,7 +73,7 @@ impl Frame {
     /// The depth image's pixels (see [`Self::depth_image_mapped`]), top row first, each made
     /// from its RGB by `pixel` (the viewer makes texture pixels): the one place where t becomes
     /// a depth colour.
-    pub fn depth_pixels<P: Send>(
+    pub(crate) fn depth_pixels<P: Send>(
         &self,
         range: DepthRange,
         map: DepthColourMap,
@@ -102,13 +102,9 @@ impl Frame {
             .collect()
     }
 
-    /// Colour and depth images side by side in one picture (colour left), as users share them.
-    pub fn side_by_side_image(&self, range: DepthRange) -> RgbImage {
-        self.side_by_side_mapped(range, DepthColourMap::Grey)
-    }
-
-    /// [`Self::side_by_side_image`] with the depth through a colour map (no hit black).
-    pub fn side_by_side_mapped(&self, range: DepthRange, map: DepthColourMap) -> RgbImage {
+    /// Colour and depth images side by side in one picture (colour left), as users share them;
+    /// the depth through a colour map (no hit black).
+    pub(crate) fn side_by_side_mapped(&self, range: DepthRange, map: DepthColourMap) -> RgbImage {
         let colour = self.colour_image();
         let depth = self.depth_image_mapped(range, map, map.file_no_hit());
         RgbImage::from_fn(self.width_px * 2, self.height_px, |x, y| {

@@ -14,15 +14,15 @@
 pub mod depth_map;
 pub mod disc;
 mod frame;
-pub mod precision;
+pub(crate) mod precision;
 pub mod rng;
-pub mod sampling;
+pub(crate) mod sampling;
 mod view;
-pub mod worker;
+pub(crate) mod worker;
 
 pub use frame::{Frame, NO_HIT};
 pub use precision::Precision;
-pub use sampling::{Filter, Sampler, Sampling};
+pub use sampling::{Filter, Sampler, Sampling, SamplingError};
 pub use view::{MAX_PIXELS, MAX_SIDE_PX, View, ViewError, check_image_size};
 
 use crate::scene::Scene;
@@ -53,7 +53,7 @@ pub fn render_with(scene: &Scene, view: &View, quality: &Quality) -> Result<Fram
 
 /// [`render_with`], telling `progress` the share of the frame done (0 to 1): as bands of rows
 /// finish when supersampling (the long renders), once at the end otherwise.
-pub fn render_with_progress(
+pub(crate) fn render_with_progress(
     scene: &Scene,
     view: &View,
     quality: &Quality,

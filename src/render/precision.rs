@@ -74,7 +74,7 @@ impl FromStr for Precision {
 const F32_ROUNDOFF: f64 = 5.960_464_477_539_063e-8;
 
 /// f32's t error must stay below this fraction of one grey level.
-pub const F32_DEPTH_MARGIN: f64 = 1.0 / 16.0;
+pub(crate) const F32_DEPTH_MARGIN: f64 = 1.0 / 16.0;
 
 /// Largest magnitude f32 holds comfortably (squares of it stay finite, 2⁶⁰).
 const F32_MAX_MAGNITUDE: f64 = 1.152_921_504_606_847e18;
@@ -84,7 +84,7 @@ const F32_MIN_RADIUS: f64 = 8.673_617_379_884_035e-19;
 
 /// Whether f32 per-pixel arithmetic is safe for these discs on this grid and depth range (see the
 /// module docs). Discs entirely off screen do not count.
-pub fn f32_is_safe(discs: &[Disc], grid: &PixelGrid, depth_range: DepthRange) -> bool {
+pub(crate) fn f32_is_safe(discs: &[Disc], grid: &PixelGrid, depth_range: DepthRange) -> bool {
     let grey_level = (depth_range.max_t - depth_range.min_t).abs() / 255.0;
     if grey_level == 0.0 || !grey_level.is_finite() {
         return false;

@@ -12,23 +12,20 @@ use std::time::{Duration, Instant};
 
 /// A finished job.
 #[derive(Debug, Clone)]
-pub struct RenderResult<J, T> {
+pub(crate) struct RenderResult<J, T> {
     /// Number returned by [`RenderWorker::submit`] for this job; later jobs have larger numbers.
-    pub generation: u64,
+    pub(crate) generation: u64,
     /// The job that was run.
-    pub job: J,
+    pub(crate) job: J,
     /// What the job function returned.
-    pub output: T,
+    pub(crate) output: T,
     /// Time spent running the job.
-    pub render_time: Duration,
-    /// Time from submission to the result being ready (queueing + running).
-    pub latency: Duration,
+    pub(crate) render_time: Duration,
 }
 
 struct Queued<J> {
     generation: u64,
     job: J,
-    submitted: Instant,
 }
 
 struct State<J, T> {
@@ -53,7 +50,7 @@ impl<J, T> Shared<J, T> {
 }
 
 /// The worker; dropping it stops its thread after the job in flight.
-pub struct RenderWorker<J, T> {
+pub(crate) struct RenderWorker<J, T> {
     shared: Arc<Shared<J, T>>,
     thread: Option<JoinHandle<()>>,
 }
@@ -93,33 +90,29 @@ impl<J: Clone + Send + 'static, T: Send + 'static> RenderWorker<J, T> {
     }
 
     /// Queues `job`, replacing any job not yet started. Returns the job's generation.
-    pub fn submit(&self, job: J) -> u64 {
+    pub(crate) fn submit(&self, job: J) -> u64 {
         let mut state = self.shared.lock();
         let generation = state.next_generation;
         state.next_generation += 1;
-        state.pending = Some(Queued {
-            generation,
-            job,
-            submitted: Instant::now(),
-        });
+        state.pending = Some(Queued { generation, job });
         drop(state);
         self.shared.wake.notify_all();
         generation
     }
 
     /// The newest finished frame not yet taken, if any.
-    pub fn take_finished(&self) -> Option<RenderResult<J, T>> {
+    pub(crate) fn take_finished(&self) -> Option<RenderResult<J, T>> {
         self.shared.lock().finished.take()
     }
 
     /// True when no job is waiting or running.
-    pub fn is_idle(&self) -> bool {
+    pub(crate) fn is_idle(&self) -> bool {
         let state = self.shared.lock();
         state.pending.is_none() && !state.busy
     }
 
     /// Blocks until the worker is idle or `timeout` passes; true if idle (for tests and exports).
-    pub fn wait_idle(&self, timeout: Duration) -> bool {
+    pub(crate) fn wait_idle(&self, timeout: Duration) -> bool {
         let deadline = Instant::now() + timeout;
         let mut state = self.shared.lock();
         while state.pending.is_some() || state.busy {
@@ -178,7 +171,6 @@ fn worker_loop<J: Clone, T>(
             job: queued.job,
             output,
             render_time: started.elapsed(),
-            latency: queued.submitted.elapsed(),
         };
         {
             let mut state = shared.lock();

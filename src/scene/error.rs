@@ -141,7 +141,7 @@ pub enum ParseErrorKind {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub struct ParseError {
     /// Name of the file (as the user gave it), if the text came from a file.
-    pub file: Option<String>,
+    pub(crate) file: Option<String>,
     /// Position of the offending token.
     pub location: Location,
     /// What went wrong.
@@ -149,6 +149,7 @@ pub struct ParseError {
 }
 
 impl ParseError {
+    /// An error at `location`, not yet attributed to a file.
     pub(crate) fn new(location: Location, kind: ParseErrorKind) -> Self {
         Self {
             file: None,
@@ -158,7 +159,7 @@ impl ParseError {
     }
 
     /// The same error, attributed to a named file.
-    pub fn in_file(mut self, file: impl Into<String>) -> Self {
+    pub(crate) fn in_file(mut self, file: impl Into<String>) -> Self {
         self.file = Some(file.into());
         self
     }

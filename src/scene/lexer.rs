@@ -6,16 +6,16 @@ use super::error::Location;
 
 /// One word of the file.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Token<'a> {
+pub(crate) struct Token<'a> {
     /// The word as written.
-    pub text: &'a str,
+    pub(crate) text: &'a str,
     /// Where it starts.
-    pub location: Location,
+    pub(crate) location: Location,
 }
 
 /// Iterator over the tokens of a text.
 #[derive(Debug, Clone)]
-pub struct Lexer<'a> {
+pub(crate) struct Lexer<'a> {
     text: &'a str,
     offset: usize,
     line: u32,
@@ -35,7 +35,7 @@ impl<'a> Lexer<'a> {
     }
 
     /// Share of the text consumed so far, 0 to 1 (1 for an empty text).
-    pub fn share_consumed(&self) -> f64 {
+    pub(crate) fn share_consumed(&self) -> f64 {
         if self.text.is_empty() {
             1.0
         } else {
@@ -44,7 +44,7 @@ impl<'a> Lexer<'a> {
     }
 
     /// The location the next character would have (used for "end of file" errors).
-    pub fn here(&self) -> Location {
+    pub(crate) fn here(&self) -> Location {
         Location {
             line: self.line,
             column: u32::try_from(self.column_chars.saturating_add(1)).unwrap_or(u32::MAX),

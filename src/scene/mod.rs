@@ -11,7 +11,6 @@ mod parse_tests;
 mod writer;
 
 pub use error::{Location, ParseError, ParseErrorKind};
-pub use lexer::{Lexer, Token};
 pub use model::{
     Bounds, DEFAULT_BACKGROUND, DEFAULT_DIFFUSE, Material, OrthographicCamera, Scene, Sphere,
 };

@@ -56,14 +56,14 @@ pub struct Sphere {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Bounds {
     /// Smallest corner.
-    pub min_world: DVec3,
+    pub(crate) min_world: DVec3,
     /// Largest corner.
-    pub max_world: DVec3,
+    pub(crate) max_world: DVec3,
 }
 
 impl Bounds {
     /// Centre of the box.
-    pub fn center(&self) -> DVec3 {
+    pub(crate) fn center(&self) -> DVec3 {
         0.5 * (self.min_world + self.max_world)
     }
 
@@ -88,7 +88,7 @@ pub struct Scene {
 
 impl Scene {
     /// The colour a sphere is drawn in.
-    pub fn sphere_colour(&self, sphere: &Sphere) -> Vec3 {
+    pub(crate) fn sphere_colour(&self, sphere: &Sphere) -> Vec3 {
         sphere
             .material
             .and_then(|index| self.materials.get(index as usize))

@@ -9,13 +9,13 @@ use crate::render::depth_map::DepthColourMap;
 
 /// What the depth section asked for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct DepthToolRequests {
+pub(crate) struct DepthToolRequests {
     /// Fit the depth range to the visible t now.
-    pub auto_range: bool,
+    pub(crate) auto_range: bool,
 }
 
 /// The side panel's depth section: colour map, no-hit mark, auto range with its percentile cut.
-pub fn depth_tools_ui(ui: &mut Ui, display: &mut DepthDisplay) -> DepthToolRequests {
+pub(crate) fn depth_tools_ui(ui: &mut Ui, display: &mut DepthDisplay) -> DepthToolRequests {
     let mut requests = DepthToolRequests::default();
     ui.horizontal(|ui| {
         ui.label("colour map");

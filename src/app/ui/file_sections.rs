@@ -10,16 +10,16 @@ use crate::render::MAX_SIDE_PX;
 
 /// What the file section asked for.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
-pub struct FileRequests {
+pub(crate) struct FileRequests {
     /// Open the scene at the typed path.
-    pub open_path: Option<String>,
+    pub(crate) open_path: Option<String>,
     /// Write the scene with the current camera to the typed path.
-    pub save_view: bool,
+    pub(crate) save_view: bool,
 }
 
 /// A typed scene path with an "Open path" button, and a path to save the current view as a scene
 /// file to (both work without any file dialog).
-pub fn file_ui(ui: &mut Ui, path_text: &mut String, save_path: &mut String) -> FileRequests {
+pub(crate) fn file_ui(ui: &mut Ui, path_text: &mut String, save_path: &mut String) -> FileRequests {
     let mut requests = FileRequests::default();
     ui.heading("Scene file");
     ui.horizontal(|ui| {
@@ -49,13 +49,13 @@ pub fn file_ui(ui: &mut Ui, path_text: &mut String, save_path: &mut String) -> F
 
 /// What the export section asked for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct ExportRequests {
+pub(crate) struct ExportRequests {
     /// Write to the typed path now.
-    pub export_to_path: bool,
+    pub(crate) export_to_path: bool,
 }
 
 /// Export options: size, format, side by side, and the path to write to.
-pub fn export_ui(
+pub(crate) fn export_ui(
     ui: &mut Ui,
     settings: &mut ExportSettings,
     dialog_note: Option<&str>,

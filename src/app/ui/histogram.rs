@@ -9,7 +9,7 @@ use crate::explore::depth_stats::DepthHistogram;
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 
 /// Height of the histogram block (bars, legend strip and labels), in points.
-pub const HISTOGRAM_POINTS: f32 = 88.0;
+pub(crate) const HISTOGRAM_POINTS: f32 = 88.0;
 
 /// Height of the bars, in points.
 const BARS_POINTS: f32 = 46.0;
@@ -100,7 +100,7 @@ impl Layout {
 
 /// The histogram with the range on it; dragging a handle sets that end of `range` to the t under
 /// the pointer (within the axis). Returns true when a handle moved the range.
-pub fn histogram_ui(
+pub(crate) fn histogram_ui(
     ui: &mut Ui,
     histogram: Option<&DepthHistogram>,
     range: &mut DepthRange,

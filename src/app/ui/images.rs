@@ -19,7 +19,7 @@ const IMAGE_GAP_POINTS: f32 = 8.0;
 const CAPTION_POINTS: f32 = 20.0;
 
 /// Height reserved under the images for the probe and the histogram, in points.
-pub const FOOTER_POINTS: f32 = HISTOGRAM_POINTS + 24.0;
+pub(crate) const FOOTER_POINTS: f32 = HISTOGRAM_POINTS + 24.0;
 
 /// Font size of the probe's lines, in points.
 const PROBE_FONT_POINTS: f32 = 11.0;
@@ -31,60 +31,60 @@ const SCROLL_POINTS_PER_DOUBLING: f64 = 240.0;
 pub const ORBIT_RAD_PER_POINT: f64 = std::f64::consts::FRAC_PI_2 / 300.0;
 
 /// Accessible labels of the two images (tests find them by these).
-pub const IMAGE_LABELS: [&str; 2] = ["colour image", "depth image"];
+pub(crate) const IMAGE_LABELS: [&str; 2] = ["colour image", "depth image"];
 
 /// The textures of the frame on screen and what goes with them.
-pub struct ShownImages<'a> {
+pub(crate) struct ShownImages<'a> {
     /// Colour texture.
-    pub colour: &'a TextureHandle,
+    pub(crate) colour: &'a TextureHandle,
     /// Depth texture.
-    pub depth: &'a TextureHandle,
+    pub(crate) depth: &'a TextureHandle,
     /// Frame size in physical pixels.
-    pub size_px: [u32; 2],
+    pub(crate) size_px: [u32; 2],
     /// Depth range the depth texture was mapped with.
-    pub depth_range: DepthRange,
+    pub(crate) depth_range: DepthRange,
     /// Visible t of the frame.
-    pub histogram: Option<&'a DepthHistogram>,
+    pub(crate) histogram: Option<&'a DepthHistogram>,
 }
 
 /// What the footer under the images shows and edits.
-pub struct Footer<'a> {
+pub(crate) struct Footer<'a> {
     /// Lines of the pixel probe (hovered and pinned pixel).
-    pub probe_lines: &'a [String],
+    pub(crate) probe_lines: &'a [String],
     /// A pixel is pinned (an "unpin" button is shown).
-    pub pinned: Option<DVec2>,
+    pub(crate) pinned: Option<DVec2>,
     /// The depth range the histogram's handles edit (the current view's).
-    pub depth_range: &'a mut DepthRange,
+    pub(crate) depth_range: &'a mut DepthRange,
     /// Colour map for the histogram's legend.
-    pub colour_map: DepthColourMap,
+    pub(crate) colour_map: DepthColourMap,
     /// Colour of no-hit pixels on screen.
-    pub no_hit_rgb: [u8; 3],
+    pub(crate) no_hit_rgb: [u8; 3],
 }
 
 /// Pointer input on the images, in image pixels with y up (see [`crate::explore::navigate`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct ImageGestures {
+pub(crate) struct ImageGestures {
     /// Image size in physical pixels the area asks for.
-    pub wanted_px: (u32, u32),
+    pub(crate) wanted_px: (u32, u32),
     /// Primary (or middle) drag: the picture should follow by this many pixels.
-    pub pan_px: DVec2,
+    pub(crate) pan_px: DVec2,
     /// Secondary drag, or a primary drag with Shift: orbit by these many points (x right, y up).
-    pub orbit_points: DVec2,
+    pub(crate) orbit_points: DVec2,
     /// Wheel or pinch zoom: size factor (< 1 zooms in) and the anchor pixel.
-    pub zoom: Option<(f64, DVec2)>,
+    pub(crate) zoom: Option<(f64, DVec2)>,
     /// The pointer's position on the image, if it is over one.
-    pub hover_px: Option<DVec2>,
+    pub(crate) hover_px: Option<DVec2>,
     /// A click (no drag) on an image pins this position.
-    pub clicked_px: Option<DVec2>,
+    pub(crate) clicked_px: Option<DVec2>,
     /// "Unpin" was clicked.
-    pub unpin: bool,
+    pub(crate) unpin: bool,
     /// A histogram handle moved the depth range.
-    pub depth_range_dragged: bool,
+    pub(crate) depth_range_dragged: bool,
 }
 
 /// The image size (physical pixels) that fills half of the area `available_points` at
 /// `pixels_per_point`: the two images side by side, each below its caption and above the footer.
-pub fn image_size_px(
+pub(crate) fn image_size_px(
     available_points: Vec2,
     pixels_per_point: f32,
     max_texture_side: usize,
@@ -103,7 +103,7 @@ fn half_points(available: Vec2) -> Vec2 {
 }
 
 /// Position of `pos` on an image drawn in `rect` of `size_px` pixels: image pixels, y up.
-pub fn image_px_of(pos: Pos2, rect: Rect, size_px: [u32; 2]) -> DVec2 {
+pub(crate) fn image_px_of(pos: Pos2, rect: Rect, size_px: [u32; 2]) -> DVec2 {
     DVec2::new(
         f64::from((pos.x - rect.min.x) / rect.width()) * f64::from(size_px[0]),
         f64::from((rect.max.y - pos.y) / rect.height()) * f64::from(size_px[1]),
@@ -121,7 +121,11 @@ fn pos_of_image_px(px: DVec2, rect: Rect, size_px: [u32; 2]) -> Pos2 {
 /// The colour and depth images side by side, each scaled to fit its half while keeping square
 /// pixels (at 1:1 physical pixels when the frame matches the area), with the probe and the
 /// histogram under them. Returns the pointer gestures and the size the area asks for.
-pub fn images_ui(ui: &mut Ui, shown: Option<ShownImages<'_>>, footer: Footer<'_>) -> ImageGestures {
+pub(crate) fn images_ui(
+    ui: &mut Ui,
+    shown: Option<ShownImages<'_>>,
+    footer: Footer<'_>,
+) -> ImageGestures {
     let pixels_per_point = ui.ctx().pixels_per_point();
     let available = ui.available_size();
     let max_texture_side = ui.ctx().input(|i| i.max_texture_side);

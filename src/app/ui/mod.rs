@@ -10,11 +10,11 @@
 //! * [`probe_text`]: what the probe says about a pixel
 //! * [`status_bar`]: the status bar and the error banner
 
-pub mod depth_section;
-pub mod file_sections;
+pub(crate) mod depth_section;
+pub(crate) mod file_sections;
 pub mod histogram;
 pub mod images;
-pub mod probe_text;
-pub mod status_bar;
-pub mod toolbar;
-pub mod view_controls;
+pub(crate) mod probe_text;
+pub(crate) mod status_bar;
+pub(crate) mod toolbar;
+pub(crate) mod view_controls;

@@ -4,7 +4,7 @@
 use crate::explore::probe::Probe;
 
 /// Three lines describing a probe: where the pixel is, what its ray hits, and where.
-pub fn describe_probe(name: &str, probe: &Probe) -> Vec<String> {
+pub(crate) fn describe_probe(name: &str, probe: &Probe) -> Vec<String> {
     let short = short_number;
     let mut lines = vec![format!(
         "{name:<6} pixel ({}, {}) · screen ({}, {})",
@@ -42,7 +42,7 @@ pub fn describe_probe(name: &str, probe: &Probe) -> Vec<String> {
 }
 
 /// The probe's lines: the pinned pixel first, then the hovered one.
-pub fn probe_lines(pinned: Option<Probe>, hover: Option<Probe>) -> Vec<String> {
+pub(crate) fn probe_lines(pinned: Option<Probe>, hover: Option<Probe>) -> Vec<String> {
     [("pinned", pinned), ("hover", hover)]
         .into_iter()
         .filter_map(|(name, probe)| probe.map(|probe| describe_probe(name, &probe)))
@@ -51,7 +51,7 @@ pub fn probe_lines(pinned: Option<Probe>, hover: Option<Probe>) -> Vec<String> {
 }
 
 /// A number shortened for captions (up to 6 significant digits).
-pub fn short_number(value: f64) -> String {
+pub(crate) fn short_number(value: f64) -> String {
     let text = format!("{value:.6}");
     let trimmed = text.trim_end_matches('0').trim_end_matches('.');
     if trimmed.len() > 12 {

@@ -7,29 +7,29 @@ use crate::app::status::Status;
 use crate::render::Precision;
 
 /// What the status bar shows.
-pub struct StatusLine<'a> {
+pub(crate) struct StatusLine<'a> {
     /// Render time of the frame on screen, milliseconds.
-    pub render_ms: Option<f64>,
+    pub(crate) render_ms: Option<f64>,
     /// Size of the frame on screen.
-    pub size_px: Option<[u32; 2]>,
+    pub(crate) size_px: Option<[u32; 2]>,
     /// Spheres in the scene.
-    pub sphere_count: usize,
+    pub(crate) sphere_count: usize,
     /// The scene's path or name.
-    pub scene_name: String,
+    pub(crate) scene_name: String,
     /// Precision the frame on screen was rendered in.
-    pub precision: Option<Precision>,
+    pub(crate) precision: Option<Precision>,
     /// What is on screen: "preview" or the refined quality.
-    pub stage: Option<String>,
+    pub(crate) stage: Option<String>,
     /// A render is in flight.
-    pub busy: bool,
+    pub(crate) busy: bool,
     /// A scene load that has run long enough to show its progress: its name and share done.
-    pub loading: Option<(String, f32)>,
+    pub(crate) loading: Option<(String, f32)>,
     /// Message of the last action (export result, view problem).
-    pub message: Option<&'a Status>,
+    pub(crate) message: Option<&'a Status>,
 }
 
 /// The status bar: render time, image size, sphere count, scene path, last message.
-pub fn status_bar_ui(ui: &mut Ui, status: &StatusLine<'_>) {
+pub(crate) fn status_bar_ui(ui: &mut Ui, status: &StatusLine<'_>) {
     ui.horizontal(|ui| {
         match status.render_ms {
             Some(ms) => ui.label(format!("render {ms:.1} ms")),
@@ -79,7 +79,7 @@ pub fn status_bar_ui(ui: &mut Ui, status: &StatusLine<'_>) {
 
 /// A red banner with an error (e.g. a scene that failed to parse) and a dismiss button.
 /// Returns true when dismissed.
-pub fn error_banner_ui(ui: &mut Ui, message: &str) -> bool {
+pub(crate) fn error_banner_ui(ui: &mut Ui, message: &str) -> bool {
     let mut dismissed = false;
     ui.horizontal(|ui| {
         ui.label(

@@ -7,7 +7,7 @@ use crate::app::actions::Action;
 use crate::app::dialogs::DialogKind;
 
 /// The toolbar's buttons; `show_controls` is the panel toggle. Returns the actions clicked.
-pub fn toolbar_ui(ui: &mut Ui, show_controls: &mut bool) -> Vec<Action> {
+pub(crate) fn toolbar_ui(ui: &mut Ui, show_controls: &mut bool) -> Vec<Action> {
     let mut actions = Vec::new();
     ui.horizontal(|ui| {
         let buttons = [

@@ -26,7 +26,7 @@ fn slider(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::RangeInclu
 
 /// Sliders (each with a typed-in value) for the camera centre, size, depth range, direction and
 /// up. Edits `view` in place. ("Reset view" is in the toolbar.)
-pub fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) {
+pub(crate) fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) {
     ui.heading("View");
     for (axis, name) in ["centre x", "centre y", "centre z"].into_iter().enumerate() {
         let mut value = view.center_world[axis];
@@ -76,7 +76,7 @@ pub fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) {
 }
 
 /// The quality section: precision mode.
-pub fn quality_ui(ui: &mut Ui, quality: &mut Quality) {
+pub(crate) fn quality_ui(ui: &mut Ui, quality: &mut Quality) {
     ui.heading("Quality");
     ui.horizontal(|ui| {
         ui.label("precision");
@@ -149,4 +149,4 @@ pub fn quality_ui(ui: &mut Ui, quality: &mut Quality) {
 }
 
 /// Samples-per-pixel choices offered (squares, so every sampler accepts them).
-pub const SAMPLE_CHOICES: [u32; 7] = [1, 4, 9, 16, 25, 64, 256];
+pub(crate) const SAMPLE_CHOICES: [u32; 7] = [1, 4, 9, 16, 25, 64, 256];

@@ -8,13 +8,13 @@ use super::Disc;
 use crate::geometry::camera::PixelGrid;
 
 /// Rows per band: the unit of binning and of parallel work.
-pub const BAND_ROWS: usize = 8;
+pub(crate) const BAND_ROWS: usize = 8;
 
 /// Discs listed per band of [`BAND_ROWS`] rows, binned in parallel: the discs are split into
 /// consecutive chunks, each chunk lists its discs per band (compressed rows), and a band's list is
 /// the chunks' lists one after the other — file order, with no serial merge.
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Bands {
+pub(crate) struct Bands {
     chunks: Vec<ChunkBands>,
 }
 
@@ -27,7 +27,7 @@ struct ChunkBands {
 
 impl Bands {
     /// The discs (indices into the projected discs) listed in band `band`, in file order.
-    pub fn band(&self, band: usize) -> impl Iterator<Item = u32> + '_ {
+    pub(crate) fn band(&self, band: usize) -> impl Iterator<Item = u32> + '_ {
         self.chunks.iter().flat_map(move |chunk| {
             let listed = match chunk.offsets.get(band..=band + 1) {
                 Some(&[start, end]) => &chunk.indices[start..end],
@@ -37,8 +37,9 @@ impl Bands {
         })
     }
 
+    #[cfg(test)]
     /// How many (disc, band) entries the lists hold.
-    pub fn listed(&self) -> usize {
+    pub(crate) fn listed(&self) -> usize {
         self.chunks.iter().map(|chunk| chunk.indices.len()).sum()
     }
 }
@@ -105,7 +106,7 @@ const MIN_BIN_CHUNK: usize = 16_384;
 
 /// Lists each disc in the bands its rows touch: chunks in parallel, each in two passes (count,
 /// then fill).
-pub fn bin_discs(discs: &[Disc], grid: &PixelGrid) -> Bands {
+pub(crate) fn bin_discs(discs: &[Disc], grid: &PixelGrid) -> Bands {
     let band_count = (grid.height_px as usize).div_ceil(BAND_ROWS);
     let chunk_len = discs
         .len()

@@ -27,9 +27,8 @@ mod real;
 mod shade;
 
 pub(crate) use bins::pixel_span;
-pub use bins::{BAND_ROWS, Bands, bin_discs};
 pub(crate) use raster::rasterise_frame;
-pub use real::Real;
+#[cfg(feature = "oracle")]
 pub(crate) use shade::frame_from_hits;
 
 use crate::geometry::camera::CameraBasis;
@@ -44,7 +43,7 @@ pub struct Disc {
     /// Screen v of the centre.
     pub v: f64,
     /// Depth of the centre along the view direction (t of the centre).
-    pub w: f64,
+    pub(crate) w: f64,
     /// r², the disc's squared radius.
     pub radius_sq: f64,
     /// Index of the sphere in file order.

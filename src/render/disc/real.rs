@@ -6,7 +6,7 @@ use std::ops::{Add, Mul, Sub};
 use crate::render::Precision;
 
 /// The floating-point type of the per-pixel arithmetic.
-pub trait Real:
+pub(crate) trait Real:
     Copy
     + PartialOrd
     + Add<Output = Self>

@@ -46,7 +46,7 @@ impl Sampler {
     }
 
     /// Whether the sample count must be a perfect square.
-    pub fn needs_square(self) -> bool {
+    pub(crate) fn needs_square(self) -> bool {
         !matches!(self, Self::Random)
     }
 }
@@ -86,7 +86,7 @@ impl Filter {
     }
 
     /// The size parameter (radius or sigma), pixels.
-    pub fn size(self) -> f32 {
+    pub(crate) fn size(self) -> f32 {
         match self {
             Self::Box { radius } | Self::Tent { radius } => radius,
             Self::Gaussian { sigma } => sigma,
@@ -94,7 +94,7 @@ impl Filter {
     }
 
     /// The same kind of filter with another size.
-    pub fn with_size(self, size: f32) -> Self {
+    pub(crate) fn with_size(self, size: f32) -> Self {
         match self {
             Self::Box { .. } => Self::Box { radius: size },
             Self::Tent { .. } => Self::Tent { radius: size },
@@ -112,7 +112,7 @@ impl Filter {
     }
 
     /// The (unnormalised) weight of a sample at offset (dx, dy) pixels from the pixel centre.
-    pub fn weight(self, dx: f32, dy: f32) -> f32 {
+    pub(crate) fn weight(self, dx: f32, dy: f32) -> f32 {
         match self {
             Self::Box { radius } => {
                 if dx.abs() <= radius && dy.abs() <= radius {
@@ -141,10 +141,10 @@ impl fmt::Display for Filter {
 }
 
 /// Largest filter size accepted, pixels.
-pub const MAX_FILTER_SIZE: f32 = 8.0;
+pub(crate) const MAX_FILTER_SIZE: f32 = 8.0;
 
 /// Largest sample count per pixel accepted.
-pub const MAX_SAMPLES: u32 = 1024;
+pub(crate) const MAX_SAMPLES: u32 = 1024;
 
 /// Supersampling settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -194,7 +194,7 @@ fn exact_square_root(count: u32) -> Option<u32> {
 
 impl Sampling {
     /// Checks the settings.
-    pub fn validate(&self) -> Result<(), SamplingError> {
+    pub(crate) fn validate(&self) -> Result<(), SamplingError> {
         if !(1..=MAX_SAMPLES).contains(&self.samples) {
             return Err(SamplingError::SampleCount(self.samples));
         }
@@ -215,7 +215,7 @@ impl Sampling {
     }
 
     /// Sample offsets of pixel (x, y_up) within the pixel, each in [0, 1)² from its bottom-left.
-    pub fn offsets(&self, x: u32, y_up: u32) -> Vec<(f32, f32)> {
+    pub(crate) fn offsets(&self, x: u32, y_up: u32) -> Vec<(f32, f32)> {
         let mut rng = SplitMix64::new(
             self.seed
                 ^ (u64::from(x)).wrapping_mul(0x9E37_79B9_7F4A_7C15)

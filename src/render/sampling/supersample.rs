@@ -24,11 +24,11 @@ struct Sample {
 /// Result of supersampling a frame.
 pub(crate) struct Supersampled {
     /// 8-bit colour per pixel, top row first.
-    pub colour: Vec<[u8; 3]>,
+    pub(crate) colour: Vec<[u8; 3]>,
     /// Filtered depth grey in [0, 1] per pixel, top row first.
-    pub depth_grey: Vec<f32>,
+    pub(crate) depth_grey: Vec<f32>,
     /// Sample–disc tests performed.
-    pub disc_tests: u64,
+    pub(crate) disc_tests: u64,
 }
 
 /// Rows per band when supersampling.
