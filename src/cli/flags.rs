@@ -1,17 +1,9 @@
 //! The flag table: every flag's spelling, the values that follow it and its help line, in one
-//! place. Parsing ([`RawArgs::parse`]), the usage text ([`usage`]) and writing a request back to
-//! arguments ([`super::RenderRequest::to_arguments`]) all read it, so renaming a flag is a
-//! one-line change here; the rest of the program names flags by [`Flag`].
-//!
-//! Flags are spelled as the course spells them, with a single dash (`-input FILE`, `-size W H`,
-//! `-depth DMIN DMAX FILE`); no argument-parsing crate handles multi-value single-dash flags in
-//! that style, so the parsing is written here.
+//! place. Parsing ([`super::RawArgs::parse`]), the usage text ([`usage`]) and writing a request
+//! back to arguments ([`super::RenderRequest::to_arguments`]) all read it, so renaming a flag is
+//! a one-line change here; the rest of the program names flags by [`Flag`].
 
-use std::collections::BTreeMap;
-use std::ffi::OsString;
 use std::fmt;
-
-use super::error::UsageError;
 
 /// A command-line flag.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -154,77 +146,6 @@ pub fn usage() -> String {
         Flag::Depth
     ));
     text
-}
-
-/// Stage one of parsing: flags recognised, values collected, nothing interpreted.
-#[derive(Debug, Clone, Default)]
-pub struct RawArgs {
-    values: BTreeMap<Flag, Vec<OsString>>,
-}
-
-impl RawArgs {
-    /// Splits arguments (without the program name) into flags and values: unknown and repeated
-    /// flags and missing values are usage errors.
-    pub(crate) fn parse<I, S>(arguments: I) -> Result<Self, UsageError>
-    where
-        I: IntoIterator<Item = S>,
-        S: Into<OsString>,
-    {
-        let mut arguments = arguments.into_iter().map(Into::into).peekable();
-        let mut values = BTreeMap::new();
-        while let Some(argument) = arguments.next() {
-            let word = argument.to_string_lossy();
-            let flag = match Flag::named(&word) {
-                Some(flag) => flag,
-                None if word.starts_with('-') && word.len() > 1 => {
-                    return Err(UsageError::UnknownFlag(word.into_owned()));
-                }
-                None => return Err(UsageError::StrayArgument(word.into_owned())),
-            };
-            let mut flag_values = Vec::with_capacity(flag.arity());
-            for _ in 0..flag.arity() {
-                // A value may start with '-' (a negative depth); a known flag may not be a value.
-                let next_is_flag = arguments
-                    .peek()
-                    .is_some_and(|next| Flag::named(&next.to_string_lossy()).is_some());
-                match arguments.next() {
-                    Some(value) if !next_is_flag => flag_values.push(value),
-                    _ => return Err(UsageError::MissingValue(flag)),
-                }
-            }
-            if values.insert(flag, flag_values).is_some() {
-                return Err(UsageError::Repeated(flag));
-            }
-        }
-        Ok(Self { values })
-    }
-
-    /// Whether `flag` was given.
-    pub(crate) fn has(&self, flag: Flag) -> bool {
-        self.values.contains_key(&flag)
-    }
-
-    /// Value `index` of `flag`, if given.
-    pub(crate) fn value(&self, flag: Flag, index: usize) -> Option<&OsString> {
-        self.values.get(&flag).and_then(|values| values.get(index))
-    }
-
-    /// Value `index` of `flag` as text ("" when the flag is absent).
-    pub(crate) fn text(&self, flag: Flag, index: usize) -> Result<&str, UsageError> {
-        self.value(flag, index)
-            .map(|value| value.to_str().ok_or(UsageError::NotText(flag)))
-            .unwrap_or(Ok(""))
-    }
-
-    /// The one flag of `flags` that is given, if any; two of them are a conflict.
-    pub(crate) fn one_of(&self, flags: &[Flag]) -> Result<Option<Flag>, UsageError> {
-        let given: Vec<Flag> = flags.iter().copied().filter(|&f| self.has(f)).collect();
-        match given.as_slice() {
-            [] => Ok(None),
-            [one] => Ok(Some(*one)),
-            [first, second, ..] => Err(UsageError::Conflicting(*first, *second)),
-        }
-    }
 }
 
 #[cfg(test)]

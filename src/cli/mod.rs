@@ -10,13 +10,15 @@
 mod error;
 mod flags;
 pub(crate) mod progress;
+mod raw_args;
 mod request;
 pub mod run;
 #[cfg(test)]
 mod tests;
 
 pub use error::UsageError;
-pub use flags::{Flag, RawArgs, usage};
+pub use flags::{Flag, usage};
+pub use raw_args::RawArgs;
 pub use request::{
     Command, DEFAULT_SIZE_PX, DepthOutput, RenderRequest, ViewerRequest, parse_command,
 };

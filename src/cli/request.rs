@@ -6,7 +6,8 @@ use std::ffi::OsString;
 use std::path::PathBuf;
 
 use super::error::UsageError;
-use super::flags::{Flag, RawArgs};
+use super::flags::Flag;
+use super::raw_args::RawArgs;
 use crate::output::{ImageFormat, RawDepthFormat};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 use crate::render::{Filter, Precision, Quality, Sampler, Sampling, check_image_size};

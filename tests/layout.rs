@@ -1,0 +1,194 @@
+//! The source tree's house rules, checked on the files themselves: imports run downward through
+//! the layers (geometry, scene, render at the bottom; the viewer at the top), no two modules
+//! import each other, no file of `src/` is longer than 500 lines (unit-test files excepted) and
+//! the viewer's coordinator stays under 300.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+/// The layers, bottom first. A module may use its own layer and the layers before it; `oracle`
+/// (test and study support) may use the core, and nothing but tests may use it.
+const LAYERS: [&str; 9] = [
+    "geometry", "scene", "render", "oracle", "explore", "output", "cli", "export", "app",
+];
+
+fn rust_files(folder: &Path, found: &mut Vec<PathBuf>) {
+    for entry in std::fs::read_dir(folder).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            rust_files(&path, found);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            found.push(path);
+        }
+    }
+}
+
+fn source_files() -> Vec<PathBuf> {
+    let mut files = Vec::new();
+    rust_files(&Path::new(env!("CARGO_MANIFEST_DIR")).join("src"), &mut files);
+    files.sort();
+    files
+}
+
+/// `src/render/disc/raster.rs` → ["render", "disc", "raster"]; `mod.rs` names its folder.
+fn module_path(file: &Path) -> Vec<String> {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let relative = file.strip_prefix(&src).unwrap().with_extension("");
+    let mut parts: Vec<String> = relative
+        .iter()
+        .map(|p| p.to_string_lossy().into_owned())
+        .collect();
+    if parts.last().is_some_and(|last| last == "mod") {
+        parts.pop();
+    }
+    parts
+}
+
+/// The code of a file without its unit tests (a `#[cfg(test)] mod tests` block at the end).
+fn without_tests(text: &str) -> &str {
+    text.find("#[cfg(test)]\nmod tests")
+        .map_or(text, |start| &text[..start])
+}
+
+/// The modules a file refers to as `crate::a::b…`, as far as `depth` segments.
+fn crate_references(text: &str, depth: usize) -> BTreeSet<Vec<String>> {
+    let mut found = BTreeSet::new();
+    for (start, _) in text.match_indices("crate::") {
+        let rest = &text[start + "crate::".len()..];
+        let path: String = rest
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':')
+            .collect();
+        let parts: Vec<String> = path
+            .split("::")
+            .filter(|p| !p.is_empty())
+            .take(depth)
+            .map(str::to_owned)
+            .collect();
+        if !parts.is_empty() {
+            found.insert(parts);
+        }
+    }
+    found
+}
+
+#[test]
+fn imports_run_downward_through_the_layers() {
+    let layer_of = |name: &str| LAYERS.iter().position(|layer| *layer == name);
+    let mut upward = Vec::new();
+    for file in source_files() {
+        let module = module_path(&file);
+        let Some(own) = module.first().and_then(|top| layer_of(top)) else {
+            continue; // lib.rs, main.rs
+        };
+        let text = std::fs::read_to_string(&file).unwrap();
+        for reference in crate_references(without_tests(&text), 1) {
+            let Some(used) = layer_of(&reference[0]) else {
+                continue;
+            };
+            let oracle = layer_of("oracle").unwrap();
+            let allowed = if used == oracle {
+                own == oracle
+            } else {
+                used <= own
+            };
+            if !allowed {
+                upward.push(format!("{} uses crate::{}", file.display(), reference[0]));
+            }
+        }
+    }
+    assert!(upward.is_empty(), "imports against the layers:\n{upward:#?}");
+}
+
+/// The modules a file in module `own` uses: `crate::…` and `super::…` paths, each cut to the
+/// longest prefix that is a module of the tree.
+fn used_modules(text: &str, own: &[String], modules: &BTreeSet<Vec<String>>) -> BTreeSet<Vec<String>> {
+    let mut used = BTreeSet::new();
+    for (start, _) in text.match_indices("crate::").chain(text.match_indices("super::")) {
+        let before = text[..start].chars().last();
+        if before.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == ':') {
+            continue; // part of a longer path (super::super::, raytracer::crate…)
+        }
+        let path: String = text[start..]
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':')
+            .collect();
+        let mut parts: Vec<String> = Vec::new();
+        for (index, part) in path.split("::").filter(|p| !p.is_empty()).enumerate() {
+            match part {
+                "crate" if index == 0 => parts.clear(),
+                "super" if index == 0 || parts.len() < own.len() => {
+                    if parts.is_empty() {
+                        parts = own.to_vec();
+                    }
+                    // A file's `super` is its parent module.
+                    parts.pop();
+                }
+                _ => parts.push(part.to_owned()),
+            }
+        }
+        while !parts.is_empty() && !modules.contains(&parts) {
+            parts.pop();
+        }
+        if !parts.is_empty() {
+            used.insert(parts);
+        }
+    }
+    used
+}
+
+#[test]
+fn no_import_circles_between_modules() {
+    let files = source_files();
+    let modules: BTreeSet<Vec<String>> = files.iter().map(|f| module_path(f)).collect();
+    // Module → the modules it uses (not its own ancestors or descendants: a folder's mod.rs
+    // declaring and re-exporting its children is not an import).
+    let mut edges: BTreeMap<Vec<String>, BTreeSet<Vec<String>>> = BTreeMap::new();
+    for file in &files {
+        let own = module_path(file);
+        let text = std::fs::read_to_string(file).unwrap();
+        for used in used_modules(without_tests(&text), &own, &modules) {
+            let related = used.starts_with(&own) || own.starts_with(&used);
+            if !related {
+                edges.entry(own.clone()).or_default().insert(used);
+            }
+        }
+    }
+    // Depth-first search for a path back to where it started.
+    let mut circles = Vec::new();
+    for start in edges.keys() {
+        let mut stack = vec![(start.clone(), vec![start.clone()])];
+        let mut seen = BTreeSet::new();
+        while let Some((at, path)) = stack.pop() {
+            for next in edges.get(&at).into_iter().flatten() {
+                if next == start {
+                    let names: Vec<String> = path.iter().map(|m| m.join("::")).collect();
+                    circles.push(format!("{} → {}", names.join(" → "), start.join("::")));
+                } else if seen.insert(next.clone()) {
+                    let mut longer = path.clone();
+                    longer.push(next.clone());
+                    stack.push((next.clone(), longer));
+                }
+            }
+        }
+    }
+    assert!(circles.is_empty(), "import circles:\n{circles:#?}");
+}
+
+#[test]
+fn files_stay_short_and_the_coordinator_small() {
+    let mut long = Vec::new();
+    for file in source_files() {
+        let name = file.file_name().unwrap().to_string_lossy();
+        if name.ends_with("tests.rs") {
+            continue; // unit tests in a file of their own
+        }
+        let text = std::fs::read_to_string(&file).unwrap();
+        let lines = without_tests(&text).lines().count();
+        let limit = if file.ends_with("app/mod.rs") { 300 } else { 500 };
+        if lines > limit {
+            long.push(format!("{}: {lines} lines (limit {limit})", file.display()));
+        }
+    }
+    assert!(long.is_empty(), "files over their limit:\n{long:#?}");
+}
