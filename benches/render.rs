@@ -41,14 +41,14 @@ fn course_2000x2000(c: &mut Criterion) {
         let scene = load_scene(&path).expect("course scene");
         let view = view_of(&scene, 2000);
         group.bench_function(format!("scene1_0{number}"), |b| {
-            b.iter(|| render(black_box(&scene), black_box(&view)))
+            b.iter(|| render(black_box(&scene), black_box(&view)));
         });
     }
     group.bench_function("scene1_02_brute_force", |b| {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_02.txt");
         let scene = load_scene(&path).expect("course scene");
         let view = view_of(&scene, 2000);
-        b.iter(|| render_reference(black_box(&scene), black_box(&view)))
+        b.iter(|| render_reference(black_box(&scene), black_box(&view)));
     });
     group.finish();
 }
@@ -60,11 +60,11 @@ fn generated_1024x1024(c: &mut Criterion) {
         let scene = random_scene(1, count);
         let view = view_of(&scene, 1024);
         group.bench_with_input(BenchmarkId::new("binned", count), &count, |b, _| {
-            b.iter(|| render(black_box(&scene), black_box(&view)))
+            b.iter(|| render(black_box(&scene), black_box(&view)));
         });
         if count <= 1_000 {
             group.bench_with_input(BenchmarkId::new("brute_force", count), &count, |b, _| {
-                b.iter(|| render_reference(black_box(&scene), black_box(&view)))
+                b.iter(|| render_reference(black_box(&scene), black_box(&view)));
             });
         }
     }
@@ -78,7 +78,7 @@ fn parse(c: &mut Criterion) {
         let text = scene_to_text(&random_scene(1, count));
         group.throughput(Throughput::Bytes(text.len() as u64));
         group.bench_with_input(BenchmarkId::from_parameter(count), &text, |b, text| {
-            b.iter(|| parse_scene(black_box(text)))
+            b.iter(|| parse_scene(black_box(text)));
         });
     }
     group.finish();

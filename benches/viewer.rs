@@ -38,13 +38,13 @@ fn viewer_frame_1024x1024(c: &mut Criterion) {
             Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/scene1_0{number}.txt"));
         let job = job_1024x1024(load_scene(&path).expect("course scene"));
         group.bench_function(format!("scene1_0{number}"), |b| {
-            b.iter(|| prepare_frame(black_box(&job)))
+            b.iter(|| prepare_frame(black_box(&job)));
         });
     }
     for count in [1_000usize, 100_000] {
         let job = job_1024x1024(raytracer::oracle::random_scene(1, count));
         group.bench_function(format!("generated_{count}"), |b| {
-            b.iter(|| prepare_frame(black_box(&job)))
+            b.iter(|| prepare_frame(black_box(&job)));
         });
     }
     group.finish();

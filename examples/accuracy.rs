@@ -276,7 +276,7 @@ fn format_value(value: f64) -> String {
     if (exponent - exponent.round()).abs() < 1e-9 {
         format!("1e{}", exponent.round() as i32)
     } else {
-        format!("{:.1e}", value)
+        format!("{value:.1e}")
     }
 }
 

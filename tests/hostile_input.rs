@@ -128,7 +128,7 @@ fn arbitrary_bytes_never_panic() {
 /// Mutates a scene's words: delete, duplicate, swap in a hostile word, or truncate.
 fn mutate(text: &str, rng: &mut SplitMix64) -> Vec<u8> {
     let mut words: Vec<String> = text.split_whitespace().map(str::to_owned).collect();
-    for _ in 0..1 + rng.next_u64() % 2 {
+    for _ in 0..=(rng.next_u64() % 2) {
         if words.is_empty() {
             break;
         }

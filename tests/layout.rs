@@ -25,7 +25,10 @@ fn rust_files(folder: &Path, found: &mut Vec<PathBuf>) {
 
 fn source_files() -> Vec<PathBuf> {
     let mut files = Vec::new();
-    rust_files(&Path::new(env!("CARGO_MANIFEST_DIR")).join("src"), &mut files);
+    rust_files(
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("src"),
+        &mut files,
+    );
     files.sort();
     files
 }
@@ -97,14 +100,24 @@ fn imports_run_downward_through_the_layers() {
             }
         }
     }
-    assert!(upward.is_empty(), "imports against the layers:\n{upward:#?}");
+    assert!(
+        upward.is_empty(),
+        "imports against the layers:\n{upward:#?}"
+    );
 }
 
 /// The modules a file in module `own` uses: `crate::…` and `super::…` paths, each cut to the
 /// longest prefix that is a module of the tree.
-fn used_modules(text: &str, own: &[String], modules: &BTreeSet<Vec<String>>) -> BTreeSet<Vec<String>> {
+fn used_modules(
+    text: &str,
+    own: &[String],
+    modules: &BTreeSet<Vec<String>>,
+) -> BTreeSet<Vec<String>> {
     let mut used = BTreeSet::new();
-    for (start, _) in text.match_indices("crate::").chain(text.match_indices("super::")) {
+    for (start, _) in text
+        .match_indices("crate::")
+        .chain(text.match_indices("super::"))
+    {
         let before = text[..start].chars().last();
         if before.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == ':') {
             continue; // part of a longer path (super::super::, raytracer::crate…)
@@ -185,7 +198,11 @@ fn files_stay_short_and_the_coordinator_small() {
         }
         let text = std::fs::read_to_string(&file).unwrap();
         let lines = without_tests(&text).lines().count();
-        let limit = if file.ends_with("app/mod.rs") { 300 } else { 500 };
+        let limit = if file.ends_with("app/mod.rs") {
+            300
+        } else {
+            500
+        };
         if lines > limit {
             long.push(format!("{}: {lines} lines (limit {limit})", file.display()));
         }

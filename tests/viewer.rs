@@ -62,12 +62,12 @@ fn without_a_file_the_default_scene_is_shown() {
 
 #[test]
 fn every_slider_changes_the_view_and_the_frame() {
+    type Field = fn(&View) -> f64;
     let mut harness = viewer(Some(scene_path("scene1_02.txt")));
     // Open the collapsed direction/up section.
     harness.get_by_label("Direction and up").click();
     settle(&mut harness);
 
-    type Field = fn(&View) -> f64;
     let sliders: [(&str, f64, Field); 12] = [
         ("centre x", 0.7, |v| v.center_world.x),
         ("centre y", -0.4, |v| v.center_world.y),

@@ -121,7 +121,11 @@ impl ViewerApp {
 
     /// Takes a frame the worker finished into the textures (or shows why it failed).
     pub(super) fn receive_frame(&mut self) {
-        let Some(result) = self.worker.as_ref().and_then(|w| w.take_finished()) else {
+        let Some(result) = self
+            .worker
+            .as_ref()
+            .and_then(super::super::render::worker::RenderWorker::take_finished)
+        else {
             return;
         };
         let JobResult {
@@ -138,37 +142,34 @@ impl ViewerApp {
             }
         };
         let render_ms = render_time.as_secs_f64() * 1e3;
-        match &mut self.shown {
-            Some(shown) => {
-                shown.colour.set(prepared.colour, TextureOptions::NEAREST);
-                shown.depth.set(prepared.depth, TextureOptions::NEAREST);
-                shown.frame = prepared.frame;
-                shown.view = job.view;
-                shown.scene_epoch = job.scene_epoch;
-                shown.quality = job.quality;
-                shown.depth_style = job.depth_style;
-                shown.histogram = prepared.histogram;
-                shown.render_ms = render_ms;
-            }
-            None => {
-                let colour =
-                    self.ctx
-                        .load_texture("colour", prepared.colour, TextureOptions::NEAREST);
-                let depth = self
-                    .ctx
-                    .load_texture("depth", prepared.depth, TextureOptions::NEAREST);
-                self.shown = Some(Shown {
-                    frame: prepared.frame,
-                    view: job.view,
-                    scene_epoch: job.scene_epoch,
-                    quality: job.quality,
-                    depth_style: job.depth_style,
-                    colour,
-                    depth,
-                    histogram: prepared.histogram,
-                    render_ms,
-                });
-            }
+        if let Some(shown) = &mut self.shown {
+            shown.colour.set(prepared.colour, TextureOptions::NEAREST);
+            shown.depth.set(prepared.depth, TextureOptions::NEAREST);
+            shown.frame = prepared.frame;
+            shown.view = job.view;
+            shown.scene_epoch = job.scene_epoch;
+            shown.quality = job.quality;
+            shown.depth_style = job.depth_style;
+            shown.histogram = prepared.histogram;
+            shown.render_ms = render_ms;
+        } else {
+            let colour = self
+                .ctx
+                .load_texture("colour", prepared.colour, TextureOptions::NEAREST);
+            let depth = self
+                .ctx
+                .load_texture("depth", prepared.depth, TextureOptions::NEAREST);
+            self.shown = Some(Shown {
+                frame: prepared.frame,
+                view: job.view,
+                scene_epoch: job.scene_epoch,
+                quality: job.quality,
+                depth_style: job.depth_style,
+                colour,
+                depth,
+                histogram: prepared.histogram,
+                render_ms,
+            });
         }
         if self
             .status

@@ -63,7 +63,9 @@ impl ViewerApp {
         for action in pressed {
             self.apply(action);
         }
-        if let Some(WatchState::Changed) = self.watcher.as_ref().map(|watcher| watcher.poll()) {
+        if let Some(WatchState::Changed) =
+            self.watcher.as_ref().map(super::reload::FileWatcher::poll)
+        {
             self.reload();
         }
         if let Some(path) = dropped {

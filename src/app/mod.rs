@@ -232,7 +232,7 @@ impl ViewerApp {
             colour_map: style.colour_map,
             no_hit_rgb: style.no_hit_rgb,
         };
-        let gestures = images_ui(ui, shown, footer);
+        let gestures = images_ui(ui, shown.as_ref(), footer);
         self.apply_gestures(&gestures);
         let (width_px, height_px) = gestures.wanted_px;
         if (width_px, height_px) != (self.view.width_px, self.view.height_px) {

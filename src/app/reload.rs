@@ -73,9 +73,10 @@ impl FileWatcher {
 
     /// Whether the file changed; a `Changed` answer is given once per change.
     pub(crate) fn poll(&self) -> WatchState {
-        match self.changed.swap(false, Ordering::Acquire) {
-            true => WatchState::Changed,
-            false => WatchState::Quiet,
+        if self.changed.swap(false, Ordering::Acquire) {
+            WatchState::Changed
+        } else {
+            WatchState::Quiet
         }
     }
 }

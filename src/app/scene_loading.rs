@@ -108,9 +108,10 @@ impl ViewerApp {
         };
         let result = match pending.task.poll() {
             Poll::Running => {
-                let wait = match pending.shows_progress() {
-                    true => Duration::from_millis(50),
-                    false => SHOW_PROGRESS_AFTER,
+                let wait = if pending.shows_progress() {
+                    Duration::from_millis(50)
+                } else {
+                    SHOW_PROGRESS_AFTER
                 };
                 self.ctx.request_repaint_after(wait);
                 return;

@@ -99,7 +99,7 @@ impl DepthDisplay {
         if self.mark_no_hit {
             NO_HIT_MARK
         } else {
-            self.colour_map.file_no_hit()
+            DepthColourMap::FILE_NO_HIT
         }
     }
 }

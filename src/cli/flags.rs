@@ -3,7 +3,7 @@
 //! back to arguments ([`super::RenderRequest::to_arguments`]) all read it, so renaming a flag is
 //! a one-line change here; the rest of the program names flags by [`Flag`].
 
-use std::fmt;
+use std::fmt::{self, Write as _};
 
 /// A command-line flag.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -135,16 +135,17 @@ pub fn usage() -> String {
     );
     for spec in FLAGS {
         let synopsis = spec.flag.synopsis();
-        text.push_str(&format!("  {synopsis:<24} {}\n", spec.help));
+        let _ = writeln!(text, "  {synopsis:<24} {}", spec.help);
     }
-    text.push_str(&format!(
+    let _ = write!(
+        text,
         "\nexit status: 0 success, 1 scene or file error, 2 usage error\n\
          example:\n  raytracer {} scene1_01.txt {} 200 200 {} output1_01.tga {} 9 10 depth1_01.tga\n",
         Flag::Input,
         Flag::Size,
         Flag::Output,
         Flag::Depth
-    ));
+    );
     text
 }
 

@@ -104,9 +104,10 @@ impl RawArgs {
             return Ok(Command::Help);
         }
         let input = self.value(Flag::Input, 0).map(PathBuf::from);
-        let size_px = match self.has(Flag::Size) {
-            true => Some(self.size()?),
-            false => None,
+        let size_px = if self.has(Flag::Size) {
+            Some(self.size()?)
+        } else {
+            None
         };
         let colour_output = self.output_path(Flag::Output, 0)?;
         let depth_output = self.depth_output(Flag::Depth)?;
@@ -123,23 +124,21 @@ impl RawArgs {
                 return Err(UsageError::SameOutput(path.display().to_string()));
             }
         }
-        let depth_colour_map = match self.has(Flag::DepthColourMap) {
-            true => {
-                let text = self.text(Flag::DepthColourMap, 0)?;
-                DepthColourMap::from_name(text)
-                    .ok_or_else(|| UsageError::BadColourMap(text.to_owned()))?
-            }
-            false => DepthColourMap::Grey,
+        let depth_colour_map = if self.has(Flag::DepthColourMap) {
+            let text = self.text(Flag::DepthColourMap, 0)?;
+            DepthColourMap::from_name(text)
+                .ok_or_else(|| UsageError::BadColourMap(text.to_owned()))?
+        } else {
+            DepthColourMap::Grey
         };
-        let precision = match self.has(Flag::Precision) {
-            true => {
-                let text = self.text(Flag::Precision, 0)?;
-                Some(
-                    text.parse::<Precision>()
-                        .map_err(|_| UsageError::BadPrecision(text.to_owned()))?,
-                )
-            }
-            false => None,
+        let precision = if self.has(Flag::Precision) {
+            let text = self.text(Flag::Precision, 0)?;
+            Some(
+                text.parse::<Precision>()
+                    .map_err(|_| UsageError::BadPrecision(text.to_owned()))?,
+            )
+        } else {
+            None
         };
         if outputs.is_empty() {
             return Ok(Command::View(ViewerRequest {

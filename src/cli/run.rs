@@ -1,5 +1,6 @@
 //! Headless rendering for the command line: read the scene, render, write the requested images.
 
+use std::fmt::Write as _;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
@@ -9,7 +10,7 @@ use crate::output::WriteError;
 use crate::output::depth_file::check_writable_raw;
 use crate::output::depth_file::{write_depth_png16, write_raw_depth};
 use crate::output::image_file::{check_writable, write_image};
-use crate::render::depth_map::DepthRange;
+use crate::render::depth_map::{DepthColourMap, DepthRange};
 use crate::render::{View, ViewError, render_with_progress};
 use crate::scene::{LoadError, Scene, load_scene_with_progress};
 
@@ -67,8 +68,10 @@ impl RunReport {
             ("precision", self.precision.to_string()),
         ]
         .iter()
-        .map(|(name, value)| format!("{name}: {value}\n"))
-        .collect()
+        .fold(String::new(), |mut text, (name, value)| {
+            let _ = writeln!(text, "{name}: {value}");
+            text
+        })
     }
 }
 
@@ -128,7 +131,7 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
         request.depth_output.as_ref().map(|depth| {
             (
                 depth.path.as_path(),
-                frame.depth_image_mapped(depth.range, map, map.file_no_hit()),
+                frame.depth_image_mapped(depth.range, map, DepthColourMap::FILE_NO_HIT),
             )
         }),
     ];

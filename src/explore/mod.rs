@@ -7,7 +7,7 @@
 
 pub mod depth_stats;
 pub mod navigate;
-pub(crate) mod probe;
+pub mod probe;
 pub(crate) mod ranges;
 
 pub use ranges::{SliderRanges, initial_depth_range, scene_extent, visible_depth_range};

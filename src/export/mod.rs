@@ -39,7 +39,7 @@ pub(crate) struct ExportPaths {
 
 impl ExportPaths {
     /// Paths for base `path`; `format` applies when the path's extension names no format.
-    pub fn new(path: &Path, format: ImageFormat) -> Self {
+    pub(crate) fn new(path: &Path, format: ImageFormat) -> Self {
         let format = ImageFormat::from_path(path).unwrap_or(format);
         let extension = match format {
             ImageFormat::Tga => "tga",
@@ -174,7 +174,7 @@ pub(crate) fn write_export(
     write_image(&files.images.colour, &frame.colour_image())?;
     write_image(
         &files.images.depth,
-        &frame.depth_image_mapped(range, map, map.file_no_hit()),
+        &frame.depth_image_mapped(range, map, DepthColourMap::FILE_NO_HIT),
     )?;
     let mut written = vec![files.images.colour.clone(), files.images.depth.clone()];
     if plan.side_by_side {
@@ -350,7 +350,8 @@ mod tests {
                 .enumerate()
                 .map(|(i, a)| {
                     let is_input = i > 0 && arguments[i - 1] == "-input";
-                    if a.ends_with(".tga") || a.ends_with(".png") || a.ends_with(".pfm") {
+                    let extension = Path::new(a).extension().and_then(|e| e.to_str());
+                    if matches!(extension, Some("tga" | "png" | "pfm")) {
                         again.path().join(a).display().to_string()
                     } else if is_input {
                         folder.path().join(a).display().to_string()

@@ -113,11 +113,9 @@ impl DepthColourMap {
         }
     }
 
-    /// What a no-hit pixel looks like in a written file: black (the course's choice for grey;
-    /// in the colour maps black is no value of the map).
-    pub(crate) const fn file_no_hit(self) -> [u8; 3] {
-        [0, 0, 0]
-    }
+    /// What a no-hit pixel looks like in a written file, whatever the map: black (the course's
+    /// choice for grey; in the colour maps black is no value of the map).
+    pub(crate) const FILE_NO_HIT: [u8; 3] = [0, 0, 0];
 }
 
 impl std::fmt::Display for DepthColourMap {
@@ -241,7 +239,10 @@ mod tests {
                     "{map}"
                 );
             }
-            assert_eq!(map.rgb(&range, f64::INFINITY, map.file_no_hit()), [0, 0, 0]);
+            assert_eq!(
+                map.rgb(&range, f64::INFINITY, DepthColourMap::FILE_NO_HIT),
+                [0, 0, 0]
+            );
             assert_eq!(map.rgb_of_grey(f64::NAN), map.rgb_of_grey(0.0));
         }
         // Turbo's far end is blue, its near end red; viridis's near end is yellow.

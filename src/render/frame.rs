@@ -106,7 +106,7 @@ impl Frame {
     /// the depth through a colour map (no hit black).
     pub(crate) fn side_by_side_mapped(&self, range: DepthRange, map: DepthColourMap) -> RgbImage {
         let colour = self.colour_image();
-        let depth = self.depth_image_mapped(range, map, map.file_no_hit());
+        let depth = self.depth_image_mapped(range, map, DepthColourMap::FILE_NO_HIT);
         RgbImage::from_fn(self.width_px * 2, self.height_px, |x, y| {
             if x < self.width_px {
                 *colour.get_pixel(x, y)

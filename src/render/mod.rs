@@ -71,9 +71,9 @@ pub(crate) fn render_with_progress(
         Precision::Auto => precision::f32_is_safe(&discs, &grid, view.depth_range),
     };
     let mut frame = if use_f32 {
-        disc::rasterise_frame::<f32>(scene, view, &grid, &discs)?
+        disc::rasterise_frame::<f32>(scene, view, &grid, &discs)
     } else {
-        disc::rasterise_frame::<f64>(scene, view, &grid, &discs)?
+        disc::rasterise_frame::<f64>(scene, view, &grid, &discs)
     };
     if let Some(sampling) = &quality.sampling {
         let supersampled =

@@ -64,7 +64,7 @@ impl<J, T> std::fmt::Debug for RenderWorker<J, T> {
 impl<J: Clone + Send + 'static, T: Send + 'static> RenderWorker<J, T> {
     /// Starts the worker thread: it runs `run_job` on each job it takes, and `on_finished` after
     /// each result is stored.
-    pub fn new(
+    pub(crate) fn new(
         run_job: impl Fn(&J) -> T + Send + 'static,
         on_finished: impl Fn() + Send + 'static,
     ) -> std::io::Result<Self> {

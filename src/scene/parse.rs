@@ -373,8 +373,8 @@ impl<'a> Parser<'a> {
     }
 
     fn material(&mut self) -> Result<Material, ParseError> {
-        self.expect("{")?;
         const EXPECTED: &str = "'diffuseColor' or '}'";
+        self.expect("{")?;
         let token = self.next(EXPECTED)?;
         match token.text {
             "}" => Ok(Material::default()),

@@ -3,6 +3,8 @@
 
 use glam::{DVec3, Vec3};
 
+use std::fmt::Write as _;
+
 use super::*;
 use crate::scene::parse::SPHERES_PER_REPORT;
 
@@ -328,7 +330,7 @@ fn deep_nesting_is_capped() {
     let mut text = String::from(CAMERA);
     for level in 0..MAX_GROUP_DEPTH {
         let count = usize::from(level + 1 < MAX_GROUP_DEPTH);
-        text.push_str(&format!("Group {{ numObjects {count} "));
+        let _ = write!(text, "Group {{ numObjects {count} ");
     }
     text.push_str(&"} ".repeat(MAX_GROUP_DEPTH));
     assert!(parse(&text).spheres.is_empty());
@@ -382,7 +384,7 @@ fn many_spheres(count: usize, one_line: bool) -> String {
     let separator = if one_line { " " } else { "\n" };
     let mut text = format!("{CAMERA}Group {{ numObjects {count}{separator}");
     for i in 0..count {
-        text.push_str(&format!("Sphere {{ center {i} 0 0 radius 1 }}{separator}"));
+        let _ = write!(text, "Sphere {{ center {i} 0 0 radius 1 }}{separator}");
     }
     text
 }

@@ -11,7 +11,7 @@ use raytracer::app::ViewerApp;
 use raytracer::cli::ViewerRequest;
 
 /// A scene shipped in `scenes/`.
-pub fn scene_path(name: &str) -> PathBuf {
+pub(crate) fn scene_path(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("scenes")
         .join(name)
@@ -19,7 +19,7 @@ pub fn scene_path(name: &str) -> PathBuf {
 
 /// The viewer in a 1000×700-point window on `input` (the embedded default scene for `None`),
 /// settled.
-pub fn viewer(input: Option<PathBuf>) -> Harness<'static, ViewerApp> {
+pub(crate) fn viewer(input: Option<PathBuf>) -> Harness<'static, ViewerApp> {
     let mut harness = Harness::builder()
         .with_size(egui::vec2(1000.0, 700.0))
         .build_eframe(move |cc| {
@@ -37,11 +37,11 @@ pub fn viewer(input: Option<PathBuf>) -> Harness<'static, ViewerApp> {
 
 /// Steps the UI until the frame on screen is the current view (no scene loading), nothing is
 /// being written and no smooth scroll is still running.
-pub fn settle(harness: &mut Harness<'static, ViewerApp>) {
+pub(crate) fn settle(harness: &mut Harness<'static, ViewerApp>) {
     let deadline = Instant::now() + Duration::from_secs(60);
     loop {
         harness.step();
-        let scrolling = harness.ctx.input(|i| i.is_scrolling());
+        let scrolling = harness.ctx.input(egui::InputState::is_scrolling);
         let app = harness.state();
         if app.frame_is_current() && !app.export_running() && !scrolling {
             return;
@@ -54,7 +54,7 @@ pub fn settle(harness: &mut Harness<'static, ViewerApp>) {
 
 /// Scrolls the widget labelled `label` into view, moves the pointer onto it (a press where the
 /// pointer has not been yet belongs to the widget under its last position), then clicks it.
-pub fn click(harness: &mut Harness<'static, ViewerApp>, label: &str) {
+pub(crate) fn click(harness: &mut Harness<'static, ViewerApp>, label: &str) {
     harness.get_by_label(label).scroll_to_me();
     // The accessibility tree describes the previous pass: step so it has the scrolled layout.
     harness.run_steps(2);

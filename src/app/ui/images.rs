@@ -123,8 +123,14 @@ fn pos_of_image_px(px: DVec2, rect: Rect, size_px: [u32; 2]) -> Pos2 {
 /// histogram under them. Returns the pointer gestures and the size the area asks for.
 pub(crate) fn images_ui(
     ui: &mut Ui,
-    shown: Option<ShownImages<'_>>,
-    footer: Footer<'_>,
+    shown: Option<&ShownImages<'_>>,
+    Footer {
+        probe_lines,
+        pinned,
+        depth_range,
+        colour_map,
+        no_hit_rgb,
+    }: Footer<'_>,
 ) -> ImageGestures {
     let pixels_per_point = ui.ctx().pixels_per_point();
     let available = ui.available_size();
@@ -134,16 +140,9 @@ pub(crate) fn images_ui(
         ..ImageGestures::default()
     };
     let half = half_points(available);
-    let Footer {
-        probe_lines,
-        pinned,
-        depth_range,
-        colour_map,
-        no_hit_rgb,
-    } = footer;
     ui.horizontal_top(|ui| {
         ui.spacing_mut().item_spacing.x = IMAGE_GAP_POINTS;
-        let captions = match &shown {
+        let captions = match shown {
             Some(images) => [
                 "colour".to_owned(),
                 format!(
@@ -163,7 +162,7 @@ pub(crate) fn images_ui(
                 response.widget_info(|| {
                     egui::WidgetInfo::labeled(egui::Role::Image, true, label.to_owned())
                 });
-                match &shown {
+                match shown {
                     None => {
                         ui.painter().rect_filled(area, 0.0, Color32::from_gray(30));
                     }
@@ -193,7 +192,7 @@ pub(crate) fn images_ui(
                 if index == 0 {
                     probe_ui(ui, probe_lines, pinned.is_some(), &mut gestures);
                 } else {
-                    let histogram = shown.as_ref().and_then(|s| s.histogram);
+                    let histogram = shown.and_then(|s| s.histogram);
                     gestures.depth_range_dragged =
                         histogram_ui(ui, histogram, depth_range, colour_map, no_hit_rgb);
                 }

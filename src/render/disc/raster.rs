@@ -13,7 +13,7 @@ use super::bins::{BAND_ROWS, bin_discs, column_span};
 use super::real::Real;
 use super::shade::frame_from_hits;
 use crate::geometry::camera::PixelGrid;
-use crate::render::{Frame, NO_HIT, View, ViewError};
+use crate::render::{Frame, NO_HIT, View};
 use crate::scene::Scene;
 
 /// A disc in the per-pixel type.
@@ -149,7 +149,7 @@ fn rasterise_band<R: Real>(
     list: impl Iterator<Item = u32>,
     grid: &PixelGrid,
     first_row: usize,
-    out: BandOut<'_, R>,
+    BandOut { t, sphere, t_error }: BandOut<'_, R>,
 ) -> u64 {
     let width = grid.width_px as usize;
     let height = grid.height_px as usize;
@@ -157,11 +157,12 @@ fn rasterise_band<R: Real>(
     let band_discs = gather_band_discs(discs, list, grid);
     let refine = R::ROUNDOFF > 0.0;
     let mut disc_tests = 0u64;
-    let rows = out.t.chunks_mut(width).zip(out.sphere.chunks_mut(width));
+    let rows = t.chunks_mut(width).zip(sphere.chunks_mut(width));
     for (row_in_band, (t, sphere)) in rows.enumerate() {
-        let t_error: &mut [R] = match refine {
-            true => &mut out.t_error[row_in_band * width..(row_in_band + 1) * width],
-            false => &mut [],
+        let t_error: &mut [R] = if refine {
+            &mut t_error[row_in_band * width..(row_in_band + 1) * width]
+        } else {
+            &mut []
         };
         let mut row = RowOut { t, sphere, t_error };
         let y_up = (height - 1 - (first_row + row_in_band)) as f64;
@@ -188,8 +189,8 @@ fn cover_chord_exact<R: Real>(disc: &Disc, columns: Columns<R>, chord: Chord, ro
     let disc_in = DiscIn::<R>::of(disc);
     let dv = R::from_f64(chord.v) - disc_in.v;
     let dv_sq = dv * dv;
-    let t_span = &mut row.t[chord.first..chord.last + 1];
-    let sphere_span = &mut row.sphere[chord.first..chord.last + 1];
+    let t_span = &mut row.t[chord.first..=chord.last];
+    let sphere_span = &mut row.sphere[chord.first..=chord.last];
     for ((x, t_px), sphere_px) in (chord.first..).zip(t_span).zip(sphere_span) {
         let PixelHit { distance_sq, t, .. } = pixel_hit(&disc_in, columns.u(x), dv_sq);
         let closer = distance_sq <= disc_in.radius_sq && t < *t_px;
@@ -241,7 +242,7 @@ fn cover_chord_refined<R: Real>(
     let dv = R::from_f64(chord.v) - disc_in.v;
     let dv_sq = dv * dv;
     let bounds = ErrorBounds::<R>::of(disc, grid, chord);
-    for x in chord.first..chord.last + 1 {
+    for x in chord.first..=chord.last {
         let PixelHit { rest, root, t, .. } = pixel_hit(&disc_in, columns.u(x), dv_sq);
         let t_error = bounds.t_flat + bounds.t_steep.div(root);
         let uncertain_coverage = rest.abs() <= bounds.coverage;
@@ -291,7 +292,7 @@ pub(crate) fn rasterise_frame<R: Real>(
     view: &View,
     grid: &PixelGrid,
     discs: &[Disc],
-) -> Result<Frame, ViewError> {
+) -> Frame {
     let grid = *grid;
     let bands = bin_discs(discs, &grid);
     let width = view.width_px as usize;
@@ -312,35 +313,31 @@ pub(crate) fn rasterise_frame<R: Real>(
         .map(|(band, (t_band, sphere_band))| {
             let list = bands.band(band);
             let first_row = band * BAND_ROWS;
-            match R::as_self_slice(t_band) {
-                // f64: written in place.
-                Some(t_in_place) => {
-                    let out = BandOut {
-                        t: t_in_place,
-                        sphere: sphere_band,
-                        t_error: &mut [],
-                    };
-                    rasterise_band(discs, list, &grid, first_row, out)
-                }
-                // f32: a scratch band, widened into the frame's f64 t.
-                None => {
-                    let mut scratch = vec![R::INFINITY; t_band.len()];
-                    let mut t_error = vec![R::ZERO; t_band.len()];
-                    let out = BandOut {
-                        t: &mut scratch,
-                        sphere: sphere_band,
-                        t_error: &mut t_error,
-                    };
-                    let tests = rasterise_band(discs, list, &grid, first_row, out);
-                    for (out, value) in t_band.iter_mut().zip(&scratch) {
-                        *out = value.to_f64();
-                    }
-                    tests
-                }
+            // f64: written in place.
+            if let Some(t_in_place) = R::as_self_slice(t_band) {
+                let out = BandOut {
+                    t: t_in_place,
+                    sphere: sphere_band,
+                    t_error: &mut [],
+                };
+                return rasterise_band(discs, list, &grid, first_row, out);
             }
+            // f32: a scratch band, widened into the frame's f64 t.
+            let mut scratch = vec![R::INFINITY; t_band.len()];
+            let mut t_error = vec![R::ZERO; t_band.len()];
+            let out = BandOut {
+                t: &mut scratch,
+                sphere: sphere_band,
+                t_error: &mut t_error,
+            };
+            let tests = rasterise_band(discs, list, &grid, first_row, out);
+            for (out, value) in t_band.iter_mut().zip(&scratch) {
+                *out = value.to_f64();
+            }
+            tests
         })
         .sum::<u64>();
     let mut frame = frame_from_hits(scene, view, t, sphere, R::PRECISION);
     frame.disc_tests = disc_tests;
-    Ok(frame)
+    frame
 }
