@@ -1,6 +1,6 @@
 //! `raytracer`: the course-compatible command line. With `-output`/`-depth` it renders without a
 //! window; otherwise it opens the viewer (feature `gui`). Exit status: 0 success, 1 scene or file
-//! error, 2 usage error.
+//! error, 2 usage error, 128 + n when stopped by signal n.
 
 #![deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
@@ -10,46 +10,79 @@ use std::process::ExitCode;
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
+use raytracer::cli::process::{
+    OnSignal, PrintError, handle_termination_signals, print_err, print_out, start_thread_pool,
+};
 use raytracer::cli::{Command, parse_command, usage};
 
 fn main() -> ExitCode {
     let command = match parse_command(std::env::args_os().skip(1)) {
         Ok(command) => command,
         Err(error) => {
-            eprintln!("raytracer: {error}");
+            print_err(&format!("raytracer: {error}\n"));
             if error.wants_usage() {
-                eprint!("\n{}", usage());
+                print_err(&format!("\n{}", usage()));
             }
             return ExitCode::from(2);
         }
     };
+    if let Err(error) = start_thread_pool() {
+        print_err(&format!(
+            "raytracer: cannot start the rendering threads: {error}\n"
+        ));
+        return ExitCode::from(1);
+    }
     match command {
-        Command::Help => {
-            print!("{}", usage());
-            ExitCode::SUCCESS
-        }
-        Command::Render(request) => match raytracer::cli::run::run(&request) {
-            Ok(report) => {
-                if request.stats {
-                    print!("{}", report.stats_lines());
+        Command::Help => print_or_fail(&usage(), ExitCode::SUCCESS),
+        Command::Render(request) => {
+            handle_termination_signals(OnSignal::Exit);
+            match raytracer::cli::run::run(&request) {
+                Ok(report) if request.stats => {
+                    print_or_fail(&report.stats_lines(), ExitCode::SUCCESS)
                 }
-                ExitCode::SUCCESS
+                Ok(_) => ExitCode::SUCCESS,
+                Err(error) => {
+                    print_err(&format!("raytracer: {error}\n"));
+                    ExitCode::from(error.exit_status())
+                }
             }
-            Err(error) => {
-                eprintln!("raytracer: {error}");
-                ExitCode::from(1)
-            }
-        },
+        }
         Command::View(request) => open_viewer(request),
+    }
+}
+
+/// Prints `text` to standard output and ends with `status`: quietly if the reader has gone (a
+/// closed pipe), with a one-line error (status 1) if the output cannot be written.
+fn print_or_fail(text: &str, status: ExitCode) -> ExitCode {
+    match print_out(text) {
+        Ok(()) | Err(PrintError::Closed) => status,
+        Err(PrintError::Failed(error)) => {
+            print_err(&format!(
+                "raytracer: cannot write to standard output: {error}\n"
+            ));
+            ExitCode::from(1)
+        }
     }
 }
 
 #[cfg(feature = "gui")]
 fn open_viewer(request: raytracer::cli::ViewerRequest) -> ExitCode {
-    match raytracer::app::run(request) {
+    if let Some(reason) = raytracer::app::no_display_reason() {
+        print_err(&format!("raytracer: {reason}\n"));
+        return ExitCode::from(1);
+    }
+    handle_termination_signals(OnSignal::CloseViewer);
+    let outcome = raytracer::app::run(request);
+    raytracer::output::atomic::remove_temporary_files();
+    if let Some(signal) = raytracer::cli::process::stop_requested() {
+        return ExitCode::from(raytracer::cli::process::exit_status_of(signal));
+    }
+    match outcome {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
-            eprintln!("raytracer: cannot open the viewer window: {error}");
+            print_err(&format!(
+                "raytracer: cannot open the viewer window: {error}\n"
+            ));
             ExitCode::from(1)
         }
     }
@@ -57,9 +90,9 @@ fn open_viewer(request: raytracer::cli::ViewerRequest) -> ExitCode {
 
 #[cfg(not(feature = "gui"))]
 fn open_viewer(_request: raytracer::cli::ViewerRequest) -> ExitCode {
-    eprintln!(
+    print_err(
         "raytracer: this build has no viewer (built without feature 'gui'); \
-         give -output FILE and/or -depth DMIN DMAX FILE to render without a window"
+         give -output FILE and/or -depth DMIN DMAX FILE to render without a window\n",
     );
     ExitCode::from(2)
 }

@@ -2,7 +2,7 @@
 //! report them; [`ViewerApp::apply`] carries them out), and the background writes (exports, the
 //! view saved as a scene) and file dialogs they start.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use super::ViewerApp;
@@ -50,8 +50,7 @@ impl ViewerApp {
             Action::FrameAll => self.frame_all(),
             Action::ResetView => self.reset_view(),
             Action::AutoRange => self.auto_range(),
-            Action::ExportTo(path) => self.export_to(path),
-            Action::SaveViewTo(path) => self.save_view_to(path),
+            Action::ExportTo(_) | Action::SaveViewTo(_) => self.write_or_ask(action),
             Action::Unpin => self.probe.pinned_px = None,
         }
     }
@@ -81,10 +80,19 @@ impl ViewerApp {
         };
     }
 
-    /// Exports the current view to `base_path` (see [`crate::export::ExportPaths`]) on a
-    /// background thread; the outcome appears in the status bar.
-    pub(crate) fn export_to(&mut self, base_path: PathBuf) {
-        let export = self.settings.export.clone();
+    /// Carries out a write action (the user has agreed to replace what it replaces).
+    pub(super) fn write_now(&mut self, action: Action) {
+        match action {
+            Action::ExportTo(path) => self.export_to(path),
+            Action::SaveViewTo(path) => self.save_view_to(path),
+            other => self.apply(other),
+        }
+    }
+
+    /// What an export to `base_path` writes and the view it renders; `None` when the export
+    /// size is unusable.
+    pub(super) fn export_plan(&self, base_path: PathBuf) -> Option<(ExportPlan, View)> {
+        let export = &self.settings.export;
         let format = match export.format {
             ExportFormat::Png => ImageFormat::Png,
             ExportFormat::Tga => ImageFormat::Tga,
@@ -93,10 +101,7 @@ impl ViewerApp {
         if !export.displayed_size {
             view.width_px = export.size_px[0];
             view.height_px = export.size_px[1];
-            if let Err(error) = check_image_size(view.width_px, view.height_px) {
-                self.status = Some(Status::error(format!("export: {error}")));
-                return;
-            }
+            check_image_size(view.width_px, view.height_px).ok()?;
         }
         let plan = ExportPlan {
             base_path,
@@ -104,6 +109,37 @@ impl ViewerApp {
             side_by_side: export.side_by_side,
             colour_map: self.settings.depth.colour_map,
             extra_depth: export.extra_depth,
+        };
+        Some((plan, view))
+    }
+
+    /// Why an export to `base_path` cannot start, if it cannot.
+    fn export_problem(&self, base_path: &Path) -> Option<String> {
+        let export = &self.settings.export;
+        if !export.displayed_size
+            && let Err(error) = check_image_size(export.size_px[0], export.size_px[1])
+        {
+            return Some(format!("export: {error}"));
+        }
+        let names_a_folder = base_path.as_os_str().to_string_lossy().ends_with('/');
+        if names_a_folder && !base_path.is_dir() {
+            return Some(format!(
+                "export: the folder {} does not exist",
+                base_path.display()
+            ));
+        }
+        None
+    }
+
+    /// Exports the current view to `base_path` (see [`crate::export::ExportPaths`]) on a
+    /// background thread; the outcome appears in the status bar.
+    fn export_to(&mut self, base_path: PathBuf) {
+        if let Some(problem) = self.export_problem(&base_path) {
+            self.status = Some(Status::error(problem));
+            return;
+        }
+        let Some((plan, view)) = self.export_plan(base_path) else {
+            return;
         };
         let quality = self.settings.quality;
         // Reuse the frame on screen when it is exactly what would be exported.
@@ -133,7 +169,7 @@ impl ViewerApp {
 
     /// "Save view as scene": writes the scene with the current camera to `path` (in the
     /// background; the outcome appears in the status bar).
-    pub(crate) fn save_view_to(&mut self, path: PathBuf) {
+    fn save_view_to(&mut self, path: PathBuf) {
         let scene = Arc::clone(&self.loaded.scene);
         let view = self.view;
         self.write_in_background("saving the view…", move || {
@@ -196,11 +232,11 @@ impl ViewerApp {
                         DialogKind::Open => self.open(&path),
                         DialogKind::Export => {
                             self.settings.export.path = path.display().to_string();
-                            self.export_to(path);
+                            self.write_or_ask(Action::ExportTo(path));
                         }
                         DialogKind::SaveScene => {
                             self.settings.export.scene_path = path.display().to_string();
-                            self.save_view_to(path);
+                            self.write_or_ask(Action::SaveViewTo(path));
                         }
                     }
                 }

@@ -8,14 +8,17 @@
 //! * [`frames`]: asking the worker for frames (progressive refinement) and taking them in
 //! * [`scene_loading`]: opening and reloading scene files in the background
 //! * [`actions`]: what the user can ask for ([`actions::Action`]), exports, dialogs
+//! * [`confirm`]: asking before a write replaces files
 //! * [`input`]: shortcuts, dropped files, keyboard and pointer navigation
 //! * [`tasks`]: the one background-task type (loads, writes, dialogs)
 //! * [`status`]: the typed status-bar message
 //! * [`dialogs`]: native file dialogs; [`reload`]: watching the open file
 //! * [`inspect`]: read access for tests and tools
+//! * [`window`]: opening the window (or saying why none can be opened)
 //! * [`ui`]: the drawing, one `*_ui` function per part
 
 pub(crate) mod actions;
+pub(crate) mod confirm;
 pub(crate) mod dialogs;
 pub(crate) mod frames;
 pub(crate) mod input;
@@ -27,6 +30,7 @@ pub mod state;
 pub(crate) mod status;
 pub(crate) mod tasks;
 pub mod ui;
+pub(crate) mod window;
 
 use std::path::PathBuf;
 use std::time::Duration;
@@ -48,26 +52,10 @@ use crate::cli::ViewerRequest;
 use crate::render::View;
 
 pub use self::input::{KEY_ORBIT_RAD, KEY_PAN_FRACTION, KEY_ZOOM_FACTOR};
+pub use self::window::{no_display_reason, run};
 
 /// Image size used until the first layout tells the real one.
 const INITIAL_SIZE_PX: (u32, u32) = (512, 512);
-
-/// Opens the viewer window and runs it until closed.
-pub fn run(request: ViewerRequest) -> eframe::Result {
-    let options = eframe::NativeOptions {
-        viewport: egui::ViewportBuilder::default()
-            .with_title("raytracer")
-            .with_inner_size([1280.0, 720.0])
-            .with_min_inner_size([480.0, 320.0])
-            .with_drag_and_drop(true),
-        ..Default::default()
-    };
-    eframe::run_native(
-        "raytracer",
-        options,
-        Box::new(|cc| Ok(Box::new(ViewerApp::new(cc, request)))),
-    )
-}
 
 /// The pointer's and the pinned probe's positions (image pixels, y up).
 #[derive(Debug, Clone, Copy, Default)]
@@ -98,6 +86,8 @@ pub struct ViewerApp {
     watcher: Option<reload::FileWatcher>,
     loading: Option<PendingLoad>,
     probe: ProbePoints,
+    /// A write that waits for the user to agree to replace files.
+    pending_replace: Option<confirm::PendingReplace>,
     ctx: egui::Context,
 }
 
@@ -143,8 +133,11 @@ impl ViewerApp {
             watcher: None,
             loading: None,
             probe: ProbePoints::default(),
+            pending_replace: None,
             ctx: cc.egui_ctx.clone(),
         };
+        let ctx = cc.egui_ctx.clone();
+        crate::cli::process::set_wake(move || ctx.request_repaint());
         let startup_scene = request.input.or_else(|| app.settings.last_scene.clone());
         if let Some(path) = startup_scene {
             app.open(&path);
@@ -247,6 +240,10 @@ impl ViewerApp {
 impl eframe::App for ViewerApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
+        if crate::cli::process::stop_requested().is_some() {
+            // A termination signal: close (eframe saves the settings on the way out).
+            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+        }
         self.receive_frame();
         self.poll_load();
         self.poll_background();
@@ -274,6 +271,7 @@ impl eframe::App for ViewerApp {
                 .show(ui, |ui| actions.extend(self.side_panel_ui(ui)));
         }
         egui::CentralPanel::default().show(ui, |ui| self.images_ui(ui));
+        self.confirm_ui(&ctx);
         for action in actions {
             self.apply(action);
         }

@@ -58,6 +58,24 @@ pub enum UsageError {
     /// Two outputs name the same file.
     #[error("two outputs name the same file '{0}'")]
     SameOutput(String),
+    /// An output is the scene file or another output, by another spelling or a link.
+    #[error(
+        "{second} '{second_path}' is the same file as {first} '{first_path}': refusing to \
+         write over it"
+    )]
+    SameFile {
+        /// The flag seen first (`-input` for the scene file).
+        first: Flag,
+        /// Its path as given.
+        first_path: String,
+        /// The output that names the same file.
+        second: Flag,
+        /// Its path as given.
+        second_path: String,
+    },
+    /// A path given as the empty string.
+    #[error("{0}: the path is empty")]
+    EmptyPath(Flag),
     /// A depth colour map that does not exist.
     #[error("{flag}: expected grey, turbo or viridis, found '{0}'", flag = Flag::DepthColourMap)]
     BadColourMap(String),

@@ -9,10 +9,12 @@
 
 mod error;
 mod flags;
+pub mod process;
 pub(crate) mod progress;
 mod raw_args;
 mod request;
 pub mod run;
+mod system;
 #[cfg(test)]
 mod tests;
 

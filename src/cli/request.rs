@@ -104,6 +104,12 @@ impl RawArgs {
             return Ok(Command::Help);
         }
         let input = self.value(Flag::Input, 0).map(PathBuf::from);
+        if input
+            .as_ref()
+            .is_some_and(|path| path.as_os_str().is_empty())
+        {
+            return Err(UsageError::EmptyPath(Flag::Input));
+        }
         let size_px = if self.has(Flag::Size) {
             Some(self.size()?)
         } else {

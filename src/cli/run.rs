@@ -1,31 +1,68 @@
-//! Headless rendering for the command line: read the scene, render, write the requested images.
+//! Headless rendering for the command line: check the request against the file system (no
+//! output may be the input or another output under a different name, every output writable),
+//! read the scene, check the render fits in memory, render, and write every output all or
+//! nothing.
 
 use std::fmt::Write as _;
-use std::path::Path;
+use std::os::unix::fs::MetadataExt as _;
+use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
+use super::error::UsageError;
+use super::flags::Flag;
+use super::progress::StepProgress;
+use super::system::{available_memory_bytes, peak_memory_bytes};
 use crate::cli::RenderRequest;
-use crate::cli::progress::StepProgress;
 use crate::output::WriteError;
-use crate::output::depth_file::check_writable_raw;
-use crate::output::depth_file::{write_depth_png16, write_raw_depth};
-use crate::output::image_file::{check_writable, write_image};
+use crate::output::atomic::{FileSet, folder_of};
+use crate::output::depth_file::{check_writable_raw, stage_depth_png16, stage_raw_depth};
+use crate::output::image_file::{check_writable, stage_image};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
-use crate::render::{View, ViewError, render_with_progress};
+use crate::render::memory::render_bound_bytes;
+use crate::render::{Frame, View, ViewError, render_with_progress};
 use crate::scene::{LoadError, Scene, load_scene_with_progress};
 
-/// Why a headless render failed (the program exits with status 1).
+/// Why a headless render failed: a usage error (exit status 2) or a scene, view, memory or file
+/// error (exit status 1).
 #[derive(Debug, thiserror::Error)]
 pub enum RunError {
+    /// The request names files that cannot go together (exit status 2).
+    #[error(transparent)]
+    Usage(#[from] UsageError),
     /// The scene could not be read.
     #[error(transparent)]
     Load(#[from] LoadError),
     /// The view cannot be rendered.
     #[error(transparent)]
     View(#[from] ViewError),
+    /// The render needs more memory than the program may use.
+    #[error(
+        "{width_px}×{height_px} needs about {needed_mb:.0} MB of memory, and {available_mb:.0} MB \
+         is available: choose a smaller -size or fewer samples"
+    )]
+    Memory {
+        /// Image width.
+        width_px: u32,
+        /// Image height.
+        height_px: u32,
+        /// The render's bound, MB.
+        needed_mb: f64,
+        /// What the program may still use, MB.
+        available_mb: f64,
+    },
     /// An image could not be written.
     #[error(transparent)]
     Write(#[from] WriteError),
+}
+
+impl RunError {
+    /// The exit status the program ends with.
+    pub fn exit_status(&self) -> u8 {
+        match self {
+            Self::Usage(_) => 2,
+            _ => 1,
+        }
+    }
 }
 
 /// What a headless render did, with its timings.
@@ -49,12 +86,15 @@ pub struct RunReport {
     pub(crate) disc_tests: u64,
     /// The precision used.
     pub(crate) precision: crate::render::Precision,
+    /// The memory bound of this render, bytes ([`crate::render::memory`]).
+    pub(crate) memory_bound: u64,
 }
 
 impl RunReport {
     /// The `-stats` lines: one `name: value` per line.
     pub fn stats_lines(&self) -> String {
         let ms = |d: Duration| format!("{:.3}", d.as_secs_f64() * 1e3);
+        let mb = |bytes: u64| format!("{:.1}", bytes as f64 / 1e6);
         [
             ("parse_ms", ms(self.parse)),
             ("render_ms", ms(self.render)),
@@ -66,6 +106,11 @@ impl RunReport {
             ("threads", self.threads.to_string()),
             ("disc_tests", self.disc_tests.to_string()),
             ("precision", self.precision.to_string()),
+            ("memory_bound_mb", mb(self.memory_bound)),
+            (
+                "peak_memory_mb",
+                peak_memory_bytes().map_or_else(|| "unknown".into(), mb),
+            ),
         ]
         .iter()
         .fold(String::new(), |mut text, (name, value)| {
@@ -92,19 +137,116 @@ pub(crate) fn request_view(scene: &Scene, request: &RenderRequest) -> View {
     View::of_camera(&scene.camera, request.width_px, request.height_px, range)
 }
 
-/// Runs a headless render request. Every output is checked for writability first, so a run that
-/// cannot write all its files writes none.
-pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
-    let image_outputs = request
-        .colour_output
-        .iter()
-        .chain(request.depth_output.iter().map(|depth| &depth.path))
-        .chain(request.depth16_output.iter().map(|depth| &depth.path));
-    for path in image_outputs {
-        check_writable(path)?;
+/// Every output of a request with its flag, in the order they are written.
+fn outputs(request: &RenderRequest) -> Vec<(Flag, &Path)> {
+    let mut outputs = Vec::new();
+    if let Some(path) = &request.colour_output {
+        outputs.push((Flag::Output, path.as_path()));
+    }
+    if let Some(depth) = &request.depth_output {
+        outputs.push((Flag::Depth, depth.path.as_path()));
+    }
+    if let Some(depth) = &request.depth16_output {
+        outputs.push((Flag::Depth16, depth.path.as_path()));
     }
     if let Some(path) = &request.depth_raw_output {
-        check_writable_raw(path)?;
+        outputs.push((Flag::DepthRaw, path.as_path()));
+    }
+    outputs
+}
+
+/// What makes two paths the same file: device and inode when it exists, else the canonical
+/// folder and the name (so `out.tga`, `./out.tga` and `sub/../out.tga` are one file, and so are
+/// a file and its links).
+#[derive(Debug, PartialEq, Eq)]
+enum FileIdentity {
+    Existing { device: u64, inode: u64 },
+    New(PathBuf),
+}
+
+fn identity(path: &Path) -> Option<FileIdentity> {
+    if let Ok(metadata) = std::fs::metadata(path) {
+        return Some(FileIdentity::Existing {
+            device: metadata.dev(),
+            inode: metadata.ino(),
+        });
+    }
+    let folder = std::fs::canonicalize(folder_of(path)).ok()?;
+    Some(FileIdentity::New(folder.join(path.file_name()?)))
+}
+
+/// Refuses a request whose outputs include the scene file, or name one file twice, by any
+/// spelling or link.
+fn check_distinct_files(request: &RenderRequest) -> Result<(), UsageError> {
+    let mut seen: Vec<(Flag, &Path, FileIdentity)> = Vec::new();
+    if let Some(input) = identity(&request.input) {
+        seen.push((Flag::Input, &request.input, input));
+    }
+    for (flag, path) in outputs(request) {
+        let Some(id) = identity(path) else { continue };
+        if let Some((first, first_path, _)) = seen.iter().find(|(_, _, other)| *other == id) {
+            return Err(UsageError::SameFile {
+                first: *first,
+                first_path: first_path.display().to_string(),
+                second: flag,
+                second_path: path.display().to_string(),
+            });
+        }
+        seen.push((flag, path, id));
+    }
+    Ok(())
+}
+
+/// Refuses a render whose memory bound exceeds what the program may still use.
+fn check_memory(request: &RenderRequest, sphere_count: usize) -> Result<u64, RunError> {
+    let bound = render_bound_bytes(
+        request.width_px,
+        request.height_px,
+        sphere_count,
+        request.quality.sampling.as_ref(),
+        rayon::current_num_threads(),
+    );
+    match available_memory_bytes() {
+        Some(available) if bound > available => Err(RunError::Memory {
+            width_px: request.width_px,
+            height_px: request.height_px,
+            needed_mb: bound as f64 / 1e6,
+            available_mb: available as f64 / 1e6,
+        }),
+        _ => Ok(bound),
+    }
+}
+
+/// Makes each output of `request` from `frame` and stages it (one at a time, so only one
+/// output's pixels exist besides the frame), then commits them all.
+fn write_outputs(request: &RenderRequest, frame: &Frame) -> Result<(), WriteError> {
+    let mut files = FileSet::new();
+    if let Some(path) = &request.colour_output {
+        stage_image(&mut files, path, &frame.colour_image())?;
+    }
+    if let Some(depth) = &request.depth_output {
+        let map = request.depth_colour_map;
+        let image = frame.depth_image_mapped(depth.range, map, DepthColourMap::FILE_NO_HIT);
+        stage_image(&mut files, &depth.path, &image)?;
+    }
+    if let Some(depth) = &request.depth16_output {
+        stage_depth_png16(&mut files, frame, depth.range, &depth.path)?;
+    }
+    if let Some(path) = &request.depth_raw_output {
+        stage_raw_depth(&mut files, frame, path)?;
+    }
+    files.commit().map(drop)
+}
+
+/// Runs a headless render request. Nothing is written unless every output can be: the files are
+/// checked before rendering and written all or nothing after it.
+pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
+    check_distinct_files(request)?;
+    for (flag, path) in outputs(request) {
+        match flag {
+            Flag::DepthRaw => check_writable_raw(path)?,
+            _ => check_writable(path)?,
+        }
     }
     let started = Instant::now();
     let scene = {
@@ -112,6 +254,7 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
         load_scene_with_progress(&request.input, &|share| bar.report(share))?
     };
     let parse = started.elapsed();
+    let memory_bound = check_memory(request, scene.spheres.len())?;
 
     let started = Instant::now();
     let view = request_view(&scene, request);
@@ -122,28 +265,7 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
     let render = started.elapsed();
 
     let started = Instant::now();
-    let map = request.depth_colour_map;
-    let outputs: [Option<(&Path, _)>; 2] = [
-        request
-            .colour_output
-            .as_deref()
-            .map(|path| (path, frame.colour_image())),
-        request.depth_output.as_ref().map(|depth| {
-            (
-                depth.path.as_path(),
-                frame.depth_image_mapped(depth.range, map, DepthColourMap::FILE_NO_HIT),
-            )
-        }),
-    ];
-    for (path, image) in outputs.into_iter().flatten() {
-        write_image(path, &image)?;
-    }
-    if let Some(depth) = &request.depth16_output {
-        write_depth_png16(&frame, depth.range, &depth.path)?;
-    }
-    if let Some(path) = &request.depth_raw_output {
-        write_raw_depth(&frame, path)?;
-    }
+    write_outputs(request, &frame)?;
     Ok(RunReport {
         sphere_count: scene.spheres.len(),
         parse,
@@ -154,5 +276,6 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
         threads: rayon::current_num_threads(),
         disc_tests: frame.disc_tests,
         precision: frame.precision,
+        memory_bound,
     })
 }

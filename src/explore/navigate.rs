@@ -12,7 +12,7 @@ use glam::{DQuat, DVec2, DVec3};
 
 use crate::explore::scene_extent;
 use crate::render::View;
-use crate::scene::{MAX_MAGNITUDE, Scene};
+use crate::scene::{MAX_MAGNITUDE, MIN_VIEW_SIZE, Scene};
 
 /// Margin "frame all" leaves around the scene, as a fraction of the screen (5% on each side).
 pub(crate) const FRAME_ALL_MARGIN: f64 = 0.05;
@@ -36,7 +36,7 @@ pub(crate) fn pan(view: &View, drag_px: DVec2) -> View {
 
 /// Scales the screen size by `factor` (< 1 zooms in) keeping the world point under
 /// `anchor_px` (image pixels, y up) where it is on the image. The size stays in
-/// `(0, 1e150]`; a factor that would leave that range is cut to its edge.
+/// `[1e-150, 1e150]`; a factor that would leave that range is cut to its edge.
 pub(crate) fn zoom_at(view: &View, factor: f64, anchor_px: DVec2) -> View {
     let Ok(basis) = view.validate() else {
         return *view;
@@ -46,7 +46,7 @@ pub(crate) fn zoom_at(view: &View, factor: f64, anchor_px: DVec2) -> View {
     }
     let grid = view.grid();
     let (anchor_u, anchor_v) = grid.screen_of_pixel_point(anchor_px.x, anchor_px.y);
-    let size_world = (view.size_world * factor).clamp(f64::MIN_POSITIVE, MAX_MAGNITUDE);
+    let size_world = (view.size_world * factor).clamp(MIN_VIEW_SIZE, MAX_MAGNITUDE);
     let applied = size_world / view.size_world;
     // The anchor's screen offset scales with the size; move the centre to keep its world point.
     let shift = (1.0 - applied) * (anchor_u * basis.horizontal + anchor_v * basis.screen_up);
@@ -121,7 +121,7 @@ pub fn frame_all(scene: &Scene, view: &View) -> View {
     // A NaN (zero-sized image) becomes the smallest size, as `max` would make it.
     let size_world = match needed / (1.0 - 2.0 * FRAME_ALL_MARGIN) {
         size if size.is_nan() => f64::MIN_POSITIVE,
-        size => size.clamp(f64::MIN_POSITIVE, MAX_MAGNITUDE),
+        size => size.clamp(MIN_VIEW_SIZE, MAX_MAGNITUDE),
     };
     let center = view.center_world + middle.x * basis.horizontal + middle.y * basis.screen_up;
     View {

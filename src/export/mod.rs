@@ -17,8 +17,10 @@ mod command;
 
 use std::path::{Path, PathBuf};
 
-use crate::output::depth_file::{RawDepthFormat, write_depth_png16, write_raw_depth};
-use crate::output::{ImageFormat, WriteError, write_atomically, write_image};
+use crate::output::atomic::FileSet;
+use crate::output::depth_file::{RawDepthFormat, stage_depth_png16, stage_raw_depth};
+use crate::output::image_file::stage_image;
+use crate::output::{ImageFormat, WriteError, write_atomically};
 use crate::render::depth_map::DepthColourMap;
 use crate::render::{Frame, Quality, View};
 
@@ -37,9 +39,22 @@ pub(crate) struct ExportPaths {
     pub(crate) side_by_side: PathBuf,
 }
 
+/// The base name of an export into a folder (a path that is a folder or ends with `/`).
+pub const DEFAULT_EXPORT_NAME: &str = "raytracer";
+
 impl ExportPaths {
-    /// Paths for base `path`; `format` applies when the path's extension names no format.
+    /// Paths for base `path`; `format` applies when the path's extension names no format. A
+    /// folder (an existing one, or a path ending with `/`) means "into this folder" with the base
+    /// name [`DEFAULT_EXPORT_NAME`].
     pub(crate) fn new(path: &Path, format: ImageFormat) -> Self {
+        let names_a_folder = path.is_dir() || path.as_os_str().to_string_lossy().ends_with('/');
+        let into_folder;
+        let path = if names_a_folder {
+            into_folder = path.join(DEFAULT_EXPORT_NAME);
+            into_folder.as_path()
+        } else {
+            path
+        };
         let format = ImageFormat::from_path(path).unwrap_or(format);
         let extension = match format {
             ImageFormat::Tga => "tga",
@@ -106,6 +121,21 @@ pub(crate) struct ExportFiles {
 }
 
 impl ExportFiles {
+    /// The files `plan` writes, in the order they are written.
+    pub(crate) fn written_by(&self, plan: &ExportPlan) -> Vec<PathBuf> {
+        let mut paths = vec![self.images.colour.clone(), self.images.depth.clone()];
+        if plan.side_by_side {
+            paths.push(self.images.side_by_side.clone());
+        }
+        match (plan.extra_depth, &self.depth_raw) {
+            (ExtraDepth::Png16, _) => paths.push(self.depth16.clone()),
+            (ExtraDepth::Raw(_), Some(path)) => paths.push(path.clone()),
+            _ => {}
+        }
+        paths.extend([self.scene.clone(), self.command.clone()]);
+        paths
+    }
+
     /// The files `plan` writes.
     pub(crate) fn of(plan: &ExportPlan) -> Self {
         let images = ExportPaths::new(&plan.base_path, plan.format);
@@ -158,9 +188,9 @@ pub(crate) fn save_view_as_scene(
     )
 }
 
-/// Writes every file of `plan` for `frame`, rendered from `scene` through `view` at `quality`.
-/// Returns the paths written. Each file is written atomically; the first failure stops the export
-/// and is returned (files already written stay, each complete).
+/// Writes every file of `plan` for `frame`, rendered from `scene` through `view` at `quality`,
+/// all or nothing: every file is complete in a temporary file before any is renamed over its
+/// destination. Returns the paths written.
 pub(crate) fn write_export(
     scene: &Scene,
     view: &View,
@@ -171,53 +201,31 @@ pub(crate) fn write_export(
     let files = ExportFiles::of(plan);
     let range = view.depth_range;
     let map = plan.colour_map;
-    write_image(&files.images.colour, &frame.colour_image())?;
-    write_image(
-        &files.images.depth,
-        &frame.depth_image_mapped(range, map, DepthColourMap::FILE_NO_HIT),
-    )?;
-    let mut written = vec![files.images.colour.clone(), files.images.depth.clone()];
+    let mut set = FileSet::new();
+    stage_image(&mut set, &files.images.colour, &frame.colour_image())?;
+    let depth = frame.depth_image_mapped(range, map, DepthColourMap::FILE_NO_HIT);
+    stage_image(&mut set, &files.images.depth, &depth)?;
     if plan.side_by_side {
-        write_image(
-            &files.images.side_by_side,
-            &frame.side_by_side_mapped(range, map),
-        )?;
-        written.push(files.images.side_by_side.clone());
+        let both = frame.side_by_side_mapped(range, map);
+        stage_image(&mut set, &files.images.side_by_side, &both)?;
     }
     match (plan.extra_depth, &files.depth_raw) {
-        (ExtraDepth::Png16, _) => {
-            write_depth_png16(frame, range, &files.depth16)?;
-            written.push(files.depth16.clone());
-        }
-        (ExtraDepth::Raw(_), Some(path)) => {
-            write_raw_depth(frame, path)?;
-            written.push(path.clone());
-        }
+        (ExtraDepth::Png16, _) => stage_depth_png16(&mut set, frame, range, &files.depth16)?,
+        (ExtraDepth::Raw(_), Some(path)) => stage_raw_depth(&mut set, frame, path)?,
         _ => {}
     }
-    save_view_as_scene(scene, view, &files.scene)?;
-    written.push(files.scene.clone());
+    let scene_text = scene_to_text(&scene_with_view(scene, view));
+    set.stage_bytes(&files.scene, scene_text.as_bytes())?;
     let arguments = command_arguments(plan, &files, view, quality);
-    write_atomically(&files.command, command_script(&arguments).as_bytes())?;
-    set_executable(&files.command);
-    written.push(files.command.clone());
-    Ok(written)
-}
-
-/// Marks the command script executable where the platform has such a bit (best effort: the
-/// script also runs as `sh name_command.sh`).
-fn set_executable(path: &Path) {
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        if let Ok(metadata) = std::fs::metadata(path) {
-            let mut permissions = metadata.permissions();
-            permissions.set_mode(permissions.mode() | 0o111);
-            let _ = std::fs::set_permissions(path, permissions);
-        }
-    }
-    #[cfg(not(unix))]
-    let _ = path;
+    let script = command_script(&arguments);
+    set.stage_executable(&files.command, |out| {
+        out.write_all(script.as_bytes())
+            .map_err(|source| WriteError::Io {
+                path: files.command.clone(),
+                source,
+            })
+    })?;
+    set.commit()
 }
 
 #[cfg(test)]

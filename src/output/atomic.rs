@@ -1,9 +1,23 @@
-//! Atomic file writes: the bytes go to a temporary file in the destination's folder, which is then
-//! renamed over the destination, so a failure never leaves a half-written file and never damages
-//! the previous one. Also the check, made before any work, that a destination can be written.
+//! Writing files so that nothing a user has is lost:
+//!
+//! * **All or nothing**: a [`FileSet`] writes every file of a run to a temporary file beside its
+//!   destination first (synced to disk), and only when all of them are complete renames them over
+//!   their destinations. A failure on any file leaves every old file as it was.
+//! * **Modes**: a new file gets the mode the umask gives (0644 under the usual 022); a replaced
+//!   file keeps the mode it had.
+//! * **Nothing left behind**: a temporary file is removed when its write fails or is abandoned;
+//!   [`remove_temporary_files`] removes the ones still open when the program is stopped by a
+//!   signal (the binary calls it from its signal handler thread).
+//!
+//! Also the check, made before any work, that a destination can be written.
 
-use std::io::Write;
+use std::collections::BTreeSet;
+use std::fs::{File, OpenOptions};
+use std::io::{BufWriter, Write};
+use std::os::unix::fs::OpenOptionsExt as _;
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Mutex, PoisonError};
 
 /// Why a file could not be written.
 #[derive(Debug, thiserror::Error)]
@@ -34,6 +48,29 @@ pub enum WriteError {
     },
 }
 
+/// The temporary files being written now, for [`remove_temporary_files`].
+static OPEN_TEMPORARIES: Mutex<BTreeSet<PathBuf>> = Mutex::new(BTreeSet::new());
+
+/// Makes temporary names unique within the process.
+static TEMPORARY_COUNTER: AtomicU64 = AtomicU64::new(0);
+
+/// Prefix of every temporary file the program writes (hidden, and named for what it is).
+pub const TEMPORARY_PREFIX: &str = ".raytracer-";
+
+fn open_temporaries() -> std::sync::MutexGuard<'static, BTreeSet<PathBuf>> {
+    OPEN_TEMPORARIES
+        .lock()
+        .unwrap_or_else(PoisonError::into_inner)
+}
+
+/// Removes every temporary file still being written. For the signal handler: the program is
+/// about to exit without running destructors.
+pub fn remove_temporary_files() {
+    for path in open_temporaries().iter() {
+        let _ = std::fs::remove_file(path);
+    }
+}
+
 /// The folder a destination path writes into (`.` for a bare file name).
 pub(crate) fn folder_of(path: &Path) -> &Path {
     match path.parent() {
@@ -42,67 +79,239 @@ pub(crate) fn folder_of(path: &Path) -> &Path {
     }
 }
 
-/// `path` is not a folder and a temporary file can be created (and is removed) beside it.
-pub(crate) fn check_folder_writable(path: &Path) -> Result<(), WriteError> {
-    let io_error = |source| WriteError::Io {
-        path: path.to_path_buf(),
-        source,
-    };
-    if path.is_dir() {
-        return Err(io_error(std::io::Error::new(
-            std::io::ErrorKind::IsADirectory,
-            "is a folder",
-        )));
-    }
-    tempfile::Builder::new()
-        .prefix(".raytracer-check-")
-        .tempfile_in(folder_of(path))
-        .map(drop)
-        .map_err(io_error)
+/// A temporary file beside a destination: registered for signal cleanup before it exists,
+/// removed on drop unless it was renamed over the destination.
+struct Temporary {
+    path: PathBuf,
+    file: Option<File>,
 }
 
-/// Writes `bytes` to `path` through a temporary file in the same folder and a rename.
-pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
-    let io_error = |source| WriteError::Io {
+impl Temporary {
+    /// Creates a new temporary file in `folder` with `mode` (before the umask).
+    fn create(folder: &Path, mode: u32) -> std::io::Result<Self> {
+        loop {
+            let number = TEMPORARY_COUNTER.fetch_add(1, Ordering::Relaxed);
+            let nanos = std::time::SystemTime::now()
+                .duration_since(std::time::UNIX_EPOCH)
+                .map_or(0, |d| d.subsec_nanos());
+            let name = format!(
+                "{TEMPORARY_PREFIX}{}-{number}-{nanos:08x}.tmp",
+                std::process::id()
+            );
+            let path = folder.join(name);
+            open_temporaries().insert(path.clone());
+            let opened = OpenOptions::new()
+                .write(true)
+                .create_new(true)
+                .mode(mode)
+                .open(&path);
+            match opened {
+                Ok(file) => {
+                    return Ok(Self {
+                        path,
+                        file: Some(file),
+                    });
+                }
+                Err(error) => {
+                    open_temporaries().remove(&path);
+                    if error.kind() != std::io::ErrorKind::AlreadyExists {
+                        return Err(error);
+                    }
+                }
+            }
+        }
+    }
+}
+
+impl Drop for Temporary {
+    fn drop(&mut self) {
+        drop(self.file.take());
+        if open_temporaries().remove(&self.path) {
+            let _ = std::fs::remove_file(&self.path);
+        }
+    }
+}
+
+/// One staged file: its complete content in a temporary file, and where it goes.
+struct Staged {
+    temporary: Temporary,
+    destination: PathBuf,
+}
+
+/// Files written all or nothing: [`FileSet::stage`] each, then [`FileSet::commit`].
+#[derive(Default)]
+pub struct FileSet {
+    staged: Vec<Staged>,
+}
+
+impl FileSet {
+    /// An empty set.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Writes a file's content (through `write`) to a temporary file beside `destination` and
+    /// syncs it; nothing is replaced yet.
+    pub fn stage(
+        &mut self,
+        destination: &Path,
+        write: impl FnOnce(&mut dyn Write) -> Result<(), WriteError>,
+    ) -> Result<(), WriteError> {
+        self.stage_with_mode(destination, 0o666, write)
+    }
+
+    /// [`Self::stage`] for a script: executable where the umask lets files be read.
+    pub fn stage_executable(
+        &mut self,
+        destination: &Path,
+        write: impl FnOnce(&mut dyn Write) -> Result<(), WriteError>,
+    ) -> Result<(), WriteError> {
+        self.stage_with_mode(destination, 0o777, write)
+    }
+
+    /// [`Self::stage`] with these bytes.
+    pub fn stage_bytes(&mut self, destination: &Path, bytes: &[u8]) -> Result<(), WriteError> {
+        self.stage(destination, |out| {
+            out.write_all(bytes)
+                .map_err(|source| io_error(destination, source))
+        })
+    }
+
+    fn stage_with_mode(
+        &mut self,
+        destination: &Path,
+        mode: u32,
+        write: impl FnOnce(&mut dyn Write) -> Result<(), WriteError>,
+    ) -> Result<(), WriteError> {
+        let error = |source| io_error(destination, source);
+        if destination.is_dir() {
+            return Err(error(is_a_folder()));
+        }
+        let mut temporary = Temporary::create(folder_of(destination), mode).map_err(error)?;
+        let Some(file) = temporary.file.as_mut() else {
+            return Err(error(std::io::Error::other("the temporary file is closed")));
+        };
+        let mut out = BufWriter::new(&mut *file);
+        write(&mut out)?;
+        out.flush().map_err(error)?;
+        drop(out);
+        file.sync_all().map_err(error)?;
+        self.staged.push(Staged {
+            temporary,
+            destination: destination.to_path_buf(),
+        });
+        Ok(())
+    }
+
+    /// Renames every staged file over its destination, in the order staged. A replaced file's
+    /// mode is kept. Returns the destinations.
+    pub fn commit(self) -> Result<Vec<PathBuf>, WriteError> {
+        let mut written = Vec::with_capacity(self.staged.len());
+        for mut staged in self.staged {
+            let destination = staged.destination;
+            let error = |source| io_error(&destination, source);
+            if let Ok(existing) = std::fs::metadata(&destination) {
+                std::fs::set_permissions(&staged.temporary.path, existing.permissions())
+                    .map_err(error)?;
+            }
+            drop(staged.temporary.file.take());
+            std::fs::rename(&staged.temporary.path, &destination).map_err(error)?;
+            open_temporaries().remove(&staged.temporary.path);
+            written.push(destination);
+        }
+        Ok(written)
+    }
+}
+
+fn io_error(path: &Path, source: std::io::Error) -> WriteError {
+    WriteError::Io {
         path: path.to_path_buf(),
         source,
-    };
-    let mut temporary = tempfile::Builder::new()
-        .prefix(".raytracer-")
-        .suffix(".tmp")
-        .tempfile_in(folder_of(path))
-        .map_err(io_error)?;
-    temporary.write_all(bytes).map_err(io_error)?;
-    temporary.as_file().sync_all().map_err(io_error)?;
-    temporary
-        .persist(path)
-        .map_err(|error| io_error(error.error))?;
-    Ok(())
+    }
+}
+
+fn is_a_folder() -> std::io::Error {
+    std::io::Error::new(std::io::ErrorKind::IsADirectory, "is a folder")
+}
+
+/// `path` is not a folder and a temporary file can be created (and is removed) beside it.
+pub(crate) fn check_folder_writable(path: &Path) -> Result<(), WriteError> {
+    if path.is_dir() {
+        return Err(io_error(path, is_a_folder()));
+    }
+    Temporary::create(folder_of(path), 0o600)
+        .map(drop)
+        .map_err(|source| io_error(path, source))
+}
+
+/// Writes `bytes` to `path` alone, all or nothing (a [`FileSet`] of one file).
+pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
+    let mut set = FileSet::new();
+    set.stage_bytes(path, bytes)?;
+    set.commit().map(drop)
 }
 
 #[cfg(test)]
 mod tests {
-    use crate::output::image_file::write_image;
-    use image::{Rgb, RgbImage};
+    use super::*;
 
-    fn sample_image() -> RgbImage {
-        RgbImage::from_fn(3, 2, |x, y| Rgb([x as u8 * 100, y as u8 * 200, 7]))
+    fn names_in(folder: &Path) -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(folder)
+            .unwrap()
+            .map(|entry| entry.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
     }
 
     #[test]
-    fn atomic_write_replaces_and_failure_keeps_the_old_file() {
+    fn a_failure_while_staging_replaces_nothing_and_leaves_no_temporary() {
         let folder = tempfile::tempdir().unwrap();
-        let path = folder.path().join("out.png");
-        write_image(&path, &sample_image()).unwrap();
-        let first = std::fs::read(&path).unwrap();
-        // Unknown format: refused before anything is written.
-        assert!(write_image(&folder.path().join("out.xyz"), &sample_image()).is_err());
-        // Unwritable folder: error, old file untouched, no temporary left behind.
-        let missing = folder.path().join("missing").join("out.png");
-        let error = write_image(&missing, &sample_image()).unwrap_err();
-        assert!(error.to_string().contains("cannot write"), "{error}");
-        assert_eq!(std::fs::read(&path).unwrap(), first);
-        let names: Vec<_> = std::fs::read_dir(folder.path()).unwrap().collect();
-        assert_eq!(names.len(), 1, "only out.png remains: {names:?}");
+        let first = folder.path().join("first.txt");
+        let second = folder.path().join("second.txt");
+        std::fs::write(&first, b"old first").unwrap();
+        std::fs::write(&second, b"old second").unwrap();
+        let mut set = FileSet::new();
+        set.stage_bytes(&first, b"new first").unwrap();
+        // The second file's content fails half-way (as a full disk would).
+        let failed = set.stage(&second, |out| {
+            out.write_all(b"half").map_err(|e| io_error(&second, e))?;
+            Err(io_error(&second, std::io::Error::other("disk full")))
+        });
+        assert!(failed.is_err());
+        drop(set);
+        assert_eq!(std::fs::read(&first).unwrap(), b"old first");
+        assert_eq!(std::fs::read(&second).unwrap(), b"old second");
+        assert_eq!(names_in(folder.path()), ["first.txt", "second.txt"]);
+    }
+
+    #[test]
+    fn a_commit_replaces_every_file_and_removes_the_temporaries() {
+        let folder = tempfile::tempdir().unwrap();
+        let first = folder.path().join("first.txt");
+        std::fs::write(&first, b"old").unwrap();
+        let mut set = FileSet::new();
+        set.stage_bytes(&first, b"new first").unwrap();
+        set.stage_bytes(&folder.path().join("second.txt"), b"new second")
+            .unwrap();
+        let written = set.commit().unwrap();
+        assert_eq!(written.len(), 2);
+        assert_eq!(std::fs::read(&first).unwrap(), b"new first");
+        assert_eq!(names_in(folder.path()), ["first.txt", "second.txt"]);
+        assert!(
+            open_temporaries()
+                .iter()
+                .all(|p| !p.starts_with(folder.path()))
+        );
+    }
+
+    #[test]
+    fn removing_temporary_files_removes_the_ones_being_written() {
+        let folder = tempfile::tempdir().unwrap();
+        let temporary = Temporary::create(folder.path(), 0o666).unwrap();
+        assert_eq!(names_in(folder.path()).len(), 1);
+        remove_temporary_files();
+        assert!(names_in(folder.path()).is_empty());
+        drop(temporary);
     }
 }

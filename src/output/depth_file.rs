@@ -8,7 +8,7 @@
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
-use super::atomic::{WriteError, check_folder_writable, write_atomically};
+use super::atomic::{FileSet, WriteError, check_folder_writable};
 use crate::render::Frame;
 use crate::render::depth_map::{DepthRange, quantize_u16};
 
@@ -214,8 +214,12 @@ pub(crate) fn decode_exr(bytes: &[u8]) -> Result<RawDepth, String> {
     })
 }
 
-/// Writes `frame`'s raw t to `path` as PFM or OpenEXR, chosen by the extension.
-pub(crate) fn write_raw_depth(frame: &Frame, path: &Path) -> Result<(), WriteError> {
+/// Stages `frame`'s raw t for `path` as PFM or OpenEXR, chosen by the extension.
+pub(crate) fn stage_raw_depth(
+    set: &mut FileSet,
+    frame: &Frame,
+    path: &Path,
+) -> Result<(), WriteError> {
     let format = RawDepthFormat::from_path(path).ok_or_else(|| WriteError::UnknownFormat {
         path: path.to_path_buf(),
         expected: RawDepthFormat::EXTENSIONS,
@@ -230,7 +234,7 @@ pub(crate) fn write_raw_depth(frame: &Frame, path: &Path) -> Result<(), WriteErr
             })?
         }
     };
-    write_atomically(path, &bytes)
+    set.stage_bytes(path, &bytes)
 }
 
 /// Checks, without touching `path`, that a raw depth file (`.pfm`, `.exr`) could be written there.
@@ -244,7 +248,7 @@ pub(crate) fn check_writable_raw(path: &Path) -> Result<(), WriteError> {
     check_folder_writable(path)
 }
 
-/// Reads a PFM or OpenEXR depth file written by [`write_raw_depth`].
+/// Reads a PFM or OpenEXR depth file (as [`stage_raw_depth`] writes them).
 pub fn read_raw_depth(path: &Path) -> Result<RawDepth, ReadDepthError> {
     let format_error = |reason: String| ReadDepthError::Format {
         path: path.to_path_buf(),
@@ -279,8 +283,9 @@ pub(crate) fn depth_image_u16(
     image::ImageBuffer::from_raw(frame.width_px, frame.height_px, pixels).unwrap_or_default()
 }
 
-/// Writes the 16-bit grey PNG of `frame`'s depth over `range` to `path` (must end in `.png`).
-pub(crate) fn write_depth_png16(
+/// Stages the 16-bit grey PNG of `frame`'s depth over `range` for `path` (must end in `.png`).
+pub(crate) fn stage_depth_png16(
+    set: &mut FileSet,
     frame: &Frame,
     range: DepthRange,
     path: &Path,
@@ -302,13 +307,25 @@ pub(crate) fn write_depth_png16(
             path: path.to_path_buf(),
             source,
         })?;
-    write_atomically(path, &bytes)
+    set.stage_bytes(path, &bytes)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::render::{NO_HIT, Precision};
+
+    fn write_raw_depth(frame: &Frame, path: &Path) -> Result<(), WriteError> {
+        let mut set = FileSet::new();
+        stage_raw_depth(&mut set, frame, path)?;
+        set.commit().map(drop)
+    }
+
+    fn write_depth_png16(frame: &Frame, range: DepthRange, path: &Path) -> Result<(), WriteError> {
+        let mut set = FileSet::new();
+        stage_depth_png16(&mut set, frame, range, path)?;
+        set.commit().map(drop)
+    }
 
     fn frame() -> Frame {
         // 3×2, top row first; one no-hit pixel.

@@ -1,13 +1,14 @@
 //! 8-bit image files: the format is chosen by the file's extension (`.tga`: uncompressed 24-bit
 //! with the top row first; `.png`); every write is atomic ([`super::atomic`]).
 
+use std::io::Write;
 use std::path::Path;
 
 use image::codecs::png::PngEncoder;
 use image::codecs::tga::TgaEncoder;
 use image::{ExtendedColorType, ImageEncoder, RgbImage};
 
-use super::atomic::{WriteError, check_folder_writable, write_atomically};
+use super::atomic::{FileSet, WriteError, check_folder_writable};
 
 /// Image file formats the program writes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -39,35 +40,60 @@ impl ImageFormat {
     }
 }
 
+/// Encodes `image` in `format` into `out`.
+pub(crate) fn encode_into(
+    image: &RgbImage,
+    format: ImageFormat,
+    out: &mut dyn Write,
+) -> Result<(), image::ImageError> {
+    let (width, height) = image.dimensions();
+    match format {
+        ImageFormat::Tga => TgaEncoder::new(out).disable_rle().write_image(
+            image.as_raw(),
+            width,
+            height,
+            ExtendedColorType::Rgb8,
+        ),
+        ImageFormat::Png => {
+            PngEncoder::new(out).write_image(image.as_raw(), width, height, ExtendedColorType::Rgb8)
+        }
+    }
+}
+
 /// Encodes `image` in `format`.
 pub fn encode(image: &RgbImage, format: ImageFormat) -> Result<Vec<u8>, image::ImageError> {
     let mut bytes = Vec::new();
-    let (width, height) = image.dimensions();
-    match format {
-        ImageFormat::Tga => TgaEncoder::new(&mut bytes).disable_rle().write_image(
-            image.as_raw(),
-            width,
-            height,
-            ExtendedColorType::Rgb8,
-        )?,
-        ImageFormat::Png => PngEncoder::new(&mut bytes).write_image(
-            image.as_raw(),
-            width,
-            height,
-            ExtendedColorType::Rgb8,
-        )?,
-    }
+    encode_into(image, format, &mut bytes)?;
     Ok(bytes)
 }
 
-/// Writes `image` to `path` in the format its extension names, atomically.
-pub fn write_image(path: &Path, image: &RgbImage) -> Result<(), WriteError> {
+/// Stages `image` in the format `path`'s extension names, streamed into the file set's temporary
+/// file (no second copy of the pixels in memory).
+pub(crate) fn stage_image(
+    set: &mut FileSet,
+    path: &Path,
+    image: &RgbImage,
+) -> Result<(), WriteError> {
     let format = ImageFormat::from_path(path)?;
-    let bytes = encode(image, format).map_err(|source| WriteError::Encode {
-        path: path.to_path_buf(),
-        source,
-    })?;
-    write_atomically(path, &bytes)
+    set.stage(path, |out| {
+        encode_into(image, format, out).map_err(|source| match source {
+            image::ImageError::IoError(source) => WriteError::Io {
+                path: path.to_path_buf(),
+                source,
+            },
+            source => WriteError::Encode {
+                path: path.to_path_buf(),
+                source,
+            },
+        })
+    })
+}
+
+/// Writes `image` to `path` in the format its extension names, all or nothing.
+pub fn write_image(path: &Path, image: &RgbImage) -> Result<(), WriteError> {
+    let mut set = FileSet::new();
+    stage_image(&mut set, path, image)?;
+    set.commit().map(drop)
 }
 
 /// Checks, without touching `path`, that a file could be written there: the format is known,

@@ -2,7 +2,7 @@
 //! ([`image_file`]), and lossless depth files (PFM, OpenEXR) and 16-bit depth PNGs
 //! ([`depth_file`]). Nothing here knows about the command line or the viewer.
 
-pub(crate) mod atomic;
+pub mod atomic;
 pub mod depth_file;
 pub(crate) mod image_file;
 

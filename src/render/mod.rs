@@ -14,6 +14,7 @@
 pub mod depth_map;
 pub mod disc;
 mod frame;
+pub mod memory;
 pub(crate) mod precision;
 pub mod rng;
 pub(crate) mod sampling;

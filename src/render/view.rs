@@ -20,8 +20,8 @@ pub enum ViewError {
     /// Direction or up are unusable.
     #[error(transparent)]
     Camera(#[from] CameraError),
-    /// The screen size is zero, negative, not finite or above 1e150.
-    #[error("view size must be a number in (0, 1e150], found {0}")]
+    /// The screen size is below 1e-150, not finite or above 1e150.
+    #[error("view size must be a number in [1e-150, 1e150], found {0:e}")]
     BadSize(f64),
     /// The camera centre is not finite or beyond 1e150.
     #[error("view centre must be finite and at most 1e150 in magnitude")]
@@ -105,7 +105,7 @@ impl View {
         if !(self.center_world.is_finite() && self.center_world.abs().max_element() <= limit) {
             return Err(ViewError::BadCenter);
         }
-        if !(self.size_world > 0.0 && self.size_world <= limit) {
+        if !(self.size_world >= crate::scene::MIN_VIEW_SIZE && self.size_world <= limit) {
             return Err(ViewError::BadSize(self.size_world));
         }
         if !(self.depth_range.min_t.is_finite() && self.depth_range.max_t.is_finite()) {

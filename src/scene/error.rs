@@ -126,6 +126,21 @@ pub enum ParseErrorKind {
         /// The size as read.
         size: f64,
     },
+    /// The camera's size is too small for the arithmetic to resolve its pixels.
+    #[error(
+        "camera size must be at least 1e-150 (the squares of smaller pixels underflow), \
+         found {size:e}"
+    )]
+    SizeTooSmall {
+        /// The size as read.
+        size: f64,
+    },
+    /// Something that looks like a comment.
+    #[error("'{found}' looks like a comment, but the scene format has no comments: remove it")]
+    Comment {
+        /// The token as written.
+        found: String,
+    },
     /// Groups nested deeper than the parser allows.
     #[error("groups are nested deeper than {max} levels")]
     TooDeep {

@@ -15,7 +15,7 @@ pub use model::{
     Bounds, DEFAULT_BACKGROUND, DEFAULT_DIFFUSE, Material, OrthographicCamera, Scene, Sphere,
 };
 pub use parse::{
-    MAX_GROUP_DEPTH, MAX_MAGNITUDE, parse_scene, parse_scene_bytes,
+    MAX_GROUP_DEPTH, MAX_MAGNITUDE, MIN_VIEW_SIZE, parse_scene, parse_scene_bytes,
     parse_scene_bytes_with_progress, parse_scene_with_progress,
 };
 pub use writer::scene_to_text;
@@ -36,6 +36,50 @@ pub enum LoadError {
     /// The text is not a valid scene.
     #[error(transparent)]
     Parse(#[from] ParseError),
+    /// The path names something that is not a file to read a scene from.
+    #[error("{path}: not a regular file ({kind}): give a scene file")]
+    NotAFile {
+        /// The path as given.
+        path: String,
+        /// What it is instead.
+        kind: &'static str,
+    },
+    /// The file is larger than scene files are read.
+    #[error("{path}: {size} — scene files are read up to 1 GiB (about 8 million spheres)")]
+    TooLarge {
+        /// The path as given.
+        path: String,
+        /// The size, as far as known.
+        size: String,
+    },
+}
+
+/// Largest scene file read: 1 GiB (about 8 million spheres), so that a wrong path (a device, a
+/// huge file) is refused instead of filling the memory.
+pub const MAX_SCENE_BYTES: u64 = 1 << 30;
+
+/// Refuses what is not a file that ends: devices, sockets, folders. Regular files and named
+/// pipes (a scene written by another program) are read.
+fn check_file_type(metadata: &std::fs::Metadata, name: &str) -> Result<(), LoadError> {
+    use std::os::unix::fs::FileTypeExt as _;
+    let file_type = metadata.file_type();
+    let kind = if file_type.is_file() || file_type.is_fifo() {
+        return Ok(());
+    } else if file_type.is_dir() {
+        "a folder"
+    } else if file_type.is_char_device() {
+        "a character device"
+    } else if file_type.is_block_device() {
+        "a block device"
+    } else if file_type.is_socket() {
+        "a socket"
+    } else {
+        "not a file"
+    };
+    Err(LoadError::NotAFile {
+        path: name.to_owned(),
+        kind,
+    })
 }
 
 /// Reads and parses a scene file; errors name the path as given.
@@ -59,7 +103,15 @@ pub fn load_scene_with_progress(
         source,
     };
     let mut file = std::fs::File::open(path).map_err(io_error)?;
-    let expected = file.metadata().map(|m| m.len()).unwrap_or(0).max(1);
+    let metadata = file.metadata().map_err(io_error)?;
+    check_file_type(&metadata, &name)?;
+    if metadata.len() > MAX_SCENE_BYTES {
+        return Err(LoadError::TooLarge {
+            path: name,
+            size: format!("the file is {} bytes", metadata.len()),
+        });
+    }
+    let expected = metadata.len().max(1);
     let mut bytes = Vec::with_capacity(usize::try_from(expected).unwrap_or(0));
     let mut block = vec![0u8; 1 << 20];
     loop {
@@ -69,6 +121,13 @@ pub fn load_scene_with_progress(
             Err(error) if error.kind() == std::io::ErrorKind::Interrupted => continue,
             Err(error) => return Err(io_error(error)),
         };
+        // A pipe's length is not known beforehand: stop at the limit.
+        if (bytes.len() + read) as u64 > MAX_SCENE_BYTES {
+            return Err(LoadError::TooLarge {
+                path: name,
+                size: "the input goes on past 1 GiB".into(),
+            });
+        }
         bytes.extend_from_slice(&block[..read]);
         progress(READ_SHARE * (bytes.len() as f64 / expected as f64).min(1.0));
     }

@@ -16,6 +16,18 @@ use crate::geometry::camera::{CameraBasis, CameraError};
 /// stay finite in f64, so no input can drive the arithmetic to infinity or NaN.
 pub const MAX_MAGNITUDE: f64 = 1e150;
 
+/// Smallest camera size: the pixels of a smaller view are so small (below about 1e-154 at the
+/// largest image side) that their squares underflow, and every disc test would answer wrongly.
+pub const MIN_VIEW_SIZE: f64 = 1e-150;
+
+/// The UTF-8 byte-order mark some editors put at the start of a file; it is skipped.
+const BYTE_ORDER_MARK: char = '\u{feff}';
+
+/// Whether a token looks like the start of a comment (the format has none).
+fn looks_like_comment(text: &str) -> bool {
+    text.starts_with('#') || text.starts_with("//")
+}
+
 /// Deepest group nesting accepted; deeper files get [`ParseErrorKind::TooDeep`].
 pub const MAX_GROUP_DEPTH: usize = 256;
 
@@ -96,6 +108,7 @@ pub(super) const SPHERES_PER_REPORT: usize = 16_384;
 /// [`parse_scene`], telling `progress` the share of the text parsed so far (0 to 1) every
 /// [`SPHERES_PER_REPORT`] spheres.
 pub fn parse_scene_with_progress(text: &str, progress: &dyn Fn(f64)) -> Result<Scene, ParseError> {
+    let text = text.strip_prefix(BYTE_ORDER_MARK).unwrap_or(text);
     Parser::new(text, progress).scene()
 }
 
@@ -151,6 +164,10 @@ impl<'a> Parser<'a> {
             ParseErrorKind::Unsupported {
                 keyword: token.text.to_owned(),
             }
+        } else if looks_like_comment(token.text) {
+            ParseErrorKind::Comment {
+                found: quote(token.text),
+            }
         } else {
             ParseErrorKind::Expected {
                 expected: expected.to_owned(),
@@ -187,6 +204,12 @@ impl<'a> Parser<'a> {
                 token.location,
                 ParseErrorKind::NotFinite {
                     what,
+                    found: quote(token.text),
+                },
+            ),
+            Err(_) if looks_like_comment(token.text) => error(
+                token.location,
+                ParseErrorKind::Comment {
                     found: quote(token.text),
                 },
             ),
@@ -327,6 +350,9 @@ impl<'a> Parser<'a> {
                 size_at,
                 ParseErrorKind::NonPositiveSize { size: size_world },
             );
+        }
+        if size_world < MIN_VIEW_SIZE {
+            return error(size_at, ParseErrorKind::SizeTooSmall { size: size_world });
         }
         Ok(OrthographicCamera {
             center_world,

@@ -16,7 +16,7 @@ use std::fmt;
 
 mod supersample;
 
-pub(crate) use supersample::supersample;
+pub(crate) use supersample::{supersample, working_bytes};
 
 use crate::render::rng::SplitMix64;
 

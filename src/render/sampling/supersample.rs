@@ -1,6 +1,9 @@
-//! The supersampler: bands of rows in parallel; each band evaluates every sample of its rows and
-//! of a halo of rows around them (as far as the filter reaches), testing a sample only against
-//! the discs of its 16-column tile, then filters its own rows' pixels from those samples.
+//! The supersampler: bands of rows in parallel, each band in tiles of columns. A tile evaluates
+//! every sample of its pixels and of a halo around them (as far as the filter reaches), testing
+//! a sample only against the discs of its 16-column strip, then filters its own pixels from those
+//! samples straight into the frame. The tile's width is chosen so that its samples fit
+//! [`TILE_BUDGET_BYTES`]: the working memory is bounded by the thread count, whatever the image
+//! width, sample count and filter size ([`working_bytes`]).
 
 use glam::Vec3;
 use rayon::prelude::*;
@@ -34,8 +37,43 @@ pub(crate) struct Supersampled {
 /// Rows per band when supersampling.
 const SAMPLE_BAND_ROWS: usize = 16;
 
-/// Columns per tile: within a band, samples are tested only against the discs of their tile.
+/// Columns per disc strip: within a band, samples are tested only against the discs of their
+/// strip.
 const TILE_COLUMNS: usize = 16;
+
+/// The samples one tile may hold at once (the tile is narrower when samples are many).
+pub(crate) const TILE_BUDGET_BYTES: usize = 32 << 20;
+
+/// The halo around a tile: how many pixels the filter reaches beyond a pixel.
+fn halo_of(sampling: &Sampling) -> usize {
+    sampling.filter.support().ceil() as usize
+}
+
+/// Columns of pixels per tile: as many as fit [`TILE_BUDGET_BYTES`] with their halo, at least
+/// [`TILE_COLUMNS`].
+fn tile_columns(sampling: &Sampling) -> usize {
+    let halo = halo_of(sampling);
+    let per_column =
+        (SAMPLE_BAND_ROWS + 2 * halo) * sampling.samples as usize * size_of::<Sample>();
+    (TILE_BUDGET_BYTES / per_column.max(1))
+        .saturating_sub(2 * halo)
+        .max(TILE_COLUMNS)
+}
+
+/// The bytes one tile's samples take at most.
+fn tile_bytes(sampling: &Sampling) -> usize {
+    let halo = halo_of(sampling);
+    (SAMPLE_BAND_ROWS + 2 * halo)
+        * (tile_columns(sampling) + 2 * halo)
+        * sampling.samples as usize
+        * size_of::<Sample>()
+}
+
+/// The supersampler's working memory at most, besides the frame: one tile's samples for each
+/// thread that can run a band at once.
+pub(crate) fn working_bytes(sampling: &Sampling, threads: usize) -> usize {
+    threads.max(1) * tile_bytes(sampling)
+}
 
 /// What every band shares: the grid, the settings and the colours of the spheres.
 struct Shared<'a> {
@@ -47,27 +85,35 @@ struct Shared<'a> {
     palette: Vec<Vec3>,
     /// How many pixels the filter reaches beyond a pixel.
     halo: usize,
+    /// Columns of pixels per tile.
+    tile_columns: usize,
 }
 
-/// The halo rows (top first) the filter reads around a band's own rows.
+/// The pixels a tile's samples cover: its own and the halo the filter reads around them (rows
+/// top first, both ends included).
 #[derive(Clone, Copy)]
-struct BandRows {
-    halo_first: usize,
-    halo_last: usize,
+struct Tile {
+    first_row: usize,
+    last_row: usize,
+    first_column: usize,
+    last_column: usize,
 }
 
-/// Every sample of a band's halo rows: `per_pixel` samples for each pixel, row-major from
-/// `rows.halo_first`.
-struct BandSamples {
+/// Every sample of a tile: `per_pixel` samples for each pixel, row-major.
+struct TileSamples {
     samples: Vec<Sample>,
     per_pixel: usize,
-    width: usize,
-    halo_first: usize,
+    tile: Tile,
 }
 
-impl BandSamples {
+impl TileSamples {
+    fn width(&self) -> usize {
+        self.tile.last_column - self.tile.first_column + 1
+    }
+
     fn of_pixel(&self, row: usize, x: usize) -> &[Sample] {
-        let start = ((row - self.halo_first) * self.width + x) * self.per_pixel;
+        let index = (row - self.tile.first_row) * self.width() + (x - self.tile.first_column);
+        let start = index * self.per_pixel;
         &self.samples[start..start + self.per_pixel]
     }
 }
@@ -97,12 +143,12 @@ fn column_tiles(discs: &[Disc], grid: &PixelGrid) -> Vec<Vec<Disc>> {
     tiles
 }
 
-/// The discs whose rows touch `rows` (halo included, widened by a pixel), in file order.
-fn discs_near_rows(discs: &[Disc], grid: &PixelGrid, rows: BandRows) -> Vec<Disc> {
+/// The discs whose rows touch the rows of `tile` (widened by a pixel), in file order.
+fn discs_near_rows(discs: &[Disc], grid: &PixelGrid, tile: Tile) -> Vec<Disc> {
     let height = grid.height_px as usize;
     let v_of = |row: usize| grid.v_of_row((height - 1 - row) as f64);
-    let v_high = v_of(rows.halo_first) + grid.pixel_size_world;
-    let v_low = v_of(rows.halo_last) - grid.pixel_size_world;
+    let v_high = v_of(tile.first_row) + grid.pixel_size_world;
+    let v_low = v_of(tile.last_row) - grid.pixel_size_world;
     discs
         .iter()
         .filter(|d| {
@@ -113,28 +159,23 @@ fn discs_near_rows(discs: &[Disc], grid: &PixelGrid, rows: BandRows) -> Vec<Disc
         .collect()
 }
 
-/// Evaluates every sample of the band's halo rows; returns them and the sample–disc tests made.
-fn evaluate_samples(
-    shared: &Shared<'_>,
-    tiles: &[Vec<Disc>],
-    rows: BandRows,
-) -> (BandSamples, u64) {
+/// Evaluates every sample of `tile` into `samples` (reused between tiles); returns the
+/// sample–disc tests made.
+fn evaluate_samples(shared: &Shared<'_>, strips: &[Vec<Disc>], samples: &mut TileSamples) -> u64 {
     let grid = shared.grid;
-    let width = grid.width_px as usize;
     let height = grid.height_px as usize;
-    let per_pixel = shared.sampling.samples as usize;
-    let mut samples =
-        Vec::with_capacity((rows.halo_last - rows.halo_first + 1) * width * per_pixel);
+    let tile = samples.tile;
+    samples.samples.clear();
     let mut tests = 0u64;
-    for row in rows.halo_first..=rows.halo_last {
+    for row in tile.first_row..=tile.last_row {
         let y_up = (height - 1 - row) as u32;
-        for x in 0..width as u32 {
-            let tile = &tiles[x as usize / TILE_COLUMNS];
+        for x in tile.first_column as u32..=tile.last_column as u32 {
+            let strip = &strips[x as usize / TILE_COLUMNS];
             for (ox, oy) in shared.sampling.offsets(x, y_up) {
                 let (px, py) = (x as f32 + ox, y_up as f32 + oy);
                 let (u, v) = grid.screen_of_pixel_point(f64::from(px), f64::from(py));
-                tests += tile.len() as u64;
-                let (colour, grey) = match nearest_hit(tile, u, v) {
+                tests += strip.len() as u64;
+                let (colour, grey) = match nearest_hit(strip, u, v) {
                     Some((t, sphere)) => (
                         shared
                             .palette
@@ -145,7 +186,7 @@ fn evaluate_samples(
                     ),
                     None => (shared.scene.background, 0.0),
                 };
-                samples.push(Sample {
+                samples.samples.push(Sample {
                     x: px,
                     y: py,
                     colour,
@@ -154,13 +195,7 @@ fn evaluate_samples(
             }
         }
     }
-    let band = BandSamples {
-        samples,
-        per_pixel,
-        width,
-        halo_first: rows.halo_first,
-    };
-    (band, tests)
+    tests
 }
 
 /// Sums of one pixel's weighted samples.
@@ -176,13 +211,13 @@ struct PixelSums {
 /// The filtered colour and depth grey of pixel (x, row).
 fn filter_pixel(
     filter: Filter,
-    band: &BandSamples,
-    rows: BandRows,
+    samples: &TileSamples,
     halo: usize,
     row: usize,
     x: usize,
     y_up: f32,
 ) -> (Vec3, f32) {
+    let tile = samples.tile;
     let (cx, cy) = (x as f32 + 0.5, y_up + 0.5);
     let mut sums = PixelSums {
         colour: Vec3::ZERO,
@@ -191,12 +226,12 @@ fn filter_pixel(
         first: None,
         uniform: true,
     };
-    let rows_near =
-        row.saturating_sub(halo).max(rows.halo_first)..=(row + halo).min(rows.halo_last);
-    let columns_near = x.saturating_sub(halo)..=(x + halo).min(band.width - 1);
+    let rows_near = row.saturating_sub(halo).max(tile.first_row)..=(row + halo).min(tile.last_row);
+    let columns_near =
+        x.saturating_sub(halo).max(tile.first_column)..=(x + halo).min(tile.last_column);
     for near_row in rows_near {
         for near_x in columns_near.clone() {
-            for sample in band.of_pixel(near_row, near_x) {
+            for sample in samples.of_pixel(near_row, near_x) {
                 let weight = filter.weight(sample.x - cx, sample.y - cy);
                 if weight > 0.0 {
                     add_sample(&mut sums, sample, weight);
@@ -211,7 +246,7 @@ fn filter_pixel(
         // No sample has weight (a filter smaller than the sample spacing): the mean of the
         // pixel's own samples.
         None => {
-            let own = band.of_pixel(row, x);
+            let own = samples.of_pixel(row, x);
             let n = own.len().max(1) as f32;
             (
                 own.iter().map(|s| s.colour).sum::<Vec3>() / n,
@@ -233,36 +268,54 @@ fn add_sample(sums: &mut PixelSums, sample: &Sample, weight: f32) {
     sums.weight += weight;
 }
 
-/// One band: its pixels' 8-bit colours and filtered greys, and the tests made.
+/// One band, tile by tile: its pixels' 8-bit colours and filtered greys into `colour` and
+/// `grey` (the band's rows of the frame); returns the tests made.
 fn supersample_band(
     shared: &Shared<'_>,
     discs: &[Disc],
     band: usize,
-) -> (Vec<[u8; 3]>, Vec<f32>, u64) {
+    colour: &mut [[u8; 3]],
+    grey: &mut [f32],
+) -> u64 {
     let grid = shared.grid;
     let width = grid.width_px as usize;
     let height = grid.height_px as usize;
-    let first = band * SAMPLE_BAND_ROWS;
-    let last = (first + SAMPLE_BAND_ROWS).min(height) - 1;
-    let rows = BandRows {
-        halo_first: first.saturating_sub(shared.halo),
-        halo_last: (last + shared.halo).min(height - 1),
+    let first_row = band * SAMPLE_BAND_ROWS;
+    let last_row = (first_row + SAMPLE_BAND_ROWS).min(height) - 1;
+    let halo = shared.halo;
+    let rows = Tile {
+        first_row: first_row.saturating_sub(halo),
+        last_row: (last_row + halo).min(height - 1),
+        first_column: 0,
+        last_column: width - 1,
     };
-    let tiles = column_tiles(&discs_near_rows(discs, grid, rows), grid);
-    let (samples, tests) = evaluate_samples(shared, &tiles, rows);
-    let mut colour = Vec::with_capacity((last - first + 1) * width);
-    let mut depth_grey = Vec::with_capacity(colour.capacity());
-    for row in first..=last {
-        let y_up = (height - 1 - row) as f32;
-        for x in 0..width {
-            let filter = shared.sampling.filter;
-            let (pixel_colour, grey) =
-                filter_pixel(filter, &samples, rows, shared.halo, row, x, y_up);
-            colour.push(pixel_colour.to_array().map(quantize_f32));
-            depth_grey.push(grey);
+    let strips = column_tiles(&discs_near_rows(discs, grid, rows), grid);
+    let mut samples = TileSamples {
+        samples: Vec::new(),
+        per_pixel: shared.sampling.samples as usize,
+        tile: rows,
+    };
+    let mut tests = 0u64;
+    for first_column in (0..width).step_by(shared.tile_columns) {
+        let last_column = (first_column + shared.tile_columns).min(width) - 1;
+        samples.tile = Tile {
+            first_column: first_column.saturating_sub(halo),
+            last_column: (last_column + halo).min(width - 1),
+            ..rows
+        };
+        tests += evaluate_samples(shared, &strips, &mut samples);
+        for row in first_row..=last_row {
+            let y_up = (height - 1 - row) as f32;
+            for x in first_column..=last_column {
+                let filter = shared.sampling.filter;
+                let (pixel_colour, pixel_grey) = filter_pixel(filter, &samples, halo, row, x, y_up);
+                let index = (row - first_row) * width + x;
+                colour[index] = pixel_colour.to_array().map(quantize_f32);
+                grey[index] = pixel_grey;
+            }
         }
     }
-    (colour, depth_grey, tests)
+    tests
 }
 
 /// Supersamples `scene` on `grid` (see the module docs). `discs` are the frame's projected discs.
@@ -284,32 +337,31 @@ pub(crate) fn supersample(
             .iter()
             .map(|s| scene.sphere_colour(s))
             .collect(),
-        halo: sampling.filter.support().ceil() as usize,
+        halo: halo_of(sampling),
+        tile_columns: tile_columns(sampling),
     };
     let width = grid.width_px as usize;
     let height = grid.height_px as usize;
     let band_count = height.div_ceil(SAMPLE_BAND_ROWS);
     let bands_done = std::sync::atomic::AtomicUsize::new(0);
-    let bands: Vec<(Vec<[u8; 3]>, Vec<f32>, u64)> = (0..band_count)
-        .into_par_iter()
-        .map(|band| {
-            let result = supersample_band(&shared, discs, band);
+    let mut colour = vec![[0u8; 3]; width * height];
+    let mut depth_grey = vec![0f32; width * height];
+    let disc_tests = colour
+        .par_chunks_mut(width * SAMPLE_BAND_ROWS)
+        .zip(depth_grey.par_chunks_mut(width * SAMPLE_BAND_ROWS))
+        .enumerate()
+        .map(|(band, (colour, grey))| {
+            let tests = supersample_band(&shared, discs, band, colour, grey);
             let done = bands_done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             progress(done as f64 / band_count as f64);
-            result
+            tests
         })
-        .collect();
-    let mut result = Supersampled {
-        colour: Vec::with_capacity(width * height),
-        depth_grey: Vec::with_capacity(width * height),
-        disc_tests: 0,
-    };
-    for (colour, grey, tests) in bands {
-        result.colour.extend(colour);
-        result.depth_grey.extend(grey);
-        result.disc_tests += tests;
+        .sum();
+    Supersampled {
+        colour,
+        depth_grey,
+        disc_tests,
     }
-    result
 }
 
 #[cfg(test)]

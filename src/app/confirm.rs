@@ -1,0 +1,124 @@
+//! Asking before a write replaces anything: an export or "save view as scene" whose files exist
+//! waits for a yes in a modal window that lists them; the open scene file gets a warning of its
+//! own. Nothing is written on "Cancel", on Escape or a click outside the window.
+
+use std::path::{Path, PathBuf};
+
+use egui::RichText;
+
+use super::ViewerApp;
+use super::actions::Action;
+use crate::export::{ExportFiles, ExportPlan};
+
+/// A write that waits for the user's yes.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct PendingReplace {
+    /// The export or save to carry out on yes.
+    pub(crate) action: Action,
+    /// The files it would replace.
+    pub(crate) existing: Vec<PathBuf>,
+    /// One of them is the scene file on screen.
+    pub(crate) open_scene: bool,
+}
+
+/// Label of the button that replaces the files (tests find it by this).
+pub(crate) const REPLACE_LABEL: &str = "Replace";
+
+/// Whether two paths name the same file (by their canonical paths).
+fn same_file(a: &Path, b: &Path) -> bool {
+    match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => false,
+    }
+}
+
+impl ViewerApp {
+    /// The files a write action would make.
+    fn files_of(&self, action: &Action) -> Vec<PathBuf> {
+        match action {
+            Action::ExportTo(base) => match self.export_plan(base.clone()) {
+                Some((plan, _)) => files_of_plan(&plan),
+                None => Vec::new(),
+            },
+            Action::SaveViewTo(path) => vec![path.clone()],
+            _ => Vec::new(),
+        }
+    }
+
+    /// Carries out a write action now if it replaces nothing; otherwise asks first.
+    pub(super) fn write_or_ask(&mut self, action: Action) {
+        let existing: Vec<PathBuf> = self
+            .files_of(&action)
+            .into_iter()
+            .filter(|path| path.exists())
+            .collect();
+        if existing.is_empty() {
+            self.write_now(action);
+            return;
+        }
+        let open_scene = self
+            .loaded
+            .path
+            .as_deref()
+            .is_some_and(|scene| existing.iter().any(|path| same_file(path, scene)));
+        self.pending_replace = Some(PendingReplace {
+            action,
+            existing,
+            open_scene,
+        });
+    }
+
+    /// The modal asking whether to replace files; on yes, the write goes ahead.
+    pub(super) fn confirm_ui(&mut self, ctx: &egui::Context) {
+        let Some(pending) = &self.pending_replace else {
+            return;
+        };
+        let mut answer = None;
+        let modal = egui::Modal::new(egui::Id::unique("replace files")).show(ctx, |ui| {
+            ui.set_max_width(520.0);
+            let count = pending.existing.len();
+            let title = match count {
+                1 => "Replace this file?".to_owned(),
+                _ => format!("Replace these {count} files?"),
+            };
+            ui.heading(title);
+            if pending.open_scene {
+                ui.label(
+                    RichText::new(
+                        "One of them is the scene file on screen: its text will be replaced \
+                         by the scene with the current camera.",
+                    )
+                    .color(ui.visuals().warn_fg_color),
+                );
+            }
+            for path in &pending.existing {
+                ui.label(RichText::new(path.display().to_string()).monospace());
+            }
+            ui.horizontal(|ui| {
+                if ui.button(REPLACE_LABEL).clicked() {
+                    answer = Some(true);
+                }
+                if ui.button("Cancel").clicked() {
+                    answer = Some(false);
+                }
+            });
+        });
+        if modal.should_close() && answer.is_none() {
+            answer = Some(false);
+        }
+        match answer {
+            Some(true) => {
+                if let Some(pending) = self.pending_replace.take() {
+                    self.write_now(pending.action);
+                }
+            }
+            Some(false) => self.pending_replace = None,
+            None => {}
+        }
+    }
+}
+
+/// The files an export plan writes.
+fn files_of_plan(plan: &ExportPlan) -> Vec<PathBuf> {
+    ExportFiles::of(plan).written_by(plan)
+}

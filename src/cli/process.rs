@@ -1,0 +1,143 @@
+//! What the binary needs of the process it runs in, so that the edges never panic and nothing is
+//! left behind:
+//! * [`start_thread_pool`]: rayon's pool, as large as the process may start, and the calling
+//!   thread alone where no thread can be started (a process limit);
+//! * [`handle_termination_signals`]: on SIGINT, SIGTERM or SIGHUP the temporary files being
+//!   written are removed and the program ends with 128 + the signal's number — at once on the
+//!   command line, after the viewer has saved its settings in the window. SIGXFSZ (a file-size
+//!   limit) is caught so that the write fails with an error instead of killing the program;
+//! * [`print_out`] and [`print_err`]: standard output and error that a closed pipe ends quietly
+//!   and a full device turns into a one-line error, never a panic.
+
+use std::io::Write as _;
+use std::sync::atomic::{AtomicBool, AtomicI32, Ordering};
+use std::sync::{Arc, Mutex, PoisonError};
+
+use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM, SIGXFSZ};
+
+use crate::output::atomic::remove_temporary_files;
+
+/// Starts rayon's global pool with as many threads as the machine has cores and the process may
+/// start; where no thread can be started (a process limit), the calling thread does all the work.
+/// Returns why even that failed (not expected: it starts no thread).
+pub fn start_thread_pool() -> Result<(), rayon::ThreadPoolBuildError> {
+    let wanted = std::thread::available_parallelism().map_or(1, usize::from);
+    let startable = count_startable_threads(wanted);
+    let builder = rayon::ThreadPoolBuilder::new();
+    let builder = match startable {
+        0 => builder.num_threads(1).use_current_thread(),
+        n => builder.num_threads(n),
+    };
+    builder.build_global()
+}
+
+/// How many of `wanted` threads can be started at once (each is started, then ended).
+fn count_startable_threads(wanted: usize) -> usize {
+    let (release, wait) = std::sync::mpsc::channel::<()>();
+    let wait = Arc::new(Mutex::new(wait));
+    let started: Vec<_> = (0..wanted)
+        .map_while(|_| {
+            let wait = Arc::clone(&wait);
+            std::thread::Builder::new()
+                .spawn(move || {
+                    let _ = wait.lock().unwrap_or_else(PoisonError::into_inner).recv();
+                })
+                .ok()
+        })
+        .collect();
+    let count = started.len();
+    drop(release);
+    for thread in started {
+        let _ = thread.join();
+    }
+    count
+}
+
+/// What the program does when a termination signal arrives.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OnSignal {
+    /// Remove the temporary files and exit at once (the command line).
+    Exit,
+    /// Ask the viewer to close (it saves its settings) and exit once it has; a second signal
+    /// exits at once.
+    CloseViewer,
+}
+
+/// The signal that asked the program to stop, if one did (0: none).
+static STOP_SIGNAL: AtomicI32 = AtomicI32::new(0);
+
+/// Wakes the viewer so that it sees [`stop_requested`].
+type Wake = Box<dyn Fn() + Send>;
+static WAKE: Mutex<Option<Wake>> = Mutex::new(None);
+
+/// The termination signal that asked the program to stop, if any.
+pub fn stop_requested() -> Option<i32> {
+    match STOP_SIGNAL.load(Ordering::Acquire) {
+        0 => None,
+        signal => Some(signal),
+    }
+}
+
+/// Sets what wakes the viewer's event loop when a signal asks it to stop.
+pub fn set_wake(wake: impl Fn() + Send + 'static) {
+    *WAKE.lock().unwrap_or_else(PoisonError::into_inner) = Some(Box::new(wake));
+}
+
+/// The exit status for a stop by `signal`: 128 + its number, as shells report it.
+pub fn exit_status_of(signal: i32) -> u8 {
+    u8::try_from(128 + signal).unwrap_or(u8::MAX)
+}
+
+/// Installs the handling of termination signals described in the module docs. Where no thread
+/// can be started for it, the signals keep their default action (the program ends at once).
+pub fn handle_termination_signals(on_signal: OnSignal) {
+    // A file-size limit makes writes fail (EFBIG) instead of killing the program.
+    let _ = signal_hook::flag::register(SIGXFSZ, Arc::new(AtomicBool::new(false)));
+    // The handlers are registered on the thread that serves them, so that they never exist
+    // without it.
+    let _ = std::thread::Builder::new()
+        .name("signals".into())
+        .spawn(move || {
+            let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP])
+            else {
+                return;
+            };
+            for signal in signals.forever() {
+                let first = STOP_SIGNAL.swap(signal, Ordering::AcqRel) == 0;
+                if on_signal == OnSignal::CloseViewer && first {
+                    if let Some(wake) = WAKE.lock().unwrap_or_else(PoisonError::into_inner).as_ref()
+                    {
+                        wake();
+                    }
+                    continue;
+                }
+                remove_temporary_files();
+                std::process::exit(i32::from(exit_status_of(signal)));
+            }
+        });
+}
+
+/// How a write to standard output or error ended.
+#[derive(Debug)]
+pub enum PrintError {
+    /// The reader went away (a closed pipe): end quietly.
+    Closed,
+    /// Another failure (a full device): worth a one-line message.
+    Failed(std::io::Error),
+}
+
+/// Writes `text` to standard output.
+pub fn print_out(text: &str) -> Result<(), PrintError> {
+    let mut out = std::io::stdout().lock();
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(|error| match error.kind() {
+            std::io::ErrorKind::BrokenPipe => PrintError::Closed,
+            _ => PrintError::Failed(error),
+        })
+}
+
+/// Writes `text` to standard error; a failure is ignored (there is nowhere left to say it).
+pub fn print_err(text: &str) {
+    let _ = std::io::stderr().lock().write_all(text.as_bytes());
+}

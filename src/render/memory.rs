@@ -1,0 +1,61 @@
+//! How much memory a render takes at most, from the request alone, so that a request that
+//! cannot fit is refused before any work, with the figure.
+//!
+//! The bound adds, in bytes:
+//! * the program itself: [`BASELINE_BYTES`];
+//! * the scene: [`SPHERE_BYTES`] per sphere (the sphere, its projected disc, its band lists);
+//! * the frame: [`FRAME_BYTES_PER_PIXEL`] per pixel (colour, t, sphere), and
+//!   [`SUPERSAMPLED_BYTES_PER_PIXEL`] more with supersampling (the filtered depth grey, and the
+//!   supersampled colour until it replaces the frame's);
+//! * the larger of the supersampler's working memory (a bounded tile of samples per thread) and
+//!   the output being encoded ([`OUTPUT_BYTES_PER_PIXEL`] per pixel: one output at a time).
+//!
+//! Loading a scene file is bounded separately: the file's bytes and the spheres parsed from them.
+
+use super::Sampling;
+use super::sampling::working_bytes;
+
+/// The program's own memory (code, libraries, thread stacks, allocator), generously.
+pub const BASELINE_BYTES: u64 = 96 << 20;
+
+/// Per sphere: the parsed sphere (40 bytes), its projected disc (40) and, generously, its entries
+/// in the band lists and the band gathers (48).
+pub const SPHERE_BYTES: u64 = 128;
+
+/// Per pixel of a frame: 8-bit colour (3), t as f64 (8), the sphere index (4), and the
+/// rasteriser's per-band scratch of the f32 mode (8, at most).
+pub const FRAME_BYTES_PER_PIXEL: u64 = 23;
+
+/// Per pixel more when supersampling: the filtered grey (4) and the supersampled colour (3)
+/// beside the one-sample colour until it replaces it.
+pub const SUPERSAMPLED_BYTES_PER_PIXEL: u64 = 7;
+
+/// Per pixel of the output being written: an 8-bit RGB image (3) and, for lossless depth, t as
+/// f32 with its encoded copy (8); one output is made and written at a time.
+pub const OUTPUT_BYTES_PER_PIXEL: u64 = 11;
+
+/// The bound, in bytes, of rendering and writing a `width_px × height_px` picture of
+/// `sphere_count` spheres with `sampling` on `threads` threads.
+pub fn render_bound_bytes(
+    width_px: u32,
+    height_px: u32,
+    sphere_count: usize,
+    sampling: Option<&Sampling>,
+    threads: usize,
+) -> u64 {
+    let pixels = u64::from(width_px) * u64::from(height_px);
+    let spheres = sphere_count as u64 * SPHERE_BYTES;
+    let frame = pixels * FRAME_BYTES_PER_PIXEL;
+    let output = pixels * OUTPUT_BYTES_PER_PIXEL;
+    let supersampling = sampling.map_or(0, |sampling| {
+        pixels * SUPERSAMPLED_BYTES_PER_PIXEL + working_bytes(sampling, threads) as u64
+    });
+    BASELINE_BYTES + spheres + frame + supersampling.max(output)
+}
+
+/// The bound, in bytes, of loading a scene file of `file_bytes` bytes: the bytes, and the
+/// spheres parsed from them (a sphere takes at least 30 bytes of text; the parsed list may
+/// briefly hold twice its length while it grows).
+pub fn load_bound_bytes(file_bytes: u64) -> u64 {
+    BASELINE_BYTES + file_bytes + 2 * (file_bytes / 30) * 40
+}

@@ -1,0 +1,588 @@
+//! Hostile conditions at the boundary where a user meets the command line: the real binary in a
+//! temporary folder, with real files, links, umasks, file-size and process limits, closed pipes,
+//! full devices and signals. Each test names the promise it checks and asserts the outcome the
+//! user sees: the exit status, the message, the files (intact, complete, with their modes) and
+//! nothing left behind.
+
+use std::os::unix::fs::PermissionsExt as _;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+fn binary() -> &'static str {
+    env!("CARGO_BIN_EXE_raytracer")
+}
+
+fn scene_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(name)
+}
+
+fn run_in(folder: &Path, arguments: &[&str]) -> Output {
+    Command::new(binary())
+        .current_dir(folder)
+        .args(arguments)
+        .output()
+        .unwrap()
+}
+
+/// Runs the binary through `sh -c` (for umask and ulimit), in `folder`.
+fn run_shell(folder: &Path, script: &str, arguments: &[&str]) -> Output {
+    Command::new("sh")
+        .current_dir(folder)
+        .arg("-c")
+        .arg(format!("{script} \"$0\" \"$@\""))
+        .arg(binary())
+        .args(arguments)
+        .output()
+        .unwrap()
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+fn names_in(folder: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(folder)
+        .unwrap()
+        .map(|entry| entry.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+/// The one-line error the program printed, with no panic and no backtrace.
+fn assert_one_line_error(output: &Output) -> String {
+    let text = stderr(output);
+    assert!(!text.contains("panicked"), "a panic: {text}");
+    assert_ne!(output.status.code(), Some(101), "a panic: {text}");
+    text
+}
+
+fn scene_copy(folder: &Path, name: &str) -> PathBuf {
+    let path = folder.join(name);
+    std::fs::copy(scene_path("scene1_02.txt"), &path).unwrap();
+    path
+}
+
+// --- 1. An output that names the input, or two outputs that name one file ---------------------
+
+#[test]
+fn an_output_that_is_the_input_by_another_name_is_refused_and_the_scene_survives() {
+    let folder = tempfile::tempdir().unwrap();
+    // A scene whose name ends in .tga, written to through "./".
+    let scene = scene_copy(folder.path(), "s.tga");
+    let original = std::fs::read(&scene).unwrap();
+    let output = run_in(folder.path(), &["-input", "s.tga", "-output", "./s.tga"]);
+    assert_eq!(output.status.code(), Some(2), "{}", stderr(&output));
+    assert!(stderr(&output).contains("s.tga"), "{}", stderr(&output));
+    assert_eq!(std::fs::read(&scene).unwrap(), original);
+    // Through a symbolic link and through a hard link, for each output flag.
+    std::os::unix::fs::symlink(&scene, folder.path().join("link.png")).unwrap();
+    std::fs::hard_link(&scene, folder.path().join("hard.pfm")).unwrap();
+    for arguments in [
+        vec!["-input", "s.tga", "-output", "link.png"],
+        vec!["-input", "s.tga", "-depth", "8", "12", "link.png"],
+        vec!["-input", "s.tga", "-depth16", "8", "12", "link.png"],
+        vec!["-input", "s.tga", "-depth_raw", "hard.pfm"],
+    ] {
+        let output = run_in(folder.path(), &arguments);
+        assert_eq!(
+            output.status.code(),
+            Some(2),
+            "{arguments:?}: {}",
+            stderr(&output)
+        );
+        assert_eq!(std::fs::read(&scene).unwrap(), original, "{arguments:?}");
+    }
+    assert_eq!(names_in(folder.path()), ["hard.pfm", "link.png", "s.tga"]);
+}
+
+#[test]
+fn two_outputs_naming_one_file_by_different_spellings_are_refused_before_rendering() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_02.txt");
+    let scene = scene.to_str().unwrap();
+    std::fs::create_dir(folder.path().join("sub")).unwrap();
+    for arguments in [
+        vec![
+            "-input",
+            scene,
+            "-output",
+            "out.tga",
+            "-depth",
+            "8",
+            "12",
+            "./out.tga",
+        ],
+        vec![
+            "-input",
+            scene,
+            "-output",
+            "out.tga",
+            "-depth",
+            "8",
+            "12",
+            "sub/../out.tga",
+        ],
+        vec![
+            "-input", scene, "-depth", "8", "12", "d.png", "-depth16", "8", "12", "./d.png",
+        ],
+    ] {
+        let output = run_in(folder.path(), &arguments);
+        assert_eq!(
+            output.status.code(),
+            Some(2),
+            "{arguments:?}: {}",
+            stderr(&output)
+        );
+        assert!(stderr(&output).contains("same file"), "{}", stderr(&output));
+        assert_eq!(
+            names_in(folder.path()),
+            ["sub"],
+            "{arguments:?} wrote nothing"
+        );
+    }
+}
+
+// --- 2. All or nothing --------------------------------------------------------------------
+
+#[test]
+fn when_one_output_cannot_be_written_no_earlier_file_is_replaced() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_02.txt");
+    // Old outputs the failed run must leave as they were.
+    std::fs::write(folder.path().join("c.png"), b"old colour").unwrap();
+    std::fs::write(folder.path().join("d.tga"), b"old depth").unwrap();
+    // A file-size limit of 100 kB: the small PNG fits, the 1.2 MB TGA does not (the same as a
+    // disk that fills up while the second file is written).
+    let output = Command::new("prlimit")
+        .arg("--fsize=100000:100000")
+        .arg(binary())
+        .current_dir(folder.path())
+        .args(["-input", scene.to_str().unwrap(), "-size", "640", "640"])
+        .args(["-output", "c.png", "-depth", "8", "12", "d.tga"])
+        .output()
+        .unwrap();
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(1), "{text}");
+    assert!(text.contains("d.tga"), "the message names the file: {text}");
+    assert!(
+        !text.contains(".raytracer-"),
+        "no temporary file named: {text}"
+    );
+    assert_eq!(
+        std::fs::read(folder.path().join("c.png")).unwrap(),
+        b"old colour"
+    );
+    assert_eq!(
+        std::fs::read(folder.path().join("d.tga")).unwrap(),
+        b"old depth"
+    );
+    assert_eq!(
+        names_in(folder.path()),
+        ["c.png", "d.tga"],
+        "no temporary file left"
+    );
+}
+
+// --- 3. Modes -----------------------------------------------------------------------------
+
+#[test]
+fn new_files_follow_the_umask_and_replaced_files_keep_their_mode() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_02.txt");
+    let scene = scene.to_str().unwrap();
+    let mode = |name: &str| {
+        std::fs::metadata(folder.path().join(name))
+            .unwrap()
+            .permissions()
+            .mode()
+            & 0o777
+    };
+    let output = run_shell(
+        folder.path(),
+        "umask 022; exec",
+        &["-input", scene, "-output", "c.png", "-depth_raw", "t.pfm"],
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!((mode("c.png"), mode("t.pfm")), (0o644, 0o644));
+    let output = run_shell(
+        folder.path(),
+        "umask 007; exec",
+        &["-input", scene, "-output", "n.tga"],
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(mode("n.tga"), 0o660);
+    // A replaced file keeps the mode it had, whatever the umask.
+    std::fs::set_permissions(
+        folder.path().join("c.png"),
+        std::fs::Permissions::from_mode(0o640),
+    )
+    .unwrap();
+    let output = run_shell(
+        folder.path(),
+        "umask 000; exec",
+        &["-input", scene, "-output", "c.png"],
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(mode("c.png"), 0o640);
+}
+
+// --- 4. Temporary files on signals and limits -----------------------------------------------
+
+/// Starts a render of a large image and sends `signal` once its temporary output exists.
+/// Returns the exit status, or `None` if the write finished before it could be caught.
+fn interrupt_a_write(folder: &Path, signal: &str) -> Option<std::process::ExitStatus> {
+    let scene = scene_path("scene1_02.txt");
+    let mut child = Command::new(binary())
+        .current_dir(folder)
+        .args(["-input", scene.to_str().unwrap(), "-size", "8192", "4096"])
+        .args(["-output", "c.tga", "-depth", "8", "12", "d.tga"])
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let deadline = Instant::now() + Duration::from_secs(60);
+    loop {
+        if child.try_wait().unwrap().is_some() {
+            return None;
+        }
+        let writing = names_in(folder)
+            .iter()
+            .any(|n| n.starts_with(".raytracer-"));
+        if writing {
+            let id = child.id().to_string();
+            let sent = Command::new("kill").args([signal, &id]).status().unwrap();
+            assert!(sent.success());
+            return Some(child.wait().unwrap());
+        }
+        assert!(
+            Instant::now() < deadline,
+            "the render never started writing"
+        );
+        std::thread::sleep(Duration::from_millis(1));
+    }
+}
+
+#[test]
+fn a_termination_signal_during_the_write_leaves_no_temporary_file() {
+    for (signal, code) in [("-TERM", 143), ("-INT", 130)] {
+        let folder = tempfile::tempdir().unwrap();
+        let status = (0..5)
+            .find_map(|_| interrupt_a_write(folder.path(), signal))
+            .expect("a write was caught in five tries");
+        assert_eq!(
+            status.code(),
+            Some(code),
+            "{signal}: exit 128 + the signal's number"
+        );
+        let left: Vec<String> = names_in(folder.path());
+        assert!(
+            left.iter().all(|n| !n.starts_with(".raytracer-")),
+            "{signal}: temporary files left: {left:?}"
+        );
+        assert!(
+            left.is_empty(),
+            "{signal}: no output is half there: {left:?}"
+        );
+    }
+}
+
+// --- 8. Closed pipes and full devices --------------------------------------------------------
+
+#[test]
+fn a_closed_pipe_ends_the_program_quietly() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_02.txt");
+    for arguments in [
+        vec!["-help"],
+        vec![
+            "-input",
+            scene.to_str().unwrap(),
+            "-output",
+            "c.png",
+            "-stats",
+        ],
+    ] {
+        let (reader, writer) = std::io::pipe().unwrap();
+        drop(reader);
+        let output = Command::new(binary())
+            .current_dir(folder.path())
+            .args(&arguments)
+            .stdout(writer)
+            .stderr(Stdio::piped())
+            .output()
+            .unwrap();
+        assert_one_line_error(&output);
+        assert_eq!(
+            output.status.code(),
+            Some(0),
+            "{arguments:?}: {}",
+            stderr(&output)
+        );
+        assert_eq!(stderr(&output), "", "{arguments:?}: quiet");
+    }
+    // A usage error with stderr closed: still exit 2, no panic.
+    let (reader, writer) = std::io::pipe().unwrap();
+    drop(reader);
+    let output = Command::new(binary())
+        .arg("-bogus")
+        .stderr(writer)
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+}
+
+#[test]
+fn a_full_device_is_a_one_line_error() {
+    let full = std::fs::OpenOptions::new()
+        .write(true)
+        .open("/dev/full")
+        .unwrap();
+    let output = Command::new(binary())
+        .arg("-help")
+        .stdout(full)
+        .output()
+        .unwrap();
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(1), "{text}");
+    assert_eq!(text.lines().count(), 1, "{text}");
+    assert!(
+        text.contains("No space left") || text.contains("no space"),
+        "{text}"
+    );
+}
+
+// --- 9. Input size ------------------------------------------------------------------------
+
+#[test]
+fn inputs_that_never_end_or_are_too_large_are_refused_with_the_limit() {
+    let folder = tempfile::tempdir().unwrap();
+    let started = Instant::now();
+    let output = run_in(folder.path(), &["-input", "/dev/zero", "-output", "c.png"]);
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(1), "{text}");
+    assert!(
+        text.contains("/dev/zero") && text.contains("not a regular file"),
+        "{text}"
+    );
+    // A 2 GiB file (sparse: no disk used) is refused before it is read.
+    let big = folder.path().join("big.txt");
+    std::fs::File::create(&big)
+        .unwrap()
+        .set_len(2 << 30)
+        .unwrap();
+    let output = run_in(folder.path(), &["-input", "big.txt", "-output", "c.png"]);
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(1), "{text}");
+    assert!(
+        text.contains("big.txt") && text.contains("1 GiB"),
+        "states the limit: {text}"
+    );
+    assert!(
+        started.elapsed() < Duration::from_secs(20),
+        "refused without reading"
+    );
+    assert_eq!(names_in(folder.path()), ["big.txt"]);
+}
+
+// --- 10. Supersampling memory --------------------------------------------------------------
+
+/// Runs the binary and samples its peak resident memory (VmHWM) until it exits.
+fn run_measuring_peak(folder: &Path, arguments: &[&str]) -> (Output, u64) {
+    let mut child = Command::new(binary())
+        .current_dir(folder)
+        .args(arguments)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let status_path = format!("/proc/{}/status", child.id());
+    let mut peak_kib = 0u64;
+    while child.try_wait().unwrap().is_none() {
+        if let Ok(status) = std::fs::read_to_string(&status_path)
+            && let Some(line) = status.lines().find(|l| l.starts_with("VmHWM:"))
+        {
+            let kib: u64 = line.split_whitespace().nth(1).unwrap().parse().unwrap();
+            peak_kib = peak_kib.max(kib);
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    let output = child.wait_with_output().unwrap();
+    (output, peak_kib * 1024)
+}
+
+fn stats_value(output: &Output, name: &str) -> f64 {
+    let text = String::from_utf8_lossy(&output.stdout);
+    text.lines()
+        .find_map(|line| line.strip_prefix(&format!("{name}: ")))
+        .unwrap_or_else(|| panic!("no {name} in {text}"))
+        .parse()
+        .unwrap()
+}
+
+#[test]
+fn supersampling_memory_stays_within_the_stated_bound() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_02.txt");
+    // Wide, many samples, a wide filter: every band used to hold all its samples at once
+    // (16 rows and a halo of 8 on each side × 2048 columns × 64 samples × 24 bytes ≈ 100 MB,
+    // once per thread); tiles now hold 32 MB each.
+    let (output, peak) = run_measuring_peak(
+        folder.path(),
+        &[
+            "-input",
+            scene.to_str().unwrap(),
+            "-size",
+            "2048",
+            "16",
+            "-uniform_samples",
+            "64",
+            "-gaussian_filter",
+            "4",
+            "-output",
+            "c.png",
+            "-stats",
+        ],
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    let bound = stats_value(&output, "memory_bound_mb") * 1e6;
+    let reported = stats_value(&output, "peak_memory_mb") * 1e6;
+    assert!(
+        peak as f64 <= bound,
+        "peak {peak} B over the bound {bound} B"
+    );
+    assert!(
+        reported <= bound,
+        "reported peak {reported} B over the bound {bound} B"
+    );
+    assert!(
+        bound < 400e6,
+        "the bound is small for a 2048×48 image: {bound} B"
+    );
+}
+
+#[test]
+fn a_request_that_cannot_fit_in_memory_is_refused_with_the_figure() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_02.txt");
+    // 600 MB of address space: the binary runs, a 64 Mpx frame (more than a gigabyte) cannot.
+    let output = Command::new("prlimit")
+        .arg("--as=600000000:600000000")
+        .arg(binary())
+        .current_dir(folder.path())
+        .args([
+            "-input",
+            scene.to_str().unwrap(),
+            "-size",
+            "8192",
+            "8192",
+            "-output",
+            "c.tga",
+        ])
+        .output()
+        .unwrap();
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(1), "{text}");
+    assert!(
+        text.contains("MB") && text.contains("memory"),
+        "says the figure: {text}"
+    );
+    assert!(names_in(folder.path()).is_empty());
+}
+
+// --- 11. No thread can be created -----------------------------------------------------------
+
+#[test]
+fn without_threads_the_render_still_runs_on_one() {
+    let folder = tempfile::tempdir().unwrap();
+    std::fs::set_permissions(folder.path(), std::fs::Permissions::from_mode(0o777)).unwrap();
+    let scene = folder.path().join("scene.txt");
+    std::fs::copy(scene_path("scene1_02.txt"), &scene).unwrap();
+    std::fs::set_permissions(&scene, std::fs::Permissions::from_mode(0o644)).unwrap();
+    // As an unprivileged user limited to one process: no thread can be started.
+    let output = Command::new("setpriv")
+        .args(["--reuid=65534", "--regid=65534", "--clear-groups"])
+        .args(["prlimit", "--nproc=1:1"])
+        .arg(binary())
+        .current_dir(folder.path())
+        .args(["-input", "scene.txt", "-output", "c.png", "-stats"])
+        .output()
+        .unwrap();
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(0), "{text}");
+    assert_eq!(stats_value(&output, "threads"), 1.0);
+    let picture = image::open(folder.path().join("c.png")).unwrap();
+    assert_eq!(picture.width(), 200);
+}
+
+// --- 12. Camera sizes the arithmetic cannot resolve -----------------------------------------
+
+#[test]
+fn a_camera_too_small_to_resolve_is_refused_with_the_reason() {
+    let folder = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(scene_path("scene1_01.txt")).unwrap();
+    let size_line = text
+        .lines()
+        .find(|l| l.trim_start().starts_with("size"))
+        .unwrap();
+    for size in ["1e-308", "1e-200"] {
+        let tiny = text.replace(size_line, &format!("    size {size}"));
+        std::fs::write(folder.path().join("tiny.txt"), tiny).unwrap();
+        let output = run_in(folder.path(), &["-input", "tiny.txt", "-output", "c.png"]);
+        let message = assert_one_line_error(&output);
+        assert_eq!(output.status.code(), Some(1), "{size}: {message}");
+        assert!(message.contains("tiny.txt:"), "names the line: {message}");
+        assert!(
+            message.contains("1e-150"),
+            "states the smallest size: {message}"
+        );
+    }
+    assert_eq!(names_in(folder.path()), ["tiny.txt"]);
+}
+
+// --- Also expected -----------------------------------------------------------------------
+
+#[test]
+fn an_empty_input_path_a_byte_order_mark_and_comments_get_clear_answers() {
+    let folder = tempfile::tempdir().unwrap();
+    let output = run_in(folder.path(), &["-input", "", "-output", "c.png"]);
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(2), "{text}");
+    assert!(text.contains("-input") && text.contains("empty"), "{text}");
+    // A UTF-8 byte-order mark (as some Windows editors write) is accepted.
+    let scene = std::fs::read(scene_path("scene1_01.txt")).unwrap();
+    let mut with_bom = b"\xEF\xBB\xBF".to_vec();
+    with_bom.extend_from_slice(&scene);
+    std::fs::write(folder.path().join("bom.txt"), with_bom).unwrap();
+    let output = run_in(folder.path(), &["-input", "bom.txt", "-output", "bom.png"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    // A comment: the format has none, and the message says so.
+    for comment in ["# my scene", "// my scene"] {
+        let text = format!("{comment}\n{}", String::from_utf8_lossy(&scene));
+        std::fs::write(folder.path().join("c.txt"), text).unwrap();
+        let output = run_in(folder.path(), &["-input", "c.txt", "-output", "c.png"]);
+        let message = assert_one_line_error(&output);
+        assert_eq!(output.status.code(), Some(1), "{message}");
+        assert!(message.contains("c.txt:1:1"), "{message}");
+        assert!(message.contains("no comments"), "{message}");
+    }
+}
+
+#[test]
+fn without_a_display_the_viewer_says_so_in_one_line() {
+    let output = Command::new(binary())
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .stdin(Stdio::null())
+        .output()
+        .unwrap();
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(1), "{text}");
+    assert_eq!(text.lines().count(), 1, "{text}");
+    assert!(
+        text.contains("no display") && text.contains("-output"),
+        "{text}"
+    );
+}
