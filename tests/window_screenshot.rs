@@ -7,67 +7,13 @@
 //! where they are missing.
 #![cfg(feature = "gui")]
 
+mod common;
+
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
+use common::xvfb::{KillOnDrop, screenshot, start_xvfb, viewer_command};
 use image::RgbImage;
-
-struct KillOnDrop(Child);
-
-impl Drop for KillOnDrop {
-    fn drop(&mut self) {
-        let _ = self.0.kill();
-        let _ = self.0.wait();
-    }
-}
-
-fn start_xvfb() -> (KillOnDrop, String) {
-    for number in 90..140 {
-        if Path::new(&format!("/tmp/.X{number}-lock")).exists() {
-            continue;
-        }
-        let display = format!(":{number}");
-        let child = Command::new("Xvfb")
-            .args([
-                display.as_str(),
-                "-screen",
-                "0",
-                "1280x800x24",
-                "-nolisten",
-                "tcp",
-            ])
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
-            .spawn()
-            .expect("Xvfb is needed for this test (scripts/test.sh installs it)");
-        let mut xvfb = KillOnDrop(child);
-        let deadline = Instant::now() + Duration::from_secs(10);
-        while Instant::now() < deadline {
-            if Path::new(&format!("/tmp/.X11-unix/X{number}")).exists() {
-                return (xvfb, display);
-            }
-            if let Ok(Some(_)) = xvfb.0.try_wait() {
-                break; // display taken meanwhile: try the next
-            }
-            std::thread::sleep(Duration::from_millis(50));
-        }
-    }
-    panic!("could not start Xvfb on any display :90..:139");
-}
-
-fn screenshot(display: &str, path: &Path) -> Option<RgbImage> {
-    let status = Command::new("import")
-        .args(["-display", display, "-window", "root"])
-        .arg(path)
-        .stderr(Stdio::null())
-        .status()
-        .expect("ImageMagick's import is needed for this test (scripts/test.sh installs it)");
-    if !status.success() {
-        return None;
-    }
-    image::open(path).ok().map(|i| i.to_rgb8())
-}
 
 /// Centroid and count of the pixels matching `predicate`.
 fn blob(image: &RgbImage, predicate: impl Fn(&image::Rgb<u8>) -> bool) -> (f64, f64, usize) {
@@ -100,16 +46,9 @@ fn real_window_shows_colour_and_depth_side_by_side() {
     let (_xvfb, display) = start_xvfb();
     let home = tempfile::tempdir().unwrap();
     let scene: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_01.txt");
-    let viewer = Command::new(env!("CARGO_BIN_EXE_raytracer"))
+    let viewer = viewer_command(&display, home.path())
         .arg("-input")
         .arg(&scene)
-        .env("DISPLAY", &display)
-        .env_remove("WAYLAND_DISPLAY")
-        .env("HOME", home.path())
-        .env("XDG_DATA_HOME", home.path().join("data"))
-        .env("XDG_CONFIG_HOME", home.path().join("config"))
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
         .spawn()
         .unwrap();
     let mut viewer = KillOnDrop(viewer);

@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use super::ViewerApp;
+use super::confirm::same_file;
 use super::dialogs::{DialogAnswer, DialogKind, spawn_dialog};
 use super::job::{DepthStyle, ViewerJob, prepare_frame};
 use super::state::ExportFormat;
@@ -170,6 +171,12 @@ impl ViewerApp {
     /// "Save view as scene": writes the scene with the current camera to `path` (in the
     /// background; the outcome appears in the status bar).
     fn save_view_to(&mut self, path: PathBuf) {
+        // Saving over the open scene reloads it; the message should stay the save's.
+        self.saving_open_scene = self
+            .loaded
+            .path
+            .as_deref()
+            .is_some_and(|open| same_file(open, &path) || open == path);
         let scene = Arc::clone(&self.loaded.scene);
         let view = self.view;
         self.write_in_background("saving the view…", move || {
@@ -248,6 +255,10 @@ impl ViewerApp {
             Some(Poll::Done(Err(error))) => Status::error(format!("writing failed: {error}")),
             Some(Poll::Lost) => Status::error("writing failed: the writing thread stopped"),
         };
+        if finished.is_error() {
+            // Nothing was written, so no reload of our own follows.
+            self.saving_open_scene = false;
+        }
         self.status = Some(finished);
         self.writing = None;
     }

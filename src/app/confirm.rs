@@ -25,7 +25,7 @@ pub(crate) struct PendingReplace {
 pub(crate) const REPLACE_LABEL: &str = "Replace";
 
 /// Whether two paths name the same file (by their canonical paths).
-fn same_file(a: &Path, b: &Path) -> bool {
+pub(super) fn same_file(a: &Path, b: &Path) -> bool {
     match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
         (Ok(a), Ok(b)) => a == b,
         _ => false,

@@ -86,6 +86,8 @@ pub struct ViewerApp {
     watcher: Option<reload::FileWatcher>,
     loading: Option<PendingLoad>,
     probe: ProbePoints,
+    /// "Save view as scene" is writing over the open scene (its reload keeps the save's message).
+    saving_open_scene: bool,
     /// A write that waits for the user to agree to replace files.
     pending_replace: Option<confirm::PendingReplace>,
     ctx: egui::Context,
@@ -134,6 +136,7 @@ impl ViewerApp {
             loading: None,
             probe: ProbePoints::default(),
             pending_replace: None,
+            saving_open_scene: false,
             ctx: cc.egui_ctx.clone(),
         };
         let ctx = cc.egui_ctx.clone();

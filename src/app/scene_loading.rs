@@ -140,7 +140,10 @@ impl ViewerApp {
                     ..self.view
                 } == self.loaded.file_view;
                 self.adopt(loaded, !still_file_view);
-                self.status = Some(Status::info(format!("reloaded {}", path.display())));
+                // After our own save over the open scene, the save's message stays.
+                if !std::mem::take(&mut self.saving_open_scene) {
+                    self.status = Some(Status::info(format!("reloaded {}", path.display())));
+                }
             }
         }
     }

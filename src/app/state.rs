@@ -124,7 +124,7 @@ pub struct LoadedScene {
     /// The file it came from; `None` for the embedded default scene.
     pub path: Option<PathBuf>,
     /// The file's own camera at the initial depth range ("reset view" returns here).
-    pub(crate) file_view: View,
+    pub file_view: View,
 }
 
 impl LoadedScene {

@@ -2,6 +2,8 @@
 //! to settle, and clicking a widget the way a user does.
 #![allow(dead_code)] // each test file uses its own share
 
+pub(crate) mod xvfb;
+
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 

@@ -1,0 +1,173 @@
+//! The viewer's writes, driven through its buttons (egui_kittest): it asks before replacing any
+//! file and warns when one is the open scene, writes into a folder when given one, and gives
+//! written files the modes the command line gives them.
+
+mod common;
+
+use std::os::unix::fs::PermissionsExt as _;
+use std::path::Path;
+
+use common::{click, scene_path, settle, viewer};
+use egui_kittest::kittest::Queryable;
+
+/// Clicks `label`, lets the viewer settle and draws two more frames (a modal window appears in
+/// the accessibility tree on its second frame).
+fn press(harness: &mut egui_kittest::Harness<'static, raytracer::app::ViewerApp>, label: &str) {
+    click(harness, label);
+    settle(harness);
+    harness.run_steps(2);
+}
+
+fn mode(path: &Path) -> u32 {
+    std::fs::metadata(path).unwrap().permissions().mode() & 0o777
+}
+
+/// The process's umask, as the kernel reports it.
+fn umask() -> u32 {
+    let status = std::fs::read_to_string("/proc/self/status").unwrap();
+    let line = status.lines().find(|l| l.starts_with("Umask:")).unwrap();
+    u32::from_str_radix(line.split_whitespace().nth(1).unwrap(), 8).unwrap()
+}
+
+#[test]
+fn saving_the_view_over_a_file_asks_first_and_cancel_keeps_it() {
+    let folder = tempfile::tempdir().unwrap();
+    let target = folder.path().join("view.txt");
+    std::fs::write(&target, b"my notes").unwrap();
+    let mut harness = viewer(Some(scene_path("scene1_02.txt")));
+    harness.state_mut().settings_mut().export.scene_path = target.display().to_string();
+    press(&mut harness, "Save view as scene");
+    assert!(harness.query_by_label("Replace this file?").is_some());
+    assert_eq!(std::fs::read(&target).unwrap(), b"my notes", "nothing yet");
+    press(&mut harness, "Cancel");
+    assert!(harness.query_by_label("Replace this file?").is_none());
+    assert_eq!(std::fs::read(&target).unwrap(), b"my notes", "cancelled");
+    // Asked again, and this time replaced.
+    press(&mut harness, "Save view as scene");
+    press(&mut harness, "Replace");
+    let saved = raytracer::scene::load_scene(&target).unwrap();
+    assert_eq!(
+        saved.camera.center_world,
+        harness.state().view().center_world
+    );
+}
+
+#[test]
+fn saving_over_the_open_scene_warns_and_keeps_the_saved_message() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = folder.path().join("open.txt");
+    std::fs::copy(scene_path("scene1_02.txt"), &scene).unwrap();
+    let original = std::fs::read(&scene).unwrap();
+    let mut harness = viewer(Some(scene.clone()));
+    harness.state_mut().view_mut().center_world.x += 0.25;
+    settle(&mut harness);
+    harness.state_mut().settings_mut().export.scene_path = scene.display().to_string();
+    press(&mut harness, "Save view as scene");
+    assert!(
+        harness
+            .query_by_label_contains("the scene file on screen")
+            .is_some(),
+        "the open scene gets a warning of its own"
+    );
+    assert_eq!(std::fs::read(&scene).unwrap(), original);
+    press(&mut harness, "Replace");
+    // The file changed on disk, so it reloads (the file's camera is now the saved view); the
+    // message still says what was saved.
+    let saved_center = harness.state().view().center_world;
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(20);
+    while harness.state().loaded_scene().file_view.center_world != saved_center {
+        assert!(
+            std::time::Instant::now() < deadline,
+            "the saved scene was not reloaded"
+        );
+        harness.step();
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    settle(&mut harness);
+    let (message, is_error) = harness.state().message().unwrap();
+    assert!(
+        !is_error && message.contains("saved the view as"),
+        "{message}"
+    );
+    let saved = raytracer::scene::load_scene(&scene).unwrap();
+    assert_eq!(
+        saved.camera.center_world,
+        harness.state().view().center_world
+    );
+}
+
+#[test]
+fn an_export_over_existing_files_lists_them_and_waits_for_a_yes() {
+    let folder = tempfile::tempdir().unwrap();
+    let colour = folder.path().join("shot_colour.png");
+    std::fs::write(&colour, b"an earlier shot").unwrap();
+    let mut harness = viewer(Some(scene_path("scene1_02.txt")));
+    harness.state_mut().settings_mut().export.path =
+        folder.path().join("shot.png").display().to_string();
+    press(&mut harness, "Export to path");
+    assert!(
+        harness
+            .query_by_label(&colour.display().to_string())
+            .is_some(),
+        "the file to be replaced is listed"
+    );
+    assert_eq!(std::fs::read(&colour).unwrap(), b"an earlier shot");
+    assert_eq!(std::fs::read_dir(folder.path()).unwrap().count(), 1);
+    press(&mut harness, "Replace");
+    assert!(image::open(&colour).is_ok(), "replaced by the export");
+    assert!(folder.path().join("shot_depth.png").exists());
+}
+
+#[test]
+fn a_folder_path_exports_into_the_folder() {
+    let folder = tempfile::tempdir().unwrap();
+    let shots = folder.path().join("shots");
+    std::fs::create_dir(&shots).unwrap();
+    let mut harness = viewer(Some(scene_path("scene1_02.txt")));
+    for typed in [format!("{}/", shots.display()), shots.display().to_string()] {
+        for entry in std::fs::read_dir(&shots).unwrap() {
+            std::fs::remove_file(entry.unwrap().path()).unwrap();
+        }
+        harness.state_mut().settings_mut().export.path = typed.clone();
+        press(&mut harness, "Export to path");
+        let (message, is_error) = harness.state().message().unwrap();
+        assert!(!is_error, "{typed}: {message}");
+        assert!(shots.join("raytracer_colour.png").exists(), "{typed}");
+        assert!(shots.join("raytracer_command.sh").exists(), "{typed}");
+        assert_eq!(
+            std::fs::read_dir(folder.path()).unwrap().count(),
+            1,
+            "{typed}: nothing beside the folder"
+        );
+    }
+    // A folder that does not exist is an error; nothing is written.
+    let missing = format!("{}/", folder.path().join("missing").display());
+    harness.state_mut().settings_mut().export.path = missing;
+    press(&mut harness, "Export to path");
+    let (message, is_error) = harness.state().message().unwrap();
+    assert!(is_error && message.contains("does not exist"), "{message}");
+    assert_eq!(std::fs::read_dir(folder.path()).unwrap().count(), 1);
+}
+
+#[test]
+fn exported_files_follow_the_umask_and_replaced_ones_keep_their_mode() {
+    let folder = tempfile::tempdir().unwrap();
+    let mut harness = viewer(Some(scene_path("scene1_02.txt")));
+    harness.state_mut().settings_mut().export.path =
+        folder.path().join("shot.png").display().to_string();
+    press(&mut harness, "Export to path");
+    let new_mode = 0o666 & !umask();
+    assert_eq!(mode(&folder.path().join("shot_colour.png")), new_mode);
+    assert_eq!(mode(&folder.path().join("shot_scene.txt")), new_mode);
+    assert_eq!(
+        mode(&folder.path().join("shot_command.sh")),
+        0o777 & !umask(),
+        "the script is executable"
+    );
+    // Replaced: the mode the file had stays.
+    let colour = folder.path().join("shot_colour.png");
+    std::fs::set_permissions(&colour, std::fs::Permissions::from_mode(0o640)).unwrap();
+    press(&mut harness, "Export to path");
+    press(&mut harness, "Replace");
+    assert_eq!(mode(&colour), 0o640);
+}

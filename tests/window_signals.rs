@@ -1,0 +1,97 @@
+//! The real viewer window under Xvfb, stopped by a termination signal: it closes the way Ctrl+Q
+//! or the close button does, saving its settings (here, the scene it had open), and ends with
+//! 128 + the signal's number.
+#![cfg(feature = "gui")]
+
+mod common;
+
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use common::xvfb::{KillOnDrop, screenshot, start_xvfb, viewer_command};
+
+/// Every file under `folder`, read as text.
+fn texts_under(folder: &Path) -> Vec<String> {
+    let mut texts = Vec::new();
+    let Ok(entries) = std::fs::read_dir(folder) else {
+        return texts;
+    };
+    for entry in entries.flatten() {
+        let path = entry.path();
+        if path.is_dir() {
+            texts.extend(texts_under(&path));
+        } else if let Ok(text) = std::fs::read_to_string(&path) {
+            texts.push(text);
+        }
+    }
+    texts
+}
+
+#[test]
+fn sigterm_saves_the_settings_before_the_viewer_ends() {
+    let (_xvfb, display) = start_xvfb();
+    let home = tempfile::tempdir().unwrap();
+    // A scene under a name no setting holds yet.
+    let scene: PathBuf = home.path().join("signalled-scene.txt");
+    std::fs::copy(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_02.txt"),
+        &scene,
+    )
+    .unwrap();
+    let child = viewer_command(&display, home.path())
+        .arg("-input")
+        .arg(&scene)
+        .spawn()
+        .unwrap();
+    let mut viewer = KillOnDrop(child);
+    // Wait for the window to draw the scene (its green discs), so the scene has been opened.
+    let shot = home.path().join("screen.png");
+    let deadline = Instant::now() + Duration::from_secs(90);
+    loop {
+        assert!(
+            viewer.0.try_wait().unwrap().is_none(),
+            "the viewer ended early"
+        );
+        let green = screenshot(&display, &shot).map_or(0, |image| {
+            image
+                .pixels()
+                .filter(|p| p[1] > 200 && p[0] < 60 && p[2] < 60)
+                .count()
+        });
+        if green > 2000 {
+            break;
+        }
+        assert!(Instant::now() < deadline, "no frame on screen after 90 s");
+        std::thread::sleep(Duration::from_millis(300));
+    }
+    // Nothing saved yet (eframe saves every 30 s and on exit).
+    let name = scene.display().to_string();
+    assert!(
+        texts_under(&home.path().join("data"))
+            .iter()
+            .all(|t| !t.contains(&name))
+    );
+    let sent = std::process::Command::new("kill")
+        .args(["-TERM", &viewer.0.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(sent.success());
+    let deadline = Instant::now() + Duration::from_secs(30);
+    let status = loop {
+        if let Some(status) = viewer.0.try_wait().unwrap() {
+            break status;
+        }
+        assert!(
+            Instant::now() < deadline,
+            "the viewer did not end after SIGTERM"
+        );
+        std::thread::sleep(Duration::from_millis(50));
+    };
+    assert_eq!(status.code(), Some(143), "exit 128 + 15");
+    assert!(
+        texts_under(&home.path().join("data"))
+            .iter()
+            .any(|t| t.contains(&name)),
+        "the settings name the open scene"
+    );
+}
