@@ -6,7 +6,6 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use super::ViewerApp;
-use super::confirm::same_file;
 use super::dialogs::{DialogAnswer, DialogKind, spawn_dialog};
 use super::job::{DepthStyle, ViewerJob, prepare_frame};
 use super::state::ExportFormat;
@@ -16,6 +15,7 @@ use crate::explore::depth_stats::auto_range;
 use crate::explore::navigate;
 use crate::export::{ExportPlan, save_view_as_scene, write_export};
 use crate::output::ImageFormat;
+use crate::output::identity::same_file;
 use crate::render::{View, check_image_size};
 
 /// Something the user asked for.
@@ -176,7 +176,7 @@ impl ViewerApp {
             .loaded
             .path
             .as_deref()
-            .is_some_and(|open| same_file(open, &path) || open == path);
+            .is_some_and(|open| same_file(open, &path));
         let scene = Arc::clone(&self.loaded.scene);
         let view = self.view;
         self.write_in_background("saving the view…", move || {

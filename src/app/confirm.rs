@@ -2,13 +2,14 @@
 //! waits for a yes in a modal window that lists them; the open scene file gets a warning of its
 //! own. Nothing is written on "Cancel", on Escape or a click outside the window.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use egui::RichText;
 
 use super::ViewerApp;
 use super::actions::Action;
 use crate::export::{ExportFiles, ExportPlan};
+use crate::output::identity::same_file;
 
 /// A write that waits for the user's yes.
 #[derive(Debug, Clone, PartialEq)]
@@ -23,14 +24,6 @@ pub(crate) struct PendingReplace {
 
 /// Label of the button that replaces the files (tests find it by this).
 pub(crate) const REPLACE_LABEL: &str = "Replace";
-
-/// Whether two paths name the same file (by their canonical paths).
-pub(super) fn same_file(a: &Path, b: &Path) -> bool {
-    match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
-        (Ok(a), Ok(b)) => a == b,
-        _ => false,
-    }
-}
 
 impl ViewerApp {
     /// The files a write action would make.

@@ -4,8 +4,7 @@
 //! nothing.
 
 use std::fmt::Write as _;
-use std::os::unix::fs::MetadataExt as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::{Duration, Instant};
 
 use super::error::UsageError;
@@ -14,11 +13,12 @@ use super::progress::StepProgress;
 use super::system::{available_memory_bytes, peak_memory_bytes};
 use crate::cli::RenderRequest;
 use crate::output::WriteError;
-use crate::output::atomic::{FileSet, folder_of};
+use crate::output::atomic::FileSet;
 use crate::output::depth_file::{check_writable_raw, stage_depth_png16, stage_raw_depth};
+use crate::output::identity::{FileIdentity, identity};
 use crate::output::image_file::{check_writable, stage_image};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
-use crate::render::memory::render_bound_bytes;
+use crate::render::memory::{load_bound_bytes, render_bound_bytes};
 use crate::render::{Frame, View, ViewError, render_with_progress};
 use crate::scene::{LoadError, Scene, load_scene_with_progress};
 
@@ -86,7 +86,8 @@ pub struct RunReport {
     pub(crate) disc_tests: u64,
     /// The precision used.
     pub(crate) precision: crate::render::Precision,
-    /// The memory bound of this render, bytes ([`crate::render::memory`]).
+    /// The memory bound of this run (loading or rendering, whichever is larger), bytes
+    /// ([`crate::render::memory`]).
     pub(crate) memory_bound: u64,
 }
 
@@ -155,26 +156,6 @@ fn outputs(request: &RenderRequest) -> Vec<(Flag, &Path)> {
     outputs
 }
 
-/// What makes two paths the same file: device and inode when it exists, else the canonical
-/// folder and the name (so `out.tga`, `./out.tga` and `sub/../out.tga` are one file, and so are
-/// a file and its links).
-#[derive(Debug, PartialEq, Eq)]
-enum FileIdentity {
-    Existing { device: u64, inode: u64 },
-    New(PathBuf),
-}
-
-fn identity(path: &Path) -> Option<FileIdentity> {
-    if let Ok(metadata) = std::fs::metadata(path) {
-        return Some(FileIdentity::Existing {
-            device: metadata.dev(),
-            inode: metadata.ino(),
-        });
-    }
-    let folder = std::fs::canonicalize(folder_of(path)).ok()?;
-    Some(FileIdentity::New(folder.join(path.file_name()?)))
-}
-
 /// Refuses a request whose outputs include the scene file, or name one file twice, by any
 /// spelling or link.
 fn check_distinct_files(request: &RenderRequest) -> Result<(), UsageError> {
@@ -197,15 +178,8 @@ fn check_distinct_files(request: &RenderRequest) -> Result<(), UsageError> {
     Ok(())
 }
 
-/// Refuses a render whose memory bound exceeds what the program may still use.
-fn check_memory(request: &RenderRequest, sphere_count: usize) -> Result<u64, RunError> {
-    let bound = render_bound_bytes(
-        request.width_px,
-        request.height_px,
-        sphere_count,
-        request.quality.sampling.as_ref(),
-        rayon::current_num_threads(),
-    );
+/// Refuses work whose memory bound (`bound` bytes) exceeds what the program may still use.
+fn check_memory(request: &RenderRequest, bound: u64) -> Result<u64, RunError> {
     match available_memory_bytes() {
         Some(available) if bound > available => Err(RunError::Memory {
             width_px: request.width_px,
@@ -248,13 +222,22 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
             _ => check_writable(path)?,
         }
     }
+    let file_bytes = std::fs::metadata(&request.input).map_or(0, |m| m.len());
+    let load_bound = check_memory(request, load_bound_bytes(file_bytes))?;
     let started = Instant::now();
     let scene = {
         let bar = StepProgress::start("loading");
         load_scene_with_progress(&request.input, &|share| bar.report(share))?
     };
     let parse = started.elapsed();
-    let memory_bound = check_memory(request, scene.spheres.len())?;
+    let render_bound = render_bound_bytes(
+        request.width_px,
+        request.height_px,
+        scene.spheres.len(),
+        request.quality.sampling.as_ref(),
+        rayon::current_num_threads(),
+    );
+    let memory_bound = check_memory(request, render_bound)?.max(load_bound);
 
     let started = Instant::now();
     let view = request_view(&scene, request);

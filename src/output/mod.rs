@@ -4,6 +4,7 @@
 
 pub mod atomic;
 pub mod depth_file;
+pub(crate) mod identity;
 pub(crate) mod image_file;
 
 pub use atomic::{WriteError, write_atomically};

@@ -166,6 +166,11 @@ fn evaluate_samples(shared: &Shared<'_>, strips: &[Vec<Disc>], samples: &mut Til
     let height = grid.height_px as usize;
     let tile = samples.tile;
     samples.samples.clear();
+    // Exactly the tile's samples: growing by doubling would overshoot the budget.
+    let count = (tile.last_row - tile.first_row + 1)
+        * (tile.last_column - tile.first_column + 1)
+        * samples.per_pixel;
+    samples.samples.reserve_exact(count);
     let mut tests = 0u64;
     for row in tile.first_row..=tile.last_row {
         let y_up = (height - 1 - row) as u32;
