@@ -300,7 +300,7 @@ impl RenderRequest {
     /// The arguments (without the program name) that parse to this request again: every
     /// setting, flags spelled by the table. Numbers are written in their shortest exact form,
     /// so they parse back to the same values.
-    pub(crate) fn to_arguments(&self) -> Vec<OsString> {
+    pub fn to_arguments(&self) -> Vec<OsString> {
         let mut arguments: Vec<OsString> = Vec::new();
         let mut push = |flag: Flag, values: Vec<OsString>| {
             arguments.push(flag.name().into());

@@ -1,0 +1,45 @@
+//! Fuzz target: arbitrary bytes through the scene parser. What parses must
+//! * write back to text that parses to the same scene (`scene_to_text`),
+//! * render a small view in every precision mode with no NaN t, the f32 mode covering exactly the
+//!   pixels the f64 mode covers with the same spheres (it re-decides uncertain pixels in f64),
+//! * supersample and map depth without a panic.
+//!
+//! Any panic, hang or runaway allocation is a bug.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use raytracer::explore::initial_depth_range;
+use raytracer::render::depth_map::DepthRange;
+use raytracer::render::{Filter, Precision, Quality, Sampler, Sampling, View, render_with};
+use raytracer::scene::{parse_scene, parse_scene_bytes, scene_to_text};
+
+fuzz_target!(|bytes: &[u8]| {
+    let Ok(scene) = parse_scene_bytes(bytes) else {
+        return;
+    };
+    let written = scene_to_text(&scene);
+    assert_eq!(parse_scene(&written).as_ref(), Ok(&scene), "{written}");
+
+    let mut view = View::of_camera(&scene.camera, 8, 6, DepthRange::new(0.0, 1.0));
+    view.depth_range = initial_depth_range(&scene, &view);
+    let render = |precision, sampling| {
+        render_with(&scene, &view, &Quality { precision, sampling })
+    };
+    let Ok(exact) = render(Precision::F64, None) else {
+        return;
+    };
+    assert!(exact.t.iter().all(|t| !t.is_nan()));
+    for precision in [Precision::F32, Precision::Auto] {
+        let frame = render(precision, None).expect("renders where f64 does");
+        assert_eq!(frame.sphere, exact.sphere, "{precision}: coverage");
+        assert!(frame.t.iter().all(|t| !t.is_nan()));
+    }
+    let sampling = Sampling {
+        sampler: Sampler::Jittered,
+        samples: 4,
+        filter: Filter::Tent { radius: 1.0 },
+        seed: 1,
+    };
+    let supersampled = render(Precision::F64, Some(sampling)).expect("renders where f64 does");
+    let _ = supersampled.depth_image(view.depth_range);
+});

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Coverage-guided fuzzing (cargo-fuzz: libFuzzer with AddressSanitizer, on the nightly toolchain)
+# of the scene parser with what it renders (`scene`) and of the command-line parser (`command_line`).
+#   scripts/fuzz.sh [SECONDS [LOG_FOLDER]]
+# runs each target for SECONDS (default 60, as CI does) from a copy of its committed seed corpus
+# (fuzz/corpus/<target>), so the committed seeds stay as they are; with LOG_FOLDER, each target's
+# whole libFuzzer log is written to LOG_FOLDER/<target>.log. A crash, a leak, a timeout (10 s for
+# one input) or an input that takes more than 2 GB stops the run with a non-zero status and leaves
+# the input in fuzz/artifacts/<target>/: make it a regression test.
+set -euo pipefail
+seconds=${1:-60}
+logs=${2:-}
+cd "$(dirname "$0")/../fuzz"
+if ! rustup toolchain list | grep -q '^nightly'; then
+  rustup toolchain install nightly --profile minimal
+fi
+if ! command -v cargo-fuzz >/dev/null 2>&1; then
+  cargo install cargo-fuzz --locked
+fi
+cargo +nightly fuzz build --release
+for target in scene command_line; do
+  corpus=$(mktemp -d)
+  cp corpus/"$target"/* "$corpus"/
+  log=/dev/null
+  if [ -n "$logs" ]; then
+    mkdir -p "$logs"
+    log="$logs/$target.log"
+  fi
+  echo "fuzzing $target for $seconds s"
+  cargo +nightly fuzz run --release "$target" "$corpus" -- \
+    -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+    2>&1 | tee "$log" | grep -E '^(Done|stat::|==|SUMMARY|INFO: Seed)|ERROR|panicked' || true
+  status=${PIPESTATUS[0]}
+  rm -rf "$corpus"
+  if [ "$status" -ne 0 ]; then
+    echo "fuzzing $target failed (status $status); the input is in fuzz/artifacts/$target/" >&2
+    exit "$status"
+  fi
+done
