@@ -10,6 +10,10 @@
 set -euo pipefail
 seconds=${1:-60}
 logs=${2:-}
+if [ -n "$logs" ]; then
+  mkdir -p "$logs"
+  logs=$(cd "$logs" && pwd)
+fi
 cd "$(dirname "$0")/../fuzz"
 if ! rustup toolchain list | grep -q '^nightly'; then
   rustup toolchain install nightly --profile minimal

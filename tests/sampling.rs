@@ -1,10 +1,13 @@
 //! Supersampling: interior pixels equal the one-sample render, edge pixels are mixtures of the
-//! colours around them, the error against a high-sample reference falls as samples grow, raw t stays
-//! the centre sample, and the same settings give the same bytes (also through the binary).
+//! colours around them, the error against the area-average oracle (which shares no code with the
+//! supersampler, and is itself checked against the exact area of a disc in a square) falls as
+//! samples grow, raw t stays the centre sample, and the same settings give the same bytes (also
+//! through the binary).
 
 use std::path::Path;
 use std::process::Command;
 
+use raytracer::oracle::area::{AreaAverage, area_average, disc_area_in_square};
 use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{Filter, Frame, Quality, Sampler, Sampling, View, render, render_with};
 use raytracer::scene::{Scene, load_scene};
@@ -98,14 +101,17 @@ fn interior_pixels_equal_the_one_sample_render_and_edges_are_mixtures() {
     }
 }
 
-fn mean_colour_error(frame: &Frame, reference: &Frame) -> f64 {
+/// Mean absolute difference, in 8-bit levels per channel, between a frame's colours and the
+/// oracle's area averages (quantised as images are).
+fn mean_colour_error(frame: &Frame, oracle: &AreaAverage) -> f64 {
     let total: f64 = frame
         .colour
         .iter()
-        .zip(&reference.colour)
-        .map(|(a, b)| {
+        .enumerate()
+        .map(|(index, pixel)| {
+            let exact = oracle.colour_u8(index);
             (0..3)
-                .map(|c| (f64::from(a[c]) - f64::from(b[c])).abs())
+                .map(|c| (f64::from(pixel[c]) - f64::from(exact[c])).abs())
                 .sum::<f64>()
         })
         .sum();
@@ -113,17 +119,50 @@ fn mean_colour_error(frame: &Frame, reference: &Frame) -> f64 {
 }
 
 #[test]
-fn error_against_the_reference_falls_as_samples_grow() {
+fn the_oracle_matches_the_exact_area_of_a_disc_in_a_pixel() {
+    // One disc on a black background: a pixel's exact colour is the share of its square the disc
+    // covers. The oracle (64×64 rays a pixel) must be within its stated 2.8/n of that share.
+    let scene = raytracer::scene::parse_scene(
+        "OrthographicCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 size 4 }\n\
+         Background { color 0 0 0 }\n\
+         Materials { numMaterials 1 PhongMaterial { diffuseColor 1 1 1 } }\n\
+         Group { numObjects 1 MaterialIndex 0 Sphere { center 0.137 -0.211 0 radius 1.3 } }\n",
+    )
+    .unwrap();
+    let view = View::of_camera(&scene.camera, 16, 16, DepthRange::new(8.0, 12.0));
+    let n = 64;
+    let oracle = area_average(&scene, &view, n).unwrap();
+    let pixel = 4.0 / 16.0;
+    let mut edge_pixels = 0;
+    for row in 0..16u32 {
+        for x in 0..16u32 {
+            let y_up = 15 - row;
+            let (x0, y0) = ((f64::from(x) - 8.0) * pixel, (f64::from(y_up) - 8.0) * pixel);
+            let share = disc_area_in_square(0.137, -0.211, 1.3, x0, y0, pixel) / (pixel * pixel);
+            let got = oracle.colour[(row * 16 + x) as usize].x;
+            assert!(
+                (got - share).abs() <= 2.8 / f64::from(n),
+                "pixel ({x}, {y_up}): oracle {got}, exact {share}"
+            );
+            edge_pixels += usize::from(share > 0.0 && share < 1.0);
+        }
+    }
+    assert!(edge_pixels > 20, "the disc's edge crosses pixels: {edge_pixels}");
+}
+
+#[test]
+fn error_against_the_area_oracle_falls_as_samples_grow() {
     let scene = scene("showcase_torus_knot.txt");
-    let view = View::of_camera(&scene.camera, 64, 64, DepthRange::new(5.0, 15.0));
-    let reference = supersampled(&scene, &view, Sampler::Jittered, 400, Filter::PIXEL_BOX);
+    let view = View::of_camera(&scene.camera, 48, 48, DepthRange::new(5.0, 15.0));
+    // The oracle shares no code with the supersampler (area.rs): 64×64 rays a pixel.
+    let oracle = area_average(&scene, &view, 64).unwrap();
     for sampler in Sampler::ALL {
-        let errors: Vec<f64> = [1, 4, 16, 64]
+        let errors: Vec<f64> = [1, 4, 16, 64, 256]
             .iter()
             .map(|&n| {
                 mean_colour_error(
                     &supersampled(&scene, &view, sampler, n, Filter::PIXEL_BOX),
-                    &reference,
+                    &oracle,
                 )
             })
             .collect();
@@ -134,6 +173,8 @@ fn error_against_the_reference_falls_as_samples_grow() {
                 sampler.name()
             );
         }
+        // At 256 samples the supersampler is within a level of the area average on average.
+        assert!(errors[4] < 1.0, "{}: {errors:?}", sampler.name());
     }
 }
 

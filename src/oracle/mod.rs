@@ -6,8 +6,10 @@
 //!   through the careful ray–sphere routine, single-threaded; and the textbook f32 `b² − 4ac`
 //!   baseline.
 //! * [`high_precision`]: the double-double reference (≈ 106-bit arithmetic).
+//! * [`area`]: each pixel's area average on a dense grid of rays (the anti-aliasing oracle).
 //! * [`generate`]: seeded random scenes.
 
+pub mod area;
 pub(crate) mod generate;
 pub mod high_precision;
 pub mod ray_loop;
