@@ -362,6 +362,7 @@ fn random_case(rng: &mut SplitMix64) -> (Scene, View) {
 #[test]
 fn seeded_cases_agree_with_the_reference_and_have_no_nan() {
     let mut rng = SplitMix64::new(0x5EED_0001);
+    let (mut compared, mut hits, mut pixels) = (0, 0, 0);
     for case in 0..300 {
         let (scene, view) = random_case(&mut rng);
         let frame = render(&scene, &view).unwrap();
@@ -378,7 +379,10 @@ fn seeded_cases_agree_with_the_reference_and_have_no_nan() {
                 "case {case}: t finite iff hit"
             );
         }
-        compare_with_reference(&scene, &view, &frame, 0.0);
+        let (case_compared, case_hits) = compare_with_reference(&scene, &view, &frame, 0.0);
+        compared += case_compared;
+        hits += case_hits;
+        pixels += frame.pixel_count();
         let fast = render_with(
             &scene,
             &view,
@@ -389,7 +393,22 @@ fn seeded_cases_agree_with_the_reference_and_have_no_nan() {
         )
         .unwrap();
         assert!(fast.t.iter().all(|t| !t.is_nan()), "case {case}: f32 NaN");
+        // f32 re-decides every uncertain pixel in f64: its coverage is f64's, sphere for sphere.
+        assert!(
+            fast.sphere == frame.sphere,
+            "case {case}: f32 coverage differs"
+        );
     }
+    // Pixels within rounding of a silhouette or a tie are skipped; nearly all others count, and
+    // many of them are hits.
+    assert!(
+        compared * 10 >= pixels * 9,
+        "only {compared} of {pixels} pixels were compared"
+    );
+    assert!(
+        hits * 4 >= compared,
+        "only {hits} of {compared} compared pixels hit a sphere"
+    );
 }
 
 #[test]
@@ -431,10 +450,29 @@ fn seeded_rays_through_projected_centres_always_hit() {
         let (scene, view) = random_case(&mut rng);
         let basis = view.validate().unwrap();
         let discs = project_discs(&scene, &view, &basis);
-        for disc in &discs {
-            // The disc path: a screen point exactly at the projected centre.
-            let (t, _) = nearest_hit(&discs, disc.u, disc.v).expect("the centre always hits");
-            assert!(t.is_finite());
+        // The screen point of each sphere's centre, computed here without the renderer's
+        // projection: a basis of our own (d, then d × up, then h × d, each normalised) and the
+        // centre's offset from the camera centre dotted with it.
+        let d = view.direction_world.normalize();
+        let h = d.cross(view.up_world).normalize();
+        let s = h.cross(d).normalize();
+        for (index, sphere) in (0u32..).zip(&scene.spheres) {
+            let offset = sphere.center_world - view.center_world;
+            let (u, v, w) = (offset.dot(h), offset.dot(s), offset.dot(d));
+            // The disc path hits there, and its t is the front of the sphere (w − r) within the
+            // rounding of a projection (the camera is at most 1e6 radii away).
+            let (t, _) = nearest_hit(&discs, u, v).expect("the centre always hits");
+            let front = w - sphere.radius_world;
+            let tolerance = 1e-9 * (offset.length() + sphere.radius_world);
+            let own = discs[index as usize]
+                .hit_t(u, v)
+                .expect("its own disc hits");
+            assert!(
+                (own - front).abs() <= tolerance,
+                "t {own} against w − r = {front} (±{tolerance})"
+            );
+            assert!(t <= own, "the nearest hit is no farther than this sphere's");
+            let disc = &discs[index as usize];
             // The careful routine: a ray aimed at the centre from up to 1e12 radii away.
             let sphere = &scene.spheres[disc.sphere as usize];
             let distance = sphere.radius_world * rng.log_uniform(1.0, 1e12);
@@ -580,5 +618,74 @@ fn degenerate_cases_are_defined() {
             .t
             .iter()
             .all(|t| !t.is_nan() && *t != f64::NEG_INFINITY)
+    );
+}
+
+#[test]
+fn f32_coverage_equals_f64_coverage_at_the_silhouette() {
+    // Each case puts one pixel centre within a relative 1e-13..1e-8 of a disc's edge, inside or
+    // outside at random: f64 decides it, f32's rounding (6e-8) cannot. The f32 mode must re-decide
+    // such pixels in f64, so its frame covers exactly what the f64 frame covers.
+    let mut rng = SplitMix64::new(0x5EED_0032);
+    let side = 48u32;
+    let (mut inside, mut outside) = (0, 0);
+    for case in 0..400 {
+        let size = rng.uniform(3.0, 7.0);
+        let pixel = size / f64::from(side);
+        let (x, y_up) = ((rng.unit() * 48.0) as u32, (rng.unit() * 48.0) as u32);
+        let point_u = (f64::from(x) + 0.5 - 24.0) * pixel;
+        let point_v = (f64::from(y_up) + 0.5 - 24.0) * pixel;
+        let angle = rng.uniform(0.0, std::f64::consts::TAU);
+        let distance = pixel * rng.uniform(3.0, 20.0);
+        let (center_u, center_v) = (
+            point_u + distance * angle.cos(),
+            point_v + distance * angle.sin(),
+        );
+        let exact_distance = ((point_u - center_u).powi(2) + (point_v - center_v).powi(2)).sqrt();
+        let nudge = rng.log_uniform(1e-13, 1e-8);
+        let is_inside = rng.unit() < 0.5;
+        let radius = exact_distance * if is_inside { 1.0 + nudge } else { 1.0 - nudge };
+        let scene = Scene {
+            camera: OrthographicCamera {
+                center_world: DVec3::new(0.0, 0.0, 10.0),
+                direction_world: DVec3::NEG_Z,
+                up_world: DVec3::Y,
+                size_world: size,
+            },
+            background: Vec3::ZERO,
+            materials: vec![Material {
+                diffuse_colour: Vec3::ONE,
+            }],
+            spheres: vec![Sphere {
+                center_world: DVec3::new(center_u, center_v, 0.0),
+                radius_world: radius,
+                material: Some(0),
+            }],
+        };
+        let view = View::of_camera(&scene.camera, side, side, DepthRange::new(8.0, 12.0));
+        let exact = render(&scene, &view).unwrap();
+        let fast = render_with(
+            &scene,
+            &view,
+            &Quality {
+                precision: Precision::F32,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let index = exact.index(x, y_up);
+        if exact.sphere[index] == NO_HIT {
+            outside += 1;
+        } else {
+            inside += 1;
+        }
+        assert!(
+            fast.sphere == exact.sphere,
+            "case {case}: f32 coverage differs"
+        );
+    }
+    assert!(
+        inside > 100 && outside > 100,
+        "{inside} inside, {outside} outside"
     );
 }

@@ -137,7 +137,10 @@ fn the_oracle_matches_the_exact_area_of_a_disc_in_a_pixel() {
     for row in 0..16u32 {
         for x in 0..16u32 {
             let y_up = 15 - row;
-            let (x0, y0) = ((f64::from(x) - 8.0) * pixel, (f64::from(y_up) - 8.0) * pixel);
+            let (x0, y0) = (
+                (f64::from(x) - 8.0) * pixel,
+                (f64::from(y_up) - 8.0) * pixel,
+            );
             let share = disc_area_in_square(0.137, -0.211, 1.3, x0, y0, pixel) / (pixel * pixel);
             let got = oracle.colour[(row * 16 + x) as usize].x;
             assert!(
@@ -147,7 +150,10 @@ fn the_oracle_matches_the_exact_area_of_a_disc_in_a_pixel() {
             edge_pixels += usize::from(share > 0.0 && share < 1.0);
         }
     }
-    assert!(edge_pixels > 20, "the disc's edge crosses pixels: {edge_pixels}");
+    assert!(
+        edge_pixels > 20,
+        "the disc's edge crosses pixels: {edge_pixels}"
+    );
 }
 
 #[test]

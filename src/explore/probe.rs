@@ -94,10 +94,12 @@ mod tests {
     use crate::scene::parse_scene;
 
     #[test]
-    fn probe_reports_the_sphere_and_a_point_on_it() {
+    fn probe_reports_what_the_straightforward_loop_sees() {
         let scene = parse_scene(include_str!("../../scenes/scene1_02.txt")).unwrap();
         let view = View::of_camera(&scene.camera, 200, 200, DepthRange::new(8.0, 12.0));
         let frame = render(&scene, &view).unwrap();
+        // The oracle: one world-space ray per pixel through the careful ray–sphere routine.
+        let oracle = crate::oracle::ray_loop::render_reference(&scene, &view).unwrap();
         let mut hits = 0;
         for (x, y) in [
             (100, 100),
@@ -106,25 +108,32 @@ mod tests {
             (0, 0),
             (199, 199),
             (20, 180),
+            (137, 61),
         ] {
             let probe = probe(&scene, &view, &frame, x, y).unwrap();
-            let index = frame.index(x, y);
-            assert_eq!(
-                probe.hit.map(|h| h.sphere_index),
-                (frame.sphere[index] != NO_HIT).then_some(frame.sphere[index])
-            );
+            let index = oracle.index(x, y);
+            let expected = (oracle.sphere[index] != NO_HIT).then_some(oracle.sphere[index]);
+            assert_eq!(probe.hit.map(|h| h.sphere_index), expected, "({x}, {y})");
             if let Some(hit) = probe.hit {
                 hits += 1;
+                assert!(
+                    (hit.t - oracle.t[index]).abs() <= 1e-12 * oracle.t[index].abs(),
+                    "({x}, {y}): t {} against the loop's {}",
+                    hit.t,
+                    oracle.t[index]
+                );
                 let sphere = &scene.spheres[hit.sphere_index as usize];
                 let distance = (hit.point_world - sphere.center_world).length();
                 assert!(
                     (distance - sphere.radius_world).abs() < 1e-9,
                     "on the sphere"
                 );
-                assert_eq!(hit.t, frame.t[index]);
                 assert_eq!(hit.material_index, sphere.material);
-                let colour = scene.sphere_colour(sphere);
-                assert_eq!(hit.diffuse_colour, colour);
+                let material = sphere.material.map(|m| scene.materials[m as usize]);
+                assert_eq!(
+                    hit.diffuse_colour,
+                    material.map_or(crate::scene::DEFAULT_DIFFUSE, |m| m.diffuse_colour)
+                );
             }
         }
         assert!(hits >= 3);
