@@ -53,49 +53,115 @@ fn hostile_value(rng: &mut SplitMix64) -> f64 {
     }
 }
 
+type Harness = egui_kittest::Harness<'static, raytracer::app::ViewerApp>;
+
+/// The viewer is consistent after hostile input: once the worker is done, either the view is
+/// renderable and the frame on screen is exactly its render, or it is not and the status bar
+/// says why (and a frame from before stays on screen).
+fn assert_consistent(harness: &mut Harness, step: usize) {
+    let deadline = Instant::now() + Duration::from_secs(60);
+    loop {
+        harness.state().wait_for_worker(Duration::from_millis(20));
+        harness.step();
+        let app = harness.state();
+        let renderable = app.view().validate().is_ok();
+        if renderable && app.frame_is_current() {
+            let (frame, view) = app.shown_frame().unwrap();
+            let expected = raytracer::render::render(&app.loaded_scene().scene, view).unwrap();
+            assert!(
+                *frame == expected,
+                "step {step}: the frame is not the view's render"
+            );
+            return;
+        }
+        if !renderable && app.wait_for_worker(Duration::ZERO) {
+            let (message, is_error) = app.message().expect("a message says why");
+            assert!(
+                is_error && message.starts_with("view: "),
+                "step {step}: {message}"
+            );
+            assert!(
+                app.shown_frame().is_some(),
+                "step {step}: a frame stays on screen"
+            );
+            return;
+        }
+        assert!(
+            Instant::now() < deadline,
+            "step {step}: the viewer does not settle"
+        );
+    }
+}
+
 #[test]
 fn thousands_of_hostile_inputs_never_panic() {
     let mut harness = common::viewer(Some(common::scene_path("scene1_02.txt")));
     harness.get_by_label("Direction and up").click();
     harness.step();
     let mut rng = SplitMix64::new(0xAB05E);
-    for _ in 0..2_000 {
+    let sizes = [
+        (0.0, 0.0),
+        (1.0, 1.0),
+        (5.0, 3.0),
+        (320.0, 200.0),
+        (1000.0, 700.0),
+    ];
+    let mut size = (1000.0, 700.0);
+    // What was done: resizes, typed values, resets, slider values.
+    let mut done = [0usize; 4];
+    for step in 0..2_000 {
+        // In a window this large every control is reachable; below it some may not be.
+        let roomy = size.0 >= 1000.0;
         match rng.next_u64() % 10 {
             0 => {
-                let sizes = [
-                    (0.0, 0.0),
-                    (1.0, 1.0),
-                    (5.0, 3.0),
-                    (320.0, 200.0),
-                    (1000.0, 700.0),
-                ];
-                let (w, h) = sizes[(rng.next_u64() % sizes.len() as u64) as usize];
-                harness.set_size(egui::vec2(w, h));
+                size = sizes[(rng.next_u64() % sizes.len() as u64) as usize];
+                harness.set_size(egui::vec2(size.0, size.1));
+                done[0] += 1;
             }
             1 | 2 => {
                 // Type a non-number into one of the value fields, then press Enter.
                 let fields: Vec<_> = harness.query_all_by_role(Role::SpinButton).collect();
-                if !fields.is_empty() {
+                if fields.is_empty() {
+                    assert!(!roomy, "step {step}: no value field in a {size:?} window");
+                } else {
                     let field = &fields[(rng.next_u64() % fields.len() as u64) as usize];
                     field.click();
                     field.type_text(TYPED[(rng.next_u64() % TYPED.len() as u64) as usize]);
                     harness.key_press(egui::Key::Enter);
+                    done[1] += 1;
                 }
             }
-            3 => {
-                if let Some(button) = harness.query_by_role_and_label(Role::Button, "Reset view") {
+            3 => match harness.query_by_role_and_label(Role::Button, "Reset view") {
+                Some(button) => {
                     button.click();
+                    done[2] += 1;
                 }
-            }
+                None => assert!(!roomy, "step {step}: no Reset view in a {size:?} window"),
+            },
             _ => {
                 let label = SLIDERS[(rng.next_u64() % SLIDERS.len() as u64) as usize];
-                if let Some(slider) = harness.query_by_role_and_label(Role::Slider, label) {
-                    slider.set_value_accesskit(hostile_value(&mut rng));
+                match harness.query_by_role_and_label(Role::Slider, label) {
+                    Some(slider) => {
+                        slider.set_value_accesskit(hostile_value(&mut rng));
+                        done[3] += 1;
+                    }
+                    None => assert!(
+                        !roomy,
+                        "step {step}: no slider '{label}' in a {size:?} window"
+                    ),
                 }
             }
         }
         harness.step();
+        if step % 100 == 99 {
+            assert_consistent(&mut harness, step);
+        }
     }
+    // Every kind of abuse happened many times (the widgets were found, not skipped).
+    assert!(
+        done[0] > 100 && done[1] > 200 && done[2] > 80 && done[3] > 600,
+        "{done:?}"
+    );
 
     // Back to a sane window and the file's camera: the viewer renders again.
     harness.set_size(egui::vec2(1000.0, 700.0));
@@ -103,18 +169,7 @@ fn thousands_of_hostile_inputs_never_panic() {
     harness
         .get_by_role_and_label(Role::Button, "Reset view")
         .click();
-    let deadline = Instant::now() + Duration::from_secs(60);
-    loop {
-        harness.step();
-        if harness.state().frame_is_current() {
-            break;
-        }
-        assert!(Instant::now() < deadline, "the viewer no longer renders");
-        harness.state().wait_for_worker(Duration::from_millis(20));
-    }
-    let app = harness.state();
-    let (frame, view) = app.shown_frame().unwrap();
-    assert_eq!(view, app.view());
-    assert!(*frame == raytracer::render::render(&app.loaded_scene().scene, view).unwrap());
+    assert_consistent(&mut harness, 2_000);
+    assert!(harness.state().view().validate().is_ok());
     let _ = harness.root().accesskit_node();
 }
