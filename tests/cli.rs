@@ -289,3 +289,97 @@ fn a_raw_depth_file_of_unknown_format_is_a_usage_error() {
     );
     assert!(files_in(folder.path()).is_empty());
 }
+
+#[test]
+fn precision_auto_through_the_binary_gives_the_exact_images_and_says_what_it_chose() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_02.txt");
+    let mut images = Vec::new();
+    for precision in ["f64", "auto"] {
+        let colour = format!("c_{precision}.tga");
+        let depth = format!("d_{precision}.tga");
+        let output = run(
+            folder.path(),
+            &[
+                "-input",
+                scene.to_str().unwrap(),
+                "-output",
+                &colour,
+                "-depth",
+                "8",
+                "12",
+                &depth,
+                "-precision",
+                precision,
+                "-stats",
+            ],
+        );
+        assert!(output.status.success(), "{}", stderr(&output));
+        let stats = String::from_utf8(output.stdout).unwrap();
+        let chosen = stats
+            .lines()
+            .find_map(|line| line.strip_prefix("precision: "))
+            .unwrap_or_else(|| panic!("no precision line in {stats}"));
+        match precision {
+            "f64" => assert_eq!(chosen, "f64"),
+            _ => assert!(chosen == "f32" || chosen == "f64", "{chosen}"),
+        }
+        images.push((
+            std::fs::read(folder.path().join(colour)).unwrap(),
+            std::fs::read(folder.path().join(depth)).unwrap(),
+        ));
+    }
+    assert!(images[0] == images[1], "auto gives the exact images");
+}
+
+#[test]
+fn images_over_64_megapixels_are_refused() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_01.txt");
+    for size in [["8192", "8193"], ["16385", "1"], ["16384", "4097"]] {
+        let output = run(
+            folder.path(),
+            &[
+                "-input",
+                scene.to_str().unwrap(),
+                "-size",
+                size[0],
+                size[1],
+                "-output",
+                "c.png",
+            ],
+        );
+        assert_eq!(output.status.code(), Some(2), "{size:?}");
+        let text = stderr(&output);
+        assert!(
+            text.contains("out of range") && text.contains("67108864"),
+            "{size:?}: {text}"
+        );
+    }
+    assert!(files_in(folder.path()).is_empty());
+}
+
+#[test]
+fn no_progress_bar_when_stderr_is_not_a_terminal() {
+    // A load that takes a second (a named pipe fed slowly): on a terminal it would show a
+    // progress bar after half a second; into a pipe, stderr stays empty.
+    let folder = tempfile::tempdir().unwrap();
+    let pipe = folder.path().join("slow.txt");
+    assert!(Command::new("mkfifo").arg(&pipe).status().unwrap().success());
+    let text = std::fs::read(scene_path("scene1_02.txt")).unwrap();
+    let writer = {
+        let pipe = pipe.clone();
+        std::thread::spawn(move || {
+            use std::io::Write as _;
+            let mut file = std::fs::OpenOptions::new().write(true).open(pipe).unwrap();
+            file.write_all(&text[..40]).unwrap();
+            file.flush().unwrap();
+            std::thread::sleep(std::time::Duration::from_millis(1200));
+            file.write_all(&text[40..]).unwrap();
+        })
+    };
+    let output = run(folder.path(), &["-input", "slow.txt", "-output", "c.png"]);
+    writer.join().unwrap();
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(stderr(&output), "", "nothing on stderr");
+}

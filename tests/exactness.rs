@@ -689,3 +689,72 @@ fn f32_coverage_equals_f64_coverage_at_the_silhouette() {
         "{inside} inside, {outside} outside"
     );
 }
+
+#[test]
+fn the_double_double_reference_is_exact_on_integer_geometry() {
+    // Integer coordinates, an axis-aligned camera and unit pixels: every quantity is a
+    // half-integer, so exact integer arithmetic (i128) gives the true hit and t. The discs are huge
+    // (radius 2^20..2^31) with their edge across the 16-pixel image: r² and d² need up to 64 bits
+    // and differ in the last ones, where f64 (53 bits) has nothing left; the reference must still
+    // decide every pixel and give t to within two units in the last place.
+    let mut rng = SplitMix64::new(0x5EED_00DD);
+    let side = 16i64;
+    let (mut hits, mut misses) = (0, 0);
+    for case in 0..300 {
+        let integer = |rng: &mut SplitMix64, low: f64, high: f64| rng.uniform(low, high).round();
+        let camera = DVec3::new(
+            integer(&mut rng, -1e12, 1e12),
+            integer(&mut rng, -1e12, 1e12),
+            integer(&mut rng, -1e12, 1e12),
+        );
+        let radius = rng.uniform(2f64.powi(20), 2f64.powi(31)).round();
+        // The disc's centre (u0, v0) from the camera centre: its left edge crosses the image.
+        let u0 = -radius + integer(&mut rng, -8.0, 8.0);
+        let v0 = integer(&mut rng, -8.0, 8.0);
+        let w = integer(&mut rng, -1e9, 1e9);
+        let scene = Scene {
+            camera: OrthographicCamera {
+                center_world: camera,
+                direction_world: DVec3::NEG_Z,
+                up_world: DVec3::Y,
+                size_world: side as f64,
+            },
+            background: Vec3::ZERO,
+            materials: Vec::new(),
+            spheres: vec![Sphere {
+                center_world: camera + DVec3::new(u0, v0, -w),
+                radius_world: radius,
+                material: None,
+            }],
+        };
+        let view = View::of_camera(&scene.camera, 16, 16, DepthRange::new(0.0, 1.0));
+        let reference = HighPrecision::new(&scene, &view).unwrap();
+        for y_up in 0..16i64 {
+            for x in 0..16i64 {
+                // Twice the pixel centre's offset from the disc's centre, exactly.
+                let a = i128::from(2 * x + 1 - side) - 2 * (u0 as i128);
+                let b = i128::from(2 * y_up + 1 - side) - 2 * (v0 as i128);
+                let four_r_sq = 4 * (radius as i128) * (radius as i128);
+                // 4·(r² − d²), exactly.
+                let n = four_r_sq - a * a - b * b;
+                let truth = reference.pixel(x as u32, y_up as u32);
+                if n < 0 {
+                    misses += 1;
+                    assert_eq!(truth.hit, None, "case {case} ({x}, {y_up}): a miss");
+                    continue;
+                }
+                hits += 1;
+                // t = w − √n / 2, with √n to 30 binary places.
+                let root = ((n as u128) << 60).isqrt();
+                let t = w - root as f64 / 2f64.powi(31);
+                let (_, got) = truth.hit.expect("a hit");
+                let ulp = f64::EPSILON * t.abs().max(1.0);
+                assert!(
+                    (got - t).abs() <= 2.0 * ulp,
+                    "case {case} ({x}, {y_up}): t {got} against {t}"
+                );
+            }
+        }
+    }
+    assert!(hits > 10_000 && misses > 10_000, "{hits} hits, {misses} misses");
+}

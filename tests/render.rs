@@ -300,18 +300,23 @@ fn tangent_pixel_hits_and_the_next_one_misses() {
 
 #[test]
 fn rendering_is_deterministic_across_thread_counts() {
-    let scene = random_scene(7, 200);
-    let view = view_of(&scene, 257, 129);
-    let with_threads = |threads| {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .unwrap()
-            .install(|| render(&scene, &view).unwrap())
-    };
-    let one = with_threads(1);
-    assert_eq!(one, with_threads(2));
-    assert_eq!(one, with_threads(5));
+    // 200 spheres; and 200,000, where the discs are binned in chunks whose size depends on the
+    // thread count (16,384 at least, a quarter of the discs per thread at most), so the bands'
+    // lists are put together from different chunks on 1, 2 and 5 threads.
+    for (count, size) in [(200, (257, 129)), (200_000, (160, 96))] {
+        let scene = raytracer::oracle::random_scene(7, count);
+        let view = view_of(&scene, size.0, size.1);
+        let with_threads = |threads| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap()
+                .install(|| render(&scene, &view).unwrap())
+        };
+        let one = with_threads(1);
+        assert!(one == with_threads(2), "{count} spheres: 1 and 2 threads differ");
+        assert!(one == with_threads(5), "{count} spheres: 1 and 5 threads differ");
+    }
 }
 
 #[test]

@@ -407,4 +407,46 @@ mod tests {
         assert_eq!(read.get_pixel(1, 1).0[0], quantize_u16(1.0 / 8.0));
         assert!(write_depth_png16(&frame(), range, &folder.path().join("d.tga")).is_err());
     }
+
+    #[test]
+    fn a_big_endian_pfm_from_another_program_reads_with_its_rows_flipped() {
+        // Written by hand as another program would: a positive scale means big-endian, and
+        // the rows run bottom to top.
+        let mut bytes = b"Pf\n2 2\n1.0\n".to_vec();
+        for value in [1.0f32, 2.0, 3.0, f32::INFINITY] {
+            bytes.extend_from_slice(&value.to_be_bytes());
+        }
+        let depth = decode_pfm(&bytes).unwrap();
+        assert_eq!((depth.width_px, depth.height_px), (2, 2));
+        assert_eq!(depth.t, [3.0, f32::INFINITY, 1.0, 2.0], "top row first");
+    }
+
+    #[test]
+    fn truncated_and_foreign_exr_files_are_errors_not_panics() {
+        let t = [1.5f32, -2.0, f32::INFINITY, 4.0, 5.0, 6.0];
+        let whole = encode_exr(3, 2, &t).unwrap();
+        assert_eq!(decode_exr(&whole).unwrap().t, t);
+        for length in [0, 4, 20, whole.len() / 2, whole.len() - 1] {
+            assert!(decode_exr(&whole[..length]).is_err(), "{length} bytes");
+        }
+        // Another program's EXR with two channels: an error that says so.
+        use exr::prelude::*;
+        let channels = vec![
+            AnyChannel::new("R", FlatSamples::F32(t.to_vec())),
+            AnyChannel::new("G", FlatSamples::F32(t.to_vec())),
+        ];
+        let layer = Layer::new(
+            (3, 2),
+            LayerAttributes::named("rgb"),
+            Encoding::UNCOMPRESSED,
+            AnyChannels::sort(SmallVec::from_vec(channels)),
+        );
+        let mut bytes = Vec::new();
+        Image::from_layer(layer)
+            .write()
+            .to_buffered(Cursor::new(&mut bytes))
+            .unwrap();
+        let error = decode_exr(&bytes).unwrap_err();
+        assert!(error.contains("one channel"), "{error}");
+    }
 }
