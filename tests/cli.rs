@@ -365,7 +365,13 @@ fn no_progress_bar_when_stderr_is_not_a_terminal() {
     // progress bar after half a second; into a pipe, stderr stays empty.
     let folder = tempfile::tempdir().unwrap();
     let pipe = folder.path().join("slow.txt");
-    assert!(Command::new("mkfifo").arg(&pipe).status().unwrap().success());
+    assert!(
+        Command::new("mkfifo")
+            .arg(&pipe)
+            .status()
+            .unwrap()
+            .success()
+    );
     let text = std::fs::read(scene_path("scene1_02.txt")).unwrap();
     let writer = {
         let pipe = pipe.clone();

@@ -756,5 +756,8 @@ fn the_double_double_reference_is_exact_on_integer_geometry() {
             }
         }
     }
-    assert!(hits > 10_000 && misses > 10_000, "{hits} hits, {misses} misses");
+    assert!(
+        hits > 10_000 && misses > 10_000,
+        "{hits} hits, {misses} misses"
+    );
 }

@@ -314,8 +314,14 @@ fn rendering_is_deterministic_across_thread_counts() {
                 .install(|| render(&scene, &view).unwrap())
         };
         let one = with_threads(1);
-        assert!(one == with_threads(2), "{count} spheres: 1 and 2 threads differ");
-        assert!(one == with_threads(5), "{count} spheres: 1 and 5 threads differ");
+        assert!(
+            one == with_threads(2),
+            "{count} spheres: 1 and 2 threads differ"
+        );
+        assert!(
+            one == with_threads(5),
+            "{count} spheres: 1 and 5 threads differ"
+        );
     }
 }
 

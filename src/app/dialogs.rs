@@ -47,20 +47,23 @@ impl PendingDialog {
     }
 }
 
-/// Why no native dialog can be shown here, or `None` if one probably can.
+/// What the window says where no native dialog can be shown.
+pub(crate) const NO_DIALOG: &str = "no file dialog is available (no desktop portal on a session bus, no zenity): \
+     type a path in the field instead";
+
+/// Why no native dialog can be shown here, or `None` if one probably can: rfd needs a desktop
+/// portal on the session bus, or zenity.
 pub(crate) fn dialog_unavailable_reason() -> Option<&'static str> {
     let has_session_bus = std::env::var_os("DBUS_SESSION_BUS_ADDRESS").is_some();
     let has_zenity = std::env::var_os("PATH").is_some_and(|paths| {
         std::env::split_paths(&paths).any(|folder| folder.join("zenity").is_file())
     });
-    if has_session_bus || has_zenity {
-        None
-    } else {
-        Some(
-            "no file dialog is available (no desktop portal on a session bus, no zenity): \
-             type a path in the field instead",
-        )
-    }
+    unavailable_reason(has_session_bus, has_zenity)
+}
+
+/// [`dialog_unavailable_reason`] from what the environment has.
+fn unavailable_reason(has_session_bus: bool, has_zenity: bool) -> Option<&'static str> {
+    (!has_session_bus && !has_zenity).then_some(NO_DIALOG)
 }
 
 /// Opens a native dialog on its own thread.
@@ -92,4 +95,16 @@ pub(crate) fn spawn_dialog(
         }
     })?;
     Ok(PendingDialog { kind, task })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_dialog_needs_a_session_bus_or_zenity() {
+        assert_eq!(unavailable_reason(false, false), Some(NO_DIALOG));
+        assert_eq!(unavailable_reason(true, false), None);
+        assert_eq!(unavailable_reason(false, true), None);
+    }
 }

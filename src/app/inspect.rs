@@ -92,6 +92,17 @@ impl ViewerApp {
         self.loading.is_some()
     }
 
+    /// How many scenes have been loaded (an open or a reload each count one).
+    pub fn scene_loads(&self) -> u64 {
+        self.scene_epoch
+    }
+
+    /// Behaves from now on as where no file dialog can be shown (no desktop portal, no zenity):
+    /// for tests and tools on machines that have one.
+    pub fn without_file_dialogs(&mut self) {
+        self.dialog_note = Some(super::dialogs::NO_DIALOG);
+    }
+
     /// Waits (for tests and tools) until the worker has nothing to do.
     pub fn wait_for_worker(&self, timeout: Duration) -> bool {
         self.worker.as_ref().is_none_or(|w| w.wait_idle(timeout))

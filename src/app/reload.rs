@@ -1,82 +1,81 @@
-//! Live reload: watches the open scene file through its folder (editors often save by writing a
-//! new file and renaming it over the old one) with notify's debouncer, which reports a path once
-//! it has been quiet for [`SETTLE_TIME`], so a save in several steps reloads once. Only changes
-//! count (created, modified, removed, renamed): reading the file — our own reload among others —
-//! raises access events, which must not reload it again. (notify's mini debouncer drops the
-//! event kinds, so it cannot tell a read from a write.)
+//! Live reload: watches the open scene file (through its folder, since editors often save by
+//! writing a new file and renaming it over the old one) and reports a change once the file has
+//! been quiet for [`SETTLE_TIME`], so a save in several steps reloads once.
 
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::time::Duration;
+use std::sync::{Arc, Mutex, PoisonError};
+use std::time::{Duration, Instant};
 
-use notify_debouncer_full::notify::{self, EventKind, RecommendedWatcher, RecursiveMode};
-use notify_debouncer_full::{DebounceEventResult, Debouncer, RecommendedCache, new_debouncer};
+use notify::{EventKind, RecursiveMode, Watcher};
 
 /// How long the file must be quiet before it is reloaded.
-pub(crate) const SETTLE_TIME: Duration = Duration::from_millis(150);
+pub const SETTLE_TIME: Duration = Duration::from_millis(150);
 
 /// Watches one file.
-pub(crate) struct FileWatcher {
-    _debouncer: Debouncer<RecommendedWatcher, RecommendedCache>,
-    changed: Arc<AtomicBool>,
+pub struct FileWatcher {
+    _watcher: notify::RecommendedWatcher,
+    last_change: Arc<Mutex<Option<Instant>>>,
 }
 
 /// What the watcher has seen.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum WatchState {
+pub enum WatchState {
     /// Nothing since the last reload.
     Quiet,
+    /// The file changed and is still settling; ask again after this long.
+    Settling(Duration),
     /// The file changed and has settled: reload it.
     Changed,
 }
 
 impl FileWatcher {
-    /// Starts watching `path`; `on_change` runs (on the watcher's thread) once a change has
-    /// settled, e.g. to request a repaint.
-    pub(crate) fn watch(
-        path: &Path,
-        on_change: impl Fn() + Send + 'static,
-    ) -> notify::Result<Self> {
+    /// Starts watching `path`; `on_event` runs (on the watcher's thread) for every change, e.g. to
+    /// request a repaint.
+    pub fn watch(path: &Path, on_event: impl Fn() + Send + 'static) -> notify::Result<Self> {
         let target: PathBuf = std::fs::canonicalize(path)?;
         let folder = target
             .parent()
             .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
         let name = target.file_name().map(ToOwned::to_owned);
-        let changed = Arc::new(AtomicBool::new(false));
-        let seen = Arc::clone(&changed);
-        let mut debouncer =
-            new_debouncer(SETTLE_TIME, None, move |events: DebounceEventResult| {
-                let Ok(events) = events else { return };
-                let ours = events.iter().any(|event| {
-                    let change = matches!(
-                        event.kind,
-                        EventKind::Create(_) | EventKind::Modify(_) | EventKind::Remove(_)
-                    );
-                    change
-                        && event
-                            .paths
-                            .iter()
-                            .any(|path| path.file_name().map(ToOwned::to_owned) == name)
-                });
-                if ours {
-                    seen.store(true, Ordering::Release);
-                    on_change();
+        let last_change = Arc::new(Mutex::new(None));
+        let seen = Arc::clone(&last_change);
+        let mut watcher =
+            notify::recommended_watcher(move |event: notify::Result<notify::Event>| {
+                let Ok(event) = event else { return };
+                // Changes only: reading the file (as the viewer's own reload does) raises access
+                // events, which must not reload it again.
+                let relevant = matches!(
+                    event.kind,
+                    EventKind::Create(_) | EventKind::Modify(_) | EventKind::Remove(_)
+                ) && event
+                    .paths
+                    .iter()
+                    .any(|p| p.file_name().map(ToOwned::to_owned) == name);
+                if relevant {
+                    *seen.lock().unwrap_or_else(PoisonError::into_inner) = Some(Instant::now());
+                    on_event();
                 }
             })?;
-        debouncer.watch(&folder, RecursiveMode::NonRecursive)?;
+        watcher.watch(&folder, RecursiveMode::NonRecursive)?;
         Ok(Self {
-            _debouncer: debouncer,
-            changed,
+            _watcher: watcher,
+            last_change,
         })
     }
 
     /// Whether the file changed; a `Changed` answer is given once per change.
-    pub(crate) fn poll(&self) -> WatchState {
-        if self.changed.swap(false, Ordering::Acquire) {
-            WatchState::Changed
-        } else {
-            WatchState::Quiet
+    pub fn poll(&self) -> WatchState {
+        let mut last = self
+            .last_change
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner);
+        match *last {
+            None => WatchState::Quiet,
+            Some(at) if at.elapsed() >= SETTLE_TIME => {
+                *last = None;
+                WatchState::Changed
+            }
+            Some(at) => WatchState::Settling(SETTLE_TIME.saturating_sub(at.elapsed())),
         }
     }
 }

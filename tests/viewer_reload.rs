@@ -1,0 +1,123 @@
+//! Live reload and the file dialogs' fallback, driven through the real viewer (egui_kittest):
+//! an editor's save in several quick writes reloads once, a save that renames a new file over the
+//! scene reloads it, reading the file (as the viewer itself does) reloads nothing, and where no
+//! file dialog can be shown the window says so and the typed paths do the job.
+#![cfg(feature = "gui")]
+
+mod common;
+
+use std::time::{Duration, Instant};
+
+use common::{click, scene_path, settle, viewer};
+use egui_kittest::kittest::Queryable;
+
+type Harness = egui_kittest::Harness<'static, raytracer::app::ViewerApp>;
+
+/// Steps the viewer for `duration`, settling at the end.
+fn run_for(harness: &mut Harness, duration: Duration) {
+    let until = Instant::now() + duration;
+    while Instant::now() < until {
+        harness.step();
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    settle(harness);
+}
+
+/// Steps until `condition` holds (at most 20 s).
+fn wait_until(harness: &mut Harness, condition: impl Fn(&raytracer::app::ViewerApp) -> bool) {
+    let deadline = Instant::now() + Duration::from_secs(20);
+    while !condition(harness.state()) {
+        assert!(Instant::now() < deadline, "the condition was not reached");
+        harness.step();
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    settle(harness);
+}
+
+#[test]
+fn a_burst_of_writes_reloads_once() {
+    let folder = tempfile::tempdir().unwrap();
+    let file = folder.path().join("scene.txt");
+    std::fs::copy(scene_path("scene1_02.txt"), &file).unwrap();
+    let mut harness = viewer(Some(file.clone()));
+    let loads = harness.state().scene_loads();
+    // Five writes 20 ms apart (an editor writing in pieces), the last one the whole new scene.
+    let text = std::fs::read(scene_path("scene1_01.txt")).unwrap();
+    for piece in 1..=5 {
+        std::fs::write(&file, &text[..text.len() * piece / 5]).unwrap();
+        harness.step();
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    wait_until(&mut harness, |app| app.scene_loads() > loads);
+    run_for(&mut harness, Duration::from_millis(800));
+    assert_eq!(harness.state().scene_loads(), loads + 1, "one reload");
+    assert_eq!(harness.state().loaded_scene().scene.spheres.len(), 1);
+    assert!(harness.state().scene_error().is_none());
+}
+
+#[test]
+fn a_save_that_renames_a_new_file_over_the_scene_reloads_it() {
+    let folder = tempfile::tempdir().unwrap();
+    let file = folder.path().join("scene.txt");
+    std::fs::copy(scene_path("scene1_02.txt"), &file).unwrap();
+    let mut harness = viewer(Some(file.clone()));
+    let loads = harness.state().scene_loads();
+    let new = folder.path().join(".scene.txt.swp");
+    std::fs::copy(scene_path("scene1_01.txt"), &new).unwrap();
+    std::fs::rename(&new, &file).unwrap();
+    wait_until(&mut harness, |app| app.scene_loads() > loads);
+    assert_eq!(harness.state().loaded_scene().scene.spheres.len(), 1);
+}
+
+#[test]
+fn reading_the_scene_file_reloads_nothing() {
+    let folder = tempfile::tempdir().unwrap();
+    let file = folder.path().join("scene.txt");
+    std::fs::copy(scene_path("scene1_02.txt"), &file).unwrap();
+    let mut harness = viewer(Some(file.clone()));
+    let loads = harness.state().scene_loads();
+    for _ in 0..5 {
+        let _ = std::fs::read(&file).unwrap();
+        harness.step();
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    run_for(&mut harness, Duration::from_millis(800));
+    assert_eq!(
+        harness.state().scene_loads(),
+        loads,
+        "reads are not changes"
+    );
+    // A change to another file in the folder reloads nothing either.
+    std::fs::write(folder.path().join("notes.txt"), b"x").unwrap();
+    run_for(&mut harness, Duration::from_millis(800));
+    assert_eq!(harness.state().scene_loads(), loads);
+}
+
+#[test]
+fn without_file_dialogs_the_window_says_so_and_typed_paths_work() {
+    let folder = tempfile::tempdir().unwrap();
+    let mut harness = viewer(Some(scene_path("scene1_02.txt")));
+    harness.state_mut().without_file_dialogs();
+    harness.run_steps(2);
+    // The export section says so under its path field.
+    assert!(
+        harness
+            .query_by_label_contains("no file dialog is available")
+            .is_some()
+    );
+    for button in ["Open…", "Export…", "Save view as scene…"] {
+        click(&mut harness, button);
+        settle(&mut harness);
+        let (message, is_error) = harness.state().message().unwrap();
+        assert!(
+            is_error && message.contains("no file dialog"),
+            "{button}: {message}"
+        );
+    }
+    // The typed paths do the job.
+    harness.state_mut().settings_mut().export.path =
+        folder.path().join("typed.png").display().to_string();
+    click(&mut harness, "Export to path");
+    settle(&mut harness);
+    assert!(folder.path().join("typed_colour.png").exists());
+}
