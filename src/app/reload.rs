@@ -9,17 +9,17 @@ use std::time::{Duration, Instant};
 use notify::{EventKind, RecursiveMode, Watcher};
 
 /// How long the file must be quiet before it is reloaded.
-pub const SETTLE_TIME: Duration = Duration::from_millis(150);
+pub(crate) const SETTLE_TIME: Duration = Duration::from_millis(150);
 
 /// Watches one file.
-pub struct FileWatcher {
+pub(crate) struct FileWatcher {
     _watcher: notify::RecommendedWatcher,
     last_change: Arc<Mutex<Option<Instant>>>,
 }
 
 /// What the watcher has seen.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum WatchState {
+pub(crate) enum WatchState {
     /// Nothing since the last reload.
     Quiet,
     /// The file changed and is still settling; ask again after this long.
@@ -31,7 +31,7 @@ pub enum WatchState {
 impl FileWatcher {
     /// Starts watching `path`; `on_event` runs (on the watcher's thread) for every change, e.g. to
     /// request a repaint.
-    pub fn watch(path: &Path, on_event: impl Fn() + Send + 'static) -> notify::Result<Self> {
+    pub(crate) fn watch(path: &Path, on_event: impl Fn() + Send + 'static) -> notify::Result<Self> {
         let target: PathBuf = std::fs::canonicalize(path)?;
         let folder = target
             .parent()
@@ -64,7 +64,7 @@ impl FileWatcher {
     }
 
     /// Whether the file changed; a `Changed` answer is given once per change.
-    pub fn poll(&self) -> WatchState {
+    pub(crate) fn poll(&self) -> WatchState {
         let mut last = self
             .last_change
             .lock()
