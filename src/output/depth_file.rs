@@ -423,6 +423,7 @@ mod tests {
 
     #[test]
     fn truncated_and_foreign_exr_files_are_errors_not_panics() {
+        use exr::prelude::*;
         let t = [1.5f32, -2.0, f32::INFINITY, 4.0, 5.0, 6.0];
         let whole = encode_exr(3, 2, &t).unwrap();
         assert_eq!(decode_exr(&whole).unwrap().t, t);
@@ -430,7 +431,6 @@ mod tests {
             assert!(decode_exr(&whole[..length]).is_err(), "{length} bytes");
         }
         // Another program's EXR with two channels: an error that says so.
-        use exr::prelude::*;
         let channels = vec![
             AnyChannel::new("R", FlatSamples::F32(t.to_vec())),
             AnyChannel::new("G", FlatSamples::F32(t.to_vec())),
