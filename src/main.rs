@@ -47,7 +47,10 @@ fn main() -> ExitCode {
                 }
             }
         }
-        Command::View(request) => open_viewer(request),
+        Command::View(mut request) => {
+            request.program = std::env::current_exe().ok();
+            open_viewer(request)
+        }
     }
 }
 

@@ -171,3 +171,53 @@ fn exported_files_follow_the_umask_and_replaced_ones_keep_their_mode() {
     press(&mut harness, "Replace");
     assert_eq!(mode(&colour), 0o640);
 }
+
+#[test]
+fn the_exported_command_script_renders_the_same_files_from_anywhere() {
+    // The viewer as the binary starts it: it knows its own path, which the script runs.
+    let folder = tempfile::tempdir().unwrap();
+    let mut harness = egui_kittest::Harness::builder()
+        .with_size(egui::vec2(1000.0, 700.0))
+        .build_eframe(|cc| {
+            raytracer::app::ViewerApp::new(
+                cc,
+                raytracer::cli::ViewerRequest {
+                    input: Some(scene_path("scene1_04.txt")),
+                    program: Some(env!("CARGO_BIN_EXE_raytracer").into()),
+                    ..Default::default()
+                },
+            )
+        });
+    settle(&mut harness);
+    harness.state_mut().view_mut().center_world.y += 0.3;
+    settle(&mut harness);
+    harness.state_mut().settings_mut().export.path =
+        folder.path().join("shot.tga").display().to_string();
+    press(&mut harness, "Export to path");
+    let names = ["shot_colour.tga", "shot_depth.tga"];
+    let exported: Vec<Vec<u8>> = names
+        .iter()
+        .map(|name| std::fs::read(folder.path().join(name)).unwrap())
+        .collect();
+    for name in names {
+        std::fs::remove_file(folder.path().join(name)).unwrap();
+    }
+    // Run from another folder, with no raytracer on PATH.
+    let elsewhere = tempfile::tempdir().unwrap();
+    let output = std::process::Command::new("sh")
+        .arg(folder.path().join("shot_command.sh"))
+        .current_dir(elsewhere.path())
+        .env("PATH", "/usr/bin:/bin")
+        .output()
+        .unwrap();
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    for (name, bytes) in names.iter().zip(&exported) {
+        let again = std::fs::read(folder.path().join(name)).unwrap();
+        assert!(&again == bytes, "{name} is made again byte for byte");
+    }
+    assert_eq!(std::fs::read_dir(elsewhere.path()).unwrap().count(), 0);
+}

@@ -110,6 +110,7 @@ impl ViewerApp {
             side_by_side: export.side_by_side,
             colour_map: self.settings.depth.colour_map,
             extra_depth: export.extra_depth,
+            program: self.program.clone(),
         };
         Some((plan, view))
     }

@@ -86,6 +86,8 @@ pub struct ViewerApp {
     watcher: Option<reload::FileWatcher>,
     loading: Option<PendingLoad>,
     probe: ProbePoints,
+    /// The `raytracer` binary export scripts run.
+    program: Option<PathBuf>,
     /// "Save view as scene" is writing over the open scene (its reload keeps the save's message).
     saving_open_scene: bool,
     /// A write that waits for the user to agree to replace files.
@@ -137,6 +139,7 @@ impl ViewerApp {
             probe: ProbePoints::default(),
             pending_replace: None,
             saving_open_scene: false,
+            program: request.program.clone(),
             ctx: cc.egui_ctx.clone(),
         };
         let ctx = cc.egui_ctx.clone();

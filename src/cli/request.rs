@@ -75,6 +75,9 @@ pub struct ViewerRequest {
     pub size_px: Option<(u32, u32)>,
     /// `-precision`, if given: the viewer's precision mode.
     pub precision: Option<Precision>,
+    /// The `raytracer` binary itself (absolute), which export scripts run; set by the binary,
+    /// not by a flag.
+    pub program: Option<PathBuf>,
 }
 
 /// What the command line asks for.
@@ -151,6 +154,7 @@ impl RawArgs {
                 input,
                 size_px,
                 precision,
+                program: None,
             }));
         }
         let input = input.ok_or(UsageError::MissingInput)?;

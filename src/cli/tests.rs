@@ -84,6 +84,7 @@ fn without_outputs_the_viewer_opens() {
             input: Some("a.txt".into()),
             size_px: Some((640, 480)),
             precision: None,
+            program: None,
         })
     );
     assert_eq!(parse("-help").unwrap(), Command::Help);

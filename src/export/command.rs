@@ -64,11 +64,22 @@ pub(crate) fn shell_quote(word: &str) -> String {
 }
 
 /// The `name_command.sh` text for `arguments`.
-pub(crate) fn command_script(arguments: &[String]) -> String {
+///
+/// It runs `program` (the binary that exported, by its absolute path) where that still exists,
+/// else the `raytracer` on PATH; it `cd`s to its own folder first, so it runs from anywhere.
+pub(crate) fn command_script(arguments: &[String], program: Option<&Path>) -> String {
     let words: Vec<String> = arguments.iter().map(|a| shell_quote(a)).collect();
+    let program = program.map_or_else(
+        || "raytracer".to_owned(),
+        |path| shell_quote(&path.display().to_string()),
+    );
     format!(
         "#!/bin/sh\n# Renders this export's colour and depth images again from its scene file.\n\
-         cd \"$(dirname \"$0\")\" || exit 1\nexec raytracer {}\n",
+         cd \"$(dirname \"$0\")\" || exit 1\n\
+         # The raytracer that exported; where it is gone, the one on PATH.\n\
+         raytracer={program}\n\
+         [ -x \"$raytracer\" ] || raytracer=raytracer\n\
+         exec \"$raytracer\" {}\n",
         words.join(" ")
     )
 }

@@ -103,6 +103,8 @@ pub(crate) struct ExportPlan {
     pub(crate) colour_map: DepthColourMap,
     /// Lossless or 16-bit depth, if any.
     pub(crate) extra_depth: ExtraDepth,
+    /// The `raytracer` binary the command script runs (absolute path), if known.
+    pub(crate) program: Option<PathBuf>,
 }
 
 /// Every file of one export.
@@ -217,7 +219,7 @@ pub(crate) fn write_export(
     let scene_text = scene_to_text(&scene_with_view(scene, view));
     set.stage_bytes(&files.scene, scene_text.as_bytes())?;
     let arguments = command_arguments(plan, &files, view, quality);
-    let script = command_script(&arguments);
+    let script = command_script(&arguments, plan.program.as_deref());
     set.stage_executable(&files.command, |out| {
         out.write_all(script.as_bytes())
             .map_err(|source| WriteError::Io {
@@ -281,6 +283,7 @@ mod tests {
             side_by_side: true,
             colour_map: DepthColourMap::Turbo,
             extra_depth: ExtraDepth::Raw(RawDepthFormat::Exr),
+            program: Some(PathBuf::from("/opt/it's/raytracer")),
         };
         let files = ExportFiles::of(&plan);
         assert_eq!(files.scene, Path::new("shots/my view_scene.txt"));
@@ -316,7 +319,11 @@ mod tests {
         ] {
             assert!(line.contains(part), "{part} in {line}");
         }
-        let script = command_script(&arguments);
+        let script = command_script(&arguments, plan.program.as_deref());
+        assert!(
+            script.contains(r"raytracer='/opt/it'\''s/raytracer'"),
+            "{script}"
+        );
         assert!(script.contains("'my view_scene.txt'"), "{script}");
         // The arguments are a valid command line.
         assert!(crate::cli::parse_command(arguments).is_ok());
@@ -345,6 +352,7 @@ mod tests {
                 side_by_side: true,
                 colour_map,
                 extra_depth,
+                program: None,
             };
             let written = write_export(&scene, &view, &quality, &frame, &plan).unwrap();
             assert_eq!(written.len(), 6, "{written:?}");
