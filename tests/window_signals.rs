@@ -1,6 +1,6 @@
 //! The real viewer window under Xvfb, stopped by a termination signal: it closes the way Ctrl+Q
 //! or the close button does, saving its settings (here, the scene it had open), and ends with
-//! 128 + the signal's number.
+//! 128 + the signal's number; started again without a file, it reopens that scene.
 #![cfg(feature = "gui")]
 
 mod common;
@@ -31,13 +31,15 @@ fn texts_under(folder: &Path) -> Vec<String> {
 fn sigterm_saves_the_settings_before_the_viewer_ends() {
     let (_xvfb, display) = start_xvfb();
     let home = tempfile::tempdir().unwrap();
-    // A scene under a name no setting holds yet.
+    // A scene under a name no setting holds yet, with a colour no other scene has: an orange
+    // background.
     let scene: PathBuf = home.path().join("signalled-scene.txt");
-    std::fs::copy(
+    let text = std::fs::read_to_string(
         Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_02.txt"),
-        &scene,
     )
     .unwrap();
+    let background = text.lines().find(|l| l.contains("Background")).unwrap();
+    std::fs::write(&scene, text.replace(background, "Background { color 1 0.5 0 }")).unwrap();
     let child = viewer_command(&display, home.path())
         .arg("-input")
         .arg(&scene)
@@ -94,4 +96,29 @@ fn sigterm_saves_the_settings_before_the_viewer_ends() {
             .any(|t| t.contains(&name)),
         "the settings name the open scene"
     );
+    drop(viewer);
+
+    // Started again without a file, it reopens that scene.
+    let mut again = KillOnDrop(viewer_command(&display, home.path()).spawn().unwrap());
+    wait_for_orange(&mut again, &display, &shot);
+}
+
+/// Waits until the window shows the orange background of the test's scene (so it has opened
+/// it).
+fn wait_for_orange(viewer: &mut KillOnDrop, display: &str, shot: &Path) {
+    let deadline = Instant::now() + Duration::from_secs(90);
+    loop {
+        assert!(viewer.0.try_wait().unwrap().is_none(), "the viewer ended early");
+        let orange = screenshot(display, shot).map_or(0, |image| {
+            image
+                .pixels()
+                .filter(|p| p[0] == 255 && p[1] == 127 && p[2] == 0)
+                .count()
+        });
+        if orange > 2000 {
+            return;
+        }
+        assert!(Instant::now() < deadline, "no orange frame on screen after 90 s");
+        std::thread::sleep(Duration::from_millis(300));
+    }
 }
