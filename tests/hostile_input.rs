@@ -1,7 +1,8 @@
-//! Hostile input in the normal test suite (the fuzz target in `fuzz/` goes further): arbitrary
-//! bytes and mutated course scenes go through the parser and, when they parse, the renderer in
-//! every precision mode. Nothing may panic, and every case must finish in bounded time.
-//! Seeded, so every run tests the same cases.
+//! Hostile input in the normal test suite (the fuzz targets in `fuzz/` go further): arbitrary
+//! bytes and word salad (property tests with proptest: shrunk and persisted when they fail) and
+//! seeded mutations of the course scenes go through the parser and, when they parse, the renderer
+//! in every precision mode. Nothing may panic, every error is one line with a position, and no
+//! case hangs.
 
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -9,10 +10,11 @@ use std::time::{Duration, Instant};
 use raytracer::render::depth_map::DepthRange;
 use raytracer::render::rng::SplitMix64;
 use raytracer::render::{Precision, Quality, View, render_with};
+use proptest::prelude::*;
 use raytracer::scene::parse_scene_bytes;
 
-/// Longest time one case may take (parse + three small renders), generous for debug builds.
-const CASE_LIMIT: Duration = Duration::from_secs(2);
+/// A hang guard, not a speed claim: no case (parse + three small renders) may take this long.
+const CASE_LIMIT: Duration = Duration::from_secs(30);
 
 fn course_scenes() -> Vec<String> {
     (1..=7)
@@ -105,22 +107,31 @@ const WORDS: &[&str] = &[
     "Transform",
 ];
 
-#[test]
-fn arbitrary_bytes_never_panic() {
-    let mut rng = SplitMix64::new(0xBAD_B17E5);
-    for _ in 0..3_000 {
-        let length = (rng.next_u64() % 400) as usize;
-        let bytes: Vec<u8> = if rng.unit() < 0.5 {
-            (0..length).map(|_| rng.next_u64() as u8).collect()
-        } else {
-            // Word salad: the grammar's own words in random order.
+/// The grammar's own words in random order, on lines of random length.
+fn word_salad() -> impl Strategy<Value = Vec<u8>> {
+    prop::collection::vec((prop::sample::select(WORDS), prop::bool::weighted(0.8)), 0..100)
+        .prop_map(|words| {
             let mut text = String::new();
-            for _ in 0..length / 4 {
-                text.push_str(WORDS[(rng.next_u64() % WORDS.len() as u64) as usize]);
-                text.push(if rng.unit() < 0.8 { ' ' } else { '\n' });
+            for (word, space) in words {
+                text.push_str(word);
+                text.push(if space { ' ' } else { '\n' });
             }
             text.into_bytes()
-        };
+        })
+}
+
+proptest! {
+    // Failing cases are shrunk and kept in proptest-regressions/ (committed), so they are tried
+    // first on every later run.
+    #![proptest_config(ProptestConfig::with_cases(1500))]
+
+    #[test]
+    fn arbitrary_bytes_never_panic(bytes in prop::collection::vec(any::<u8>(), 0..400)) {
+        exercise(&bytes);
+    }
+
+    #[test]
+    fn word_salad_never_panics(bytes in word_salad()) {
         exercise(&bytes);
     }
 }
