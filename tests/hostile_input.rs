@@ -7,10 +7,10 @@
 use std::path::Path;
 use std::time::{Duration, Instant};
 
+use proptest::prelude::*;
 use raytracer::render::depth_map::DepthRange;
 use raytracer::render::rng::SplitMix64;
 use raytracer::render::{Precision, Quality, View, render_with};
-use proptest::prelude::*;
 use raytracer::scene::parse_scene_bytes;
 
 /// A hang guard, not a speed claim: no case (parse + three small renders) may take this long.
@@ -109,15 +109,18 @@ const WORDS: &[&str] = &[
 
 /// The grammar's own words in random order, on lines of random length.
 fn word_salad() -> impl Strategy<Value = Vec<u8>> {
-    prop::collection::vec((prop::sample::select(WORDS), prop::bool::weighted(0.8)), 0..100)
-        .prop_map(|words| {
-            let mut text = String::new();
-            for (word, space) in words {
-                text.push_str(word);
-                text.push(if space { ' ' } else { '\n' });
-            }
-            text.into_bytes()
-        })
+    prop::collection::vec(
+        (prop::sample::select(WORDS), prop::bool::weighted(0.8)),
+        0..100,
+    )
+    .prop_map(|words| {
+        let mut text = String::new();
+        for (word, space) in words {
+            text.push_str(word);
+            text.push(if space { ' ' } else { '\n' });
+        }
+        text.into_bytes()
+    })
 }
 
 proptest! {

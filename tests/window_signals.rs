@@ -34,12 +34,15 @@ fn sigterm_saves_the_settings_before_the_viewer_ends() {
     // A scene under a name no setting holds yet, with a colour no other scene has: an orange
     // background.
     let scene: PathBuf = home.path().join("signalled-scene.txt");
-    let text = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_02.txt"),
+    let text =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_02.txt"))
+            .unwrap();
+    let background = text.lines().find(|l| l.contains("Background")).unwrap();
+    std::fs::write(
+        &scene,
+        text.replace(background, "Background { color 1 0.5 0 }"),
     )
     .unwrap();
-    let background = text.lines().find(|l| l.contains("Background")).unwrap();
-    std::fs::write(&scene, text.replace(background, "Background { color 1 0.5 0 }")).unwrap();
     let child = viewer_command(&display, home.path())
         .arg("-input")
         .arg(&scene)
@@ -108,7 +111,10 @@ fn sigterm_saves_the_settings_before_the_viewer_ends() {
 fn wait_for_orange(viewer: &mut KillOnDrop, display: &str, shot: &Path) {
     let deadline = Instant::now() + Duration::from_secs(90);
     loop {
-        assert!(viewer.0.try_wait().unwrap().is_none(), "the viewer ended early");
+        assert!(
+            viewer.0.try_wait().unwrap().is_none(),
+            "the viewer ended early"
+        );
         let orange = screenshot(display, shot).map_or(0, |image| {
             image
                 .pixels()
@@ -118,7 +124,10 @@ fn wait_for_orange(viewer: &mut KillOnDrop, display: &str, shot: &Path) {
         if orange > 2000 {
             return;
         }
-        assert!(Instant::now() < deadline, "no orange frame on screen after 90 s");
+        assert!(
+            Instant::now() < deadline,
+            "no orange frame on screen after 90 s"
+        );
         std::thread::sleep(Duration::from_millis(300));
     }
 }

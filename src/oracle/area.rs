@@ -1,7 +1,7 @@
 //! The anti-aliasing oracle: each pixel's **area average** — the mean colour and depth grey
 //! over the pixel's square — estimated on a fixed dense grid of `n × n` points (the centres of
 //! an n×n subdivision of the pixel), each point's ray going through the careful ray–sphere
-//! routine against every sphere, as the straightforward loop does.
+//! routine against every sphere whose screen bounds reach the pixel (the oracle's own lists).
 //!
 //! It shares no code with the supersampler it checks: not the sample positions, not the disc
 //! test, not the pixel grid, not the filter. Its own error is that of counting points in cells:
@@ -38,12 +38,46 @@ impl AreaAverage {
     }
 }
 
+/// For each pixel (top row first), the spheres whose screen bounds reach it: the rays of a pixel
+/// need test no others. A sphere's bounds are its centre's screen position ± its radius, widened
+/// by a pixel; this is the oracle's own list, not the renderer's bins.
+fn candidates(scene: &Scene, view: &View, pixel_world: f64) -> Result<Vec<Vec<u32>>, ViewError> {
+    let basis = view.validate()?;
+    let (width, height) = (i64::from(view.width_px), i64::from(view.height_px));
+    let mut lists = vec![Vec::new(); (width * height) as usize];
+    for (index, sphere) in (0u32..).zip(&scene.spheres) {
+        let offset = sphere.center_world - view.center_world;
+        // The centre in pixel units from the image's bottom-left corner.
+        let x = offset.dot(basis.horizontal) / pixel_world + 0.5 * width as f64;
+        let y = offset.dot(basis.screen_up) / pixel_world + 0.5 * height as f64;
+        let reach = sphere.radius_world / pixel_world + 1.0;
+        let clamp = |value: f64, limit: i64| (value.floor() as i64).clamp(0, limit - 1);
+        if x + reach < 0.0
+            || x - reach > width as f64
+            || y + reach < 0.0
+            || y - reach > height as f64
+        {
+            continue;
+        }
+        let (x0, x1) = (clamp(x - reach, width), clamp(x + reach, width));
+        let (y0, y1) = (clamp(y - reach, height), clamp(y + reach, height));
+        for y_up in y0..=y1 {
+            let row = height - 1 - y_up;
+            for column in x0..=x1 {
+                lists[(row * width + column) as usize].push(index);
+            }
+        }
+    }
+    Ok(lists)
+}
+
 /// The area average of every pixel of `view` on an `n × n` grid of points per pixel.
 pub fn area_average(scene: &Scene, view: &View, n: u32) -> Result<AreaAverage, ViewError> {
     let basis = view.validate()?;
     let (width, height) = (view.width_px, view.height_px);
     // Square pixels; the screen's size spans the longer side.
     let pixel_world = view.size_world / f64::from(width.max(height));
+    let candidates = candidates(scene, view, pixel_world)?;
     let colour_of = |index: Option<usize>| match index {
         Some(index) => {
             let sphere = &scene.spheres[index];
@@ -56,6 +90,7 @@ pub fn area_average(scene: &Scene, view: &View, n: u32) -> Result<AreaAverage, V
     };
     let pixel = |row: u32, x: u32| -> (DVec3, f64) {
         let y_up = height - 1 - row;
+        let nearby = &candidates[(row * width + x) as usize];
         let (mut colour, mut grey) = (DVec3::ZERO, 0.0);
         for j in 0..n {
             for i in 0..n {
@@ -68,13 +103,15 @@ pub fn area_average(scene: &Scene, view: &View, n: u32) -> Result<AreaAverage, V
                     origin_world: view.center_world + u * basis.horizontal + v * basis.screen_up,
                     direction_world: basis.direction,
                 };
+                // In file order, so a tie keeps the first sphere.
                 let mut best: Option<(f64, usize)> = None;
-                for (index, sphere) in scene.spheres.iter().enumerate() {
+                for &index in nearby {
+                    let sphere = &scene.spheres[index as usize];
                     if let Some(t) =
                         ray_sphere_nearest_t(&ray, sphere.center_world, sphere.radius_world)
                         && best.is_none_or(|(best_t, _)| t < best_t)
                     {
-                        best = Some((t, index));
+                        best = Some((t, index as usize));
                     }
                 }
                 colour += colour_of(best.map(|(_, index)| index)).as_dvec3();
