@@ -1,0 +1,110 @@
+//! The documentation cannot drift from what backs it:
+//! * every table in README.md marked `<!-- from docs/NAME.md -->` holds rows that are, verbatim,
+//!   rows of that generated report (the reports are written by committed commands);
+//! * every row of docs/robustness.md cites tests that exist (or says "same" for the row above).
+
+use std::path::{Path, PathBuf};
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn read(relative: &str) -> String {
+    std::fs::read_to_string(root().join(relative)).unwrap_or_else(|e| panic!("{relative}: {e}"))
+}
+
+/// The table rows (lines starting with `|`, not the `|---|` separators) from `start` on, up to
+/// the first line that is not part of the table.
+fn table_rows<'a>(lines: &[&'a str], start: usize) -> Vec<&'a str> {
+    lines[start..]
+        .iter()
+        .skip_while(|line| !line.starts_with('|'))
+        .take_while(|line| line.starts_with('|'))
+        .filter(|line| !line.starts_with("|---"))
+        .copied()
+        .collect()
+}
+
+#[test]
+fn readme_tables_equal_the_generated_reports() {
+    let readme = read("README.md");
+    let lines: Vec<&str> = readme.lines().collect();
+    let mut checked = 0;
+    for (index, line) in lines.iter().enumerate() {
+        let Some(source) = line
+            .trim()
+            .strip_prefix("<!-- from ")
+            .and_then(|rest| rest.strip_suffix(" -->"))
+        else {
+            continue;
+        };
+        let report = read(source);
+        let report_lines: Vec<&str> = report.lines().map(str::trim_end).collect();
+        let rows = table_rows(&lines, index + 1);
+        assert!(rows.len() > 1, "the table after line {} is empty", index + 1);
+        for row in rows {
+            assert!(
+                report_lines.contains(&row.trim_end()),
+                "README row not in {source}:\n{row}"
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked >= 10, "only {checked} rows are marked as generated");
+}
+
+fn rust_files(folder: &Path, found: &mut Vec<PathBuf>) {
+    for entry in std::fs::read_dir(folder).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            rust_files(&path, found);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            found.push(path);
+        }
+    }
+}
+
+#[test]
+fn every_robustness_row_cites_tests_that_exist() {
+    let mut sources = Vec::new();
+    rust_files(&root().join("src"), &mut sources);
+    rust_files(&root().join("tests"), &mut sources);
+    // The names of the test functions: `fn name(` on the line after `#[test]`.
+    let mut tests = std::collections::BTreeSet::new();
+    for path in &sources {
+        let text = std::fs::read_to_string(path).unwrap();
+        let lines: Vec<&str> = text.lines().map(str::trim).collect();
+        for pair in lines.windows(2) {
+            if pair[0] == "#[test]"
+                && let Some(rest) = pair[1].strip_prefix("fn ")
+            {
+                let name: String = rest
+                    .chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect();
+                tests.insert(name);
+            }
+        }
+    }
+    let exists = |name: &str| tests.contains(name);
+    let robustness = read("docs/robustness.md");
+    let mut rows = 0;
+    for line in robustness.lines() {
+        if !line.starts_with('|') || line.starts_with("|---") || line.contains("checked by") {
+            continue;
+        }
+        let cells: Vec<&str> = line.trim_matches('|').split(" | ").collect();
+        let cited = cells.last().unwrap().trim();
+        let names: Vec<&str> = cited.split('`').skip(1).step_by(2).collect();
+        if names.is_empty() {
+            assert!(cited.starts_with("same"), "a row cites no test:\n{line}");
+            continue;
+        }
+        for name in names {
+            let function = name.rsplit("::").next().unwrap().trim_start_matches('…');
+            assert!(exists(function), "no test `{function}` for the row:\n{line}");
+        }
+        rows += 1;
+    }
+    assert!(rows >= 40, "only {rows} rows");
+}
