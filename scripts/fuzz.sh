@@ -2,7 +2,7 @@
 # Coverage-guided fuzzing (cargo-fuzz: libFuzzer with AddressSanitizer, on the nightly toolchain)
 # of the scene parser with what it renders (`scene`) and of the command-line parser (`command_line`).
 #   scripts/fuzz.sh [SECONDS [LOG_FOLDER]]
-# runs each target for SECONDS (default 60, as CI does) from a copy of its committed seed corpus
+# runs each target (or those named in FUZZ_TARGETS, e.g. FUZZ_TARGETS=scene) for SECONDS (default 60, as CI does) from a copy of its committed seed corpus
 # (fuzz/corpus/<target>), so the committed seeds stay as they are; with LOG_FOLDER, each target's
 # whole libFuzzer log is written to LOG_FOLDER/<target>.log. A crash, a leak, a timeout (10 s for
 # one input) or an input that takes more than 2 GB stops the run with a non-zero status and leaves
@@ -22,7 +22,7 @@ if ! command -v cargo-fuzz >/dev/null 2>&1; then
   cargo install cargo-fuzz --locked
 fi
 cargo +nightly fuzz build --release
-for target in scene command_line; do
+for target in ${FUZZ_TARGETS:-scene command_line}; do
   corpus=$(mktemp -d)
   cp corpus/"$target"/* "$corpus"/
   log=/dev/null

@@ -41,7 +41,11 @@ fn readme_tables_equal_the_generated_reports() {
         let report = read(source);
         let report_lines: Vec<&str> = report.lines().map(str::trim_end).collect();
         let rows = table_rows(&lines, index + 1);
-        assert!(rows.len() > 1, "the table after line {} is empty", index + 1);
+        assert!(
+            rows.len() > 1,
+            "the table after line {} is empty",
+            index + 1
+        );
         for row in rows {
             assert!(
                 report_lines.contains(&row.trim_end()),
@@ -102,7 +106,10 @@ fn every_robustness_row_cites_tests_that_exist() {
         }
         for name in names {
             let function = name.rsplit("::").next().unwrap().trim_start_matches('…');
-            assert!(exists(function), "no test `{function}` for the row:\n{line}");
+            assert!(
+                exists(function),
+                "no test `{function}` for the row:\n{line}"
+            );
         }
         rows += 1;
     }

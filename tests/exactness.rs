@@ -761,3 +761,36 @@ fn the_double_double_reference_is_exact_on_integer_geometry() {
         "{hits} hits, {misses} misses"
     );
 }
+
+#[test]
+fn f32_mode_where_f32_cannot_hold_the_numbers_renders_in_f64() {
+    // Found by the `scene` fuzz target: a camera 3e73 away; f32 overflows on the depth (its
+    // largest number is 3.4e38), and every sphere used to vanish from the f32 frame.
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/regressions/fuzz-scene-f32-overflow.txt");
+    let scene = raytracer::scene::load_scene(&path).unwrap();
+    let view = View::of_camera(&scene.camera, 8, 6, DepthRange::new(0.0, 1.0));
+    let exact = render(&scene, &view).unwrap();
+    assert!(
+        exact.sphere.iter().any(|&s| s != NO_HIT),
+        "the spheres are in view"
+    );
+    for precision in [Precision::F32, Precision::Auto] {
+        let frame = render_with(
+            &scene,
+            &view,
+            &Quality {
+                precision,
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        assert!(frame.sphere == exact.sphere, "{precision}: coverage");
+        assert!(frame.t == exact.t, "{precision}: t");
+        assert_eq!(
+            frame.precision,
+            Precision::F64,
+            "{precision} fell back to f64"
+        );
+    }
+}

@@ -68,7 +68,7 @@ pub(crate) fn render_with_progress(
     let discs = disc::project_discs(scene, view, &basis);
     let use_f32 = match quality.precision {
         Precision::F64 => false,
-        Precision::F32 => true,
+        Precision::F32 => precision::f32_fits(&discs, &grid),
         Precision::Auto => precision::f32_is_safe(&discs, &grid, view.depth_range),
     };
     let mut frame = if use_f32 {

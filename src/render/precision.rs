@@ -82,37 +82,46 @@ const F32_MAX_MAGNITUDE: f64 = 1.152_921_504_606_847e18;
 /// Smallest radius f32 holds comfortably (its square stays normal, 2⁻⁶⁰).
 const F32_MIN_RADIUS: f64 = 8.673_617_379_884_035e-19;
 
-/// Whether f32 per-pixel arithmetic is safe for these discs on this grid and depth range (see the
-/// module docs). Discs entirely off screen do not count.
-pub(crate) fn f32_is_safe(discs: &[Disc], grid: &PixelGrid, depth_range: DepthRange) -> bool {
-    let grey_level = (depth_range.max_t - depth_range.min_t).abs() / 255.0;
-    if grey_level == 0.0 || !grey_level.is_finite() {
-        return false;
-    }
+/// The discs that can show on this grid (discs entirely off screen do not count).
+fn on_screen<'a>(discs: &'a [Disc], grid: &PixelGrid) -> impl Iterator<Item = &'a Disc> {
+    let half_width = 0.5 * f64::from(grid.width_px) * grid.pixel_size_world;
+    let half_height = 0.5 * f64::from(grid.height_px) * grid.pixel_size_world;
+    discs.iter().filter(move |disc| {
+        let radius = disc.radius_sq.sqrt();
+        !(disc.u.abs() - radius > half_width || disc.v.abs() - radius > half_height)
+    })
+}
+
+/// Whether f32 can hold every number of the per-pixel arithmetic of these discs on this grid:
+/// magnitudes whose squares stay finite, radii whose squares stay normal. Where it cannot, the
+/// f32 mode renders the frame in f64 (a number that overflows f32 would lose the sphere).
+pub(crate) fn f32_fits(discs: &[Disc], grid: &PixelGrid) -> bool {
     let half_width = 0.5 * f64::from(grid.width_px) * grid.pixel_size_world;
     let half_height = 0.5 * f64::from(grid.height_px) * grid.pixel_size_world;
     let screen_extent = half_width.max(half_height);
-    for disc in discs {
+    on_screen(discs, grid).all(|disc| {
         let radius = disc.radius_sq.sqrt();
-        let off_screen = disc.u.abs() - radius > half_width || disc.v.abs() - radius > half_height;
-        if off_screen {
-            continue;
-        }
         let largest = screen_extent
             .max(disc.u.abs() + radius)
             .max(disc.v.abs() + radius);
-        if largest > F32_MAX_MAGNITUDE
-            || disc.w.abs() > F32_MAX_MAGNITUDE
-            || (radius < F32_MIN_RADIUS && radius > 0.0)
-        {
-            return false;
-        }
-        let depth_error = F32_ROUNDOFF * 4.0 * (disc.w.abs() + radius);
-        if depth_error > F32_DEPTH_MARGIN * grey_level {
-            return false;
-        }
+        largest <= F32_MAX_MAGNITUDE
+            && disc.w.abs() + radius <= F32_MAX_MAGNITUDE
+            && !(radius < F32_MIN_RADIUS && radius > 0.0)
+    })
+}
+
+/// Whether f32 per-pixel arithmetic is safe for these discs on this grid and depth range (see the
+/// module docs): the numbers fit f32, and its depth error stays far below a grey level.
+pub(crate) fn f32_is_safe(discs: &[Disc], grid: &PixelGrid, depth_range: DepthRange) -> bool {
+    let grey_level = (depth_range.max_t - depth_range.min_t).abs() / 255.0;
+    if grey_level == 0.0 || !grey_level.is_finite() || !f32_fits(discs, grid) {
+        return false;
     }
-    true
+    on_screen(discs, grid).all(|disc| {
+        let radius = disc.radius_sq.sqrt();
+        let depth_error = F32_ROUNDOFF * 4.0 * (disc.w.abs() + radius);
+        depth_error <= F32_DEPTH_MARGIN * grey_level
+    })
 }
 
 #[cfg(test)]
