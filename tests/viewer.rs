@@ -166,7 +166,8 @@ fn export_writes_colour_and_depth_with_the_expected_pixels() {
         depth == frame.depth_image(view.depth_range),
         "exported depth pixels"
     );
-    assert_eq!(both.dimensions(), (2 * view.width_px, view.height_px));
+    // Side by side, with the legend strip (24 px) under it.
+    assert_eq!(both.dimensions(), (2 * view.width_px, view.height_px + 24));
 }
 
 #[test]

@@ -105,19 +105,31 @@ fn without_file_dialogs_the_window_says_so_and_typed_paths_work() {
             .query_by_label_contains("no file dialog is available")
             .is_some()
     );
-    for button in ["Open…", "Export…", "Save view as scene…"] {
-        click(&mut harness, button);
-        settle(&mut harness);
-        let (message, is_error) = harness.state().message().unwrap();
-        assert!(
-            is_error && message.contains("no file dialog"),
-            "{button}: {message}"
-        );
-    }
-    // The typed paths do the job.
+    // Open… opens the typed scene path (the open file's, after opening it).
+    let loads = harness.state().scene_loads();
+    click(&mut harness, "Open…");
+    wait_until(&mut harness, |app| app.scene_loads() > loads);
+    // Export… and Ctrl+S use the typed export path; Save view as scene… the typed scene path.
     harness.state_mut().settings_mut().export.path =
         folder.path().join("typed.png").display().to_string();
-    click(&mut harness, "Export to path");
+    harness.state_mut().settings_mut().export.scene_path =
+        folder.path().join("typed.txt").display().to_string();
+    click(&mut harness, "Export…");
     settle(&mut harness);
     assert!(folder.path().join("typed_colour.png").exists());
+    std::fs::remove_file(folder.path().join("typed_colour.png")).unwrap();
+    let shortcut = egui::KeyboardShortcut::new(egui::Modifiers::COMMAND, egui::Key::S);
+    harness.key_press_modifiers(shortcut.modifiers, shortcut.logical_key);
+    harness.run_steps(3);
+    settle(&mut harness);
+    // The other files of the export exist now: the viewer asks before replacing them.
+    click(&mut harness, "Replace");
+    settle(&mut harness);
+    assert!(
+        folder.path().join("typed_colour.png").exists(),
+        "Ctrl+S exported"
+    );
+    click(&mut harness, "Save view as scene…");
+    settle(&mut harness);
+    assert!(folder.path().join("typed.txt").exists());
 }

@@ -11,8 +11,6 @@ use super::job::{DepthStyle, ViewerJob, prepare_frame};
 use super::state::ExportFormat;
 use super::status::Status;
 use super::tasks::{Poll, Task};
-use crate::explore::depth_stats::auto_range;
-use crate::explore::navigate;
 use crate::export::{ExportPlan, save_view_as_scene, write_export};
 use crate::output::ImageFormat;
 use crate::output::identity::same_file;
@@ -29,10 +27,26 @@ pub(crate) enum Action {
     Reload,
     /// Fit centre and size to the scene.
     FrameAll,
-    /// Back to the file's camera and depth range.
+    /// Back to the file's camera (the depth range stays).
     ResetView,
+    /// Back to the depth range the file's view started with.
+    ResetDepth,
     /// Fit the depth range to the visible t.
     AutoRange,
+    /// Back to the view before the last change.
+    Undo,
+    /// Forward again after an undo.
+    Redo,
+    /// Name the current view (for the open scene file).
+    NameView(String),
+    /// Go to the named view at this index.
+    GoToView(usize),
+    /// Forget the named view at this index.
+    ForgetView(usize),
+    /// Show or hide the shortcuts overlay.
+    ToggleHelp,
+    /// Magnifier back to the whole image.
+    ResetMagnifier,
     /// Export the current view to this base path.
     ExportTo(PathBuf),
     /// Write the scene with the current camera to this path.
@@ -50,35 +64,18 @@ impl ViewerApp {
             Action::Reload => self.reload(),
             Action::FrameAll => self.frame_all(),
             Action::ResetView => self.reset_view(),
+            Action::ResetDepth => self.reset_depth(),
             Action::AutoRange => self.auto_range(),
+            Action::Undo => self.undo(),
+            Action::Redo => self.redo(),
+            Action::NameView(name) => self.name_view(&name),
+            Action::GoToView(index) => self.go_to_view(index),
+            Action::ForgetView(index) => self.forget_view(index),
+            Action::ToggleHelp => self.help_open = !self.help_open,
+            Action::ResetMagnifier => self.magnifier = Default::default(),
             Action::ExportTo(_) | Action::SaveViewTo(_) => self.write_or_ask(action),
-            Action::Unpin => self.probe.pinned_px = None,
+            Action::Unpin => self.probe.pinned_world = None,
         }
-    }
-
-    /// "Auto range": fits the depth range to the t visible in the frame on screen, ignoring
-    /// the settings' percentage at each end. Says so when no sphere is visible.
-    pub fn auto_range(&mut self) {
-        let cut = self.settings.depth.auto_cut_percent;
-        match self.shown.as_ref().and_then(|s| auto_range(&s.frame, cut)) {
-            Some(range) => self.view.depth_range = range,
-            None => self.status = Some(Status::info("auto range: no sphere is visible")),
-        }
-    }
-
-    /// "Frame all": fits centre and size to the scene's bounds (direction and up stay).
-    pub fn frame_all(&mut self) {
-        self.view = navigate::frame_all(&self.loaded.scene, &self.view);
-    }
-
-    /// Restores the file's camera and initial depth range, keeping the image size.
-    pub(crate) fn reset_view(&mut self) {
-        let (width_px, height_px) = (self.view.width_px, self.view.height_px);
-        self.view = View {
-            width_px,
-            height_px,
-            ..self.loaded.file_view
-        };
     }
 
     /// Carries out a write action (the user has agreed to replace what it replaces).
@@ -108,6 +105,7 @@ impl ViewerApp {
             base_path,
             format,
             side_by_side: export.side_by_side,
+            legend: export.legend,
             colour_map: self.settings.depth.colour_map,
             extra_depth: export.extra_depth,
             program: self.program.clone(),
@@ -164,7 +162,12 @@ impl ViewerApp {
             };
             let written = write_export(&job.scene, &view, &quality, &frame, &plan)
                 .map_err(|e| e.to_string())?;
-            let names: Vec<String> = written.iter().map(|p| p.display().to_string()).collect();
+            // The full path of each file written, so the message says where they are.
+            let names: Vec<String> = written
+                .iter()
+                .map(|p| std::fs::canonicalize(p).unwrap_or_else(|_| p.clone()))
+                .map(|p| p.display().to_string())
+                .collect();
             Ok(format!("exported {}", names.join(", ")))
         });
     }
@@ -182,7 +185,8 @@ impl ViewerApp {
         let view = self.view;
         self.write_in_background("saving the view…", move || {
             save_view_as_scene(&scene, &view, &path).map_err(|e| e.to_string())?;
-            Ok(format!("saved the view as {}", path.display()))
+            let full = std::fs::canonicalize(&path).unwrap_or(path);
+            Ok(format!("saved the view as {}", full.display()))
         });
     }
 
@@ -210,7 +214,7 @@ impl ViewerApp {
     /// Shows a native file dialog, or says why none can be shown.
     fn open_dialog(&mut self, kind: DialogKind) {
         if let Some(reason) = self.dialog_note {
-            self.status = Some(Status::error(reason));
+            self.without_dialog(kind, reason);
             return;
         }
         if self.dialog.is_some() {
@@ -225,6 +229,22 @@ impl ViewerApp {
             Err(error) => {
                 self.status = Some(Status::error(format!("cannot open a file dialog: {error}")));
             }
+        }
+    }
+
+    /// Where no file dialog can be shown, the typed paths do the job: export and save go to the
+    /// side panel's paths; open takes the typed scene path when there is one.
+    fn without_dialog(&mut self, kind: DialogKind, reason: &'static str) {
+        let export = &self.settings.export;
+        let typed = |text: &str| (!text.trim().is_empty()).then(|| PathBuf::from(text.trim()));
+        let action = match kind {
+            DialogKind::Export => typed(&export.path).map(Action::ExportTo),
+            DialogKind::SaveScene => typed(&export.scene_path).map(Action::SaveViewTo),
+            DialogKind::Open => typed(&self.fields.path_text).map(Action::Open),
+        };
+        match action {
+            Some(action) => self.apply(action),
+            None => self.status = Some(Status::error(reason)),
         }
     }
 

@@ -178,5 +178,6 @@ impl ViewerApp {
         {
             self.status = None;
         }
+        self.follow_depth();
     }
 }

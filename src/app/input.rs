@@ -9,8 +9,9 @@ use super::ViewerApp;
 use super::actions::Action;
 use super::dialogs::DialogKind;
 use super::reload::WatchState;
-use super::ui::images::{ImageGestures, ORBIT_RAD_PER_POINT};
+use super::ui::gestures::{ImageGestures, ORBIT_RAD_PER_POINT};
 use crate::explore::navigate;
+use crate::explore::probe::point_of_probe;
 
 /// Keyboard pan step, as a fraction of the image's shorter side.
 pub const KEY_PAN_FRACTION: f64 = 0.1;
@@ -22,7 +23,7 @@ pub const KEY_ORBIT_RAD: f64 = std::f64::consts::PI / 36.0;
 pub const KEY_ZOOM_FACTOR: f64 = 1.25;
 
 /// The keys navigation listens to.
-const NAVIGATION_KEYS: [Key; 11] = [
+const NAVIGATION_KEYS: [Key; 13] = [
     Key::ArrowLeft,
     Key::ArrowRight,
     Key::ArrowUp,
@@ -33,24 +34,41 @@ const NAVIGATION_KEYS: [Key; 11] = [
     Key::F,
     Key::Home,
     Key::A,
+    Key::D,
+    Key::Num1,
     Key::Escape,
 ];
 
 impl ViewerApp {
     /// Shortcuts (Ctrl+O, Ctrl+S, Ctrl+R), dropped files, the watched file, and navigation keys.
     pub(super) fn handle_input(&mut self, ctx: &egui::Context) {
+        let command_shift = Modifiers::COMMAND | Modifiers::SHIFT;
+        // The more specific shortcut first: Ctrl+Shift+Z before Ctrl+Z.
         let shortcuts = [
-            (Key::O, Action::OpenDialog(DialogKind::Open)),
-            (Key::S, Action::OpenDialog(DialogKind::Export)),
-            (Key::R, Action::Reload),
+            (command_shift, Key::Z, Action::Redo),
+            (Modifiers::COMMAND, Key::Z, Action::Undo),
+            (Modifiers::COMMAND, Key::Y, Action::Redo),
+            (
+                Modifiers::COMMAND,
+                Key::O,
+                Action::OpenDialog(DialogKind::Open),
+            ),
+            (
+                Modifiers::COMMAND,
+                Key::S,
+                Action::OpenDialog(DialogKind::Export),
+            ),
+            (Modifiers::COMMAND, Key::R, Action::Reload),
+            (Modifiers::COMMAND, Key::Num0, Action::ResetMagnifier),
+            (Modifiers::NONE, Key::F1, Action::ToggleHelp),
         ];
         let (pressed, dropped) = ctx.input_mut(|input| {
             let pressed: Vec<Action> = shortcuts
                 .into_iter()
-                .filter(|(key, _)| {
-                    input.consume_shortcut(&KeyboardShortcut::new(Modifiers::COMMAND, *key))
+                .filter(|(modifiers, key, _)| {
+                    input.consume_shortcut(&KeyboardShortcut::new(*modifiers, *key))
                 })
-                .map(|(_, action)| action)
+                .map(|(_, _, action)| action)
                 .collect();
             let dropped = input
                 .raw
@@ -81,13 +99,20 @@ impl ViewerApp {
         if ctx.memory(|memory| memory.focused().is_some()) {
             return;
         }
-        let (shift, pressed) = ctx.input(|input| {
+        let (shift, pressed, question) = ctx.input(|input| {
             let pressed: Vec<Key> = NAVIGATION_KEYS
                 .into_iter()
                 .filter(|&key| input.key_pressed(key))
                 .collect();
-            (input.modifiers.shift, pressed)
+            let question = input
+                .events
+                .iter()
+                .any(|event| matches!(event, egui::Event::Text(text) if text == "?"));
+            (input.modifiers.shift, pressed, question)
         });
+        if question {
+            self.apply(Action::ToggleHelp);
+        }
         let (width, height) = (
             f64::from(self.view.width_px),
             f64::from(self.view.height_px),
@@ -120,6 +145,9 @@ impl ViewerApp {
                 (Key::F, _) => self.apply(Action::FrameAll),
                 (Key::Home, _) => self.apply(Action::ResetView),
                 (Key::A, _) => self.apply(Action::AutoRange),
+                (Key::D, _) => self.apply(Action::ResetDepth),
+                (Key::Num1, _) => self.apply(Action::ResetMagnifier),
+                (Key::Escape, _) if self.help_open => self.help_open = false,
                 (Key::Escape, _) => self.apply(Action::Unpin),
                 _ => {}
             }
@@ -138,9 +166,24 @@ impl ViewerApp {
         if let Some((factor, anchor_px)) = gestures.zoom {
             self.view = navigate::zoom_at(&self.view, factor, anchor_px);
         }
+        if let Some(size_px) = self
+            .shown
+            .as_ref()
+            .map(|s| [s.frame.width_px, s.frame.height_px])
+        {
+            if let Some((factor, anchor_px)) = gestures.magnify {
+                self.magnifier.zoom_at(factor, anchor_px, size_px);
+            }
+            if gestures.magnifier_pan_px != DVec2::ZERO {
+                self.magnifier.pan(gestures.magnifier_pan_px, size_px);
+            }
+        }
         self.probe.hover_px = gestures.hover_px;
-        if let Some(px) = gestures.clicked_px {
-            self.probe.pinned_px = Some(px);
+        if let Some(px) = gestures.clicked_px
+            && let Some(probe) = self.probe_at(px)
+        {
+            // The point itself is pinned, so the pin stays on it while the view moves.
+            self.probe.pinned_world = Some(point_of_probe(&probe));
         }
         if gestures.unpin {
             self.apply(Action::Unpin);

@@ -8,6 +8,7 @@ use glam::DVec2;
 
 use super::ViewerApp;
 use super::state::{LoadedScene, Settings};
+use super::ui::magnifier::Magnifier;
 use crate::explore::depth_stats::DepthHistogram;
 use crate::explore::probe::{Probe, probe};
 use crate::render::{Frame, View};
@@ -65,9 +66,20 @@ impl ViewerApp {
         self.probe.hover_px.and_then(|px| self.probe_at(px))
     }
 
-    /// The probe of the pinned pixel.
+    /// The probe of the pinned point, where it is on the frame on screen (`None` when it is out
+    /// of view or nothing is pinned).
     pub fn pinned_probe(&self) -> Option<Probe> {
-        self.probe.pinned_px.and_then(|px| self.probe_at(px))
+        self.pinned_px().and_then(|px| self.probe_at(px))
+    }
+
+    /// The magnifier: which part of the frame the images show.
+    pub fn magnifier(&self) -> Magnifier {
+        self.magnifier
+    }
+
+    /// Whether the shortcuts overlay is open.
+    pub fn help_open(&self) -> bool {
+        self.help_open
     }
 
     /// The error of the last scene that failed to load, if shown.

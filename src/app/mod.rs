@@ -9,7 +9,10 @@
 //! * [`scene_loading`]: opening and reloading scene files in the background
 //! * [`actions`]: what the user can ask for ([`actions::Action`]), exports, dialogs
 //! * [`confirm`]: asking before a write replaces files
+//! * [`views`]: undo and redo, named views, the view each scene was last seen in
+//! * [`view_actions`]: auto range and follow, frame all, resets, undo and redo, named views
 //! * [`input`]: shortcuts, dropped files, keyboard and pointer navigation
+//! * [`layout`]: composing the panels, the drawer and the central area
 //! * [`tasks`]: the one background-task type (loads, writes, dialogs)
 //! * [`status`]: the typed status-bar message
 //! * [`dialogs`]: native file dialogs; [`reload`]: watching the open file
@@ -24,20 +27,21 @@ pub(crate) mod frames;
 pub(crate) mod input;
 pub(crate) mod inspect;
 pub mod job;
+pub(crate) mod layout;
 pub(crate) mod reload;
 pub(crate) mod scene_loading;
 pub mod state;
 pub(crate) mod status;
 pub(crate) mod tasks;
 pub mod ui;
+pub(crate) mod view_actions;
+pub mod views;
 pub(crate) mod window;
 
 use std::path::PathBuf;
-use std::time::Duration;
 
-use glam::DVec2;
+use glam::{DVec2, DVec3};
 
-use self::actions::Action;
 use self::dialogs::{PendingDialog, dialog_unavailable_reason};
 use self::frames::{Requests, Shown};
 use self::job::{ViewerWorker, start_worker};
@@ -45,9 +49,8 @@ use self::scene_loading::PendingLoad;
 use self::state::{LoadedScene, Settings};
 use self::status::Status;
 use self::tasks::Task;
-use self::ui::images::{Footer, ShownImages, images_ui};
-use self::ui::status_bar::{StatusLine, error_banner_ui, status_bar_ui};
-use self::ui::{depth_section, file_sections, probe_text, toolbar, view_controls};
+use self::ui::magnifier::Magnifier;
+use self::views::{History, SavedView, SceneViews};
 use crate::cli::ViewerRequest;
 use crate::render::View;
 
@@ -57,11 +60,23 @@ pub use self::window::{no_display_reason, run};
 /// Image size used until the first layout tells the real one.
 const INITIAL_SIZE_PX: (u32, u32) = (512, 512);
 
-/// The pointer's and the pinned probe's positions (image pixels, y up).
+/// The pointer's position (image pixels, y up) and the pinned point (world coordinates, so the
+/// pin stays on what was pinned while the view moves).
 #[derive(Debug, Clone, Copy, Default)]
 struct ProbePoints {
     hover_px: Option<DVec2>,
-    pinned_px: Option<DVec2>,
+    pinned_world: Option<DVec3>,
+}
+
+/// What the side panel's fields hold between frames.
+#[derive(Debug, Clone, Default)]
+struct Fields {
+    /// The typed scene path of the file section.
+    path_text: String,
+    /// The name typed for a new named view.
+    view_name: String,
+    /// A view edit that was not applied, and why.
+    invalid_edit: Option<String>,
 }
 
 /// The viewer application.
@@ -75,9 +90,10 @@ pub struct ViewerApp {
     requests: Requests,
     shown: Option<Shown>,
     scene_error: Option<String>,
+    /// A file that failed to open: Reload and the watcher try it again.
+    failed_open: Option<PathBuf>,
     status: Option<Status>,
-    /// The typed scene path of the file section.
-    path_text: String,
+    fields: Fields,
     dialog: Option<PendingDialog>,
     /// Why no file dialog can be shown here, if none can.
     dialog_note: Option<&'static str>,
@@ -86,6 +102,12 @@ pub struct ViewerApp {
     watcher: Option<reload::FileWatcher>,
     loading: Option<PendingLoad>,
     probe: ProbePoints,
+    magnifier: Magnifier,
+    history: History,
+    /// The shortcuts and gestures overlay is open.
+    help_open: bool,
+    /// The camera the depth range was last fitted for in "follow" mode.
+    followed: Option<SavedView>,
     /// The `raytracer` binary export scripts run.
     program: Option<PathBuf>,
     /// "Save view as scene" is writing over the open scene (its reload keeps the save's message).
@@ -110,6 +132,9 @@ impl ViewerApp {
         if let Some(precision) = request.precision {
             settings.quality.precision = precision;
         }
+        // Ctrl+plus and Ctrl+minus zoom the camera; the interface keeps its size.
+        cc.egui_ctx
+            .options_mut(|options| options.zoom_with_keyboard = false);
         let (worker, status) = match start_worker(&cc.egui_ctx) {
             Ok(worker) => (Some(worker), None),
             Err(error) => (
@@ -120,6 +145,8 @@ impl ViewerApp {
             ),
         };
         let loaded = LoadedScene::default_scene(INITIAL_SIZE_PX);
+        let mut history = History::default();
+        history.reset(&loaded.file_view);
         let mut app = Self {
             settings,
             view: loaded.file_view,
@@ -129,17 +156,22 @@ impl ViewerApp {
             requests: Requests::default(),
             shown: None,
             scene_error: None,
+            failed_open: None,
             status,
-            path_text: String::new(),
+            fields: Fields::default(),
             dialog: None,
             dialog_note: dialog_unavailable_reason(),
             writing: None,
             watcher: None,
             loading: None,
             probe: ProbePoints::default(),
-            pending_replace: None,
-            saving_open_scene: false,
+            magnifier: Magnifier::default(),
+            history,
+            help_open: false,
+            followed: None,
             program: request.program.clone(),
+            saving_open_scene: false,
+            pending_replace: None,
             ctx: cc.egui_ctx.clone(),
         };
         let ctx = cc.egui_ctx.clone();
@@ -151,95 +183,15 @@ impl ViewerApp {
         app
     }
 
-    /// The side panel: view controls, depth tools, quality, file and export sections.
-    fn side_panel_ui(&mut self, ui: &mut egui::Ui) -> Vec<Action> {
-        let mut actions = Vec::new();
-        egui::ScrollArea::vertical().show(ui, |ui| {
-            let ranges = self.loaded.ranges(&self.view);
-            view_controls::controls_ui(ui, &mut self.view, &ranges);
-            if depth_section::depth_tools_ui(ui, &mut self.settings.depth).auto_range {
-                actions.push(Action::AutoRange);
-            }
-            ui.separator();
-            view_controls::quality_ui(ui, &mut self.settings.quality);
-            ui.separator();
-            let export = &mut self.settings.export;
-            let file = file_sections::file_ui(ui, &mut self.path_text, &mut export.scene_path);
-            if let Some(path) = file.open_path {
-                actions.push(Action::Open(PathBuf::from(path.trim())));
-            }
-            if file.save_view {
-                actions.push(Action::SaveViewTo(PathBuf::from(export.scene_path.trim())));
-            }
-            ui.separator();
-            if file_sections::export_ui(ui, export, self.dialog_note).export_to_path {
-                actions.push(Action::ExportTo(PathBuf::from(export.path.trim())));
-            }
-        });
-        actions
-    }
-
-    /// What the status bar shows now.
-    fn status_line(&self) -> StatusLine<'_> {
-        let shown = self.shown.as_ref();
-        StatusLine {
-            render_ms: shown.map(|s| s.render_ms),
-            size_px: shown.map(|s| [s.frame.width_px, s.frame.height_px]),
-            precision: shown.map(|s| s.frame.precision),
-            stage: shown.map(|s| match s.quality.sampling {
-                _ if self.showing_preview() => "preview (1 sample)".to_owned(),
-                Some(sampling) => format!(
-                    "{} {} samples, {}",
-                    sampling.samples,
-                    sampling.sampler.name(),
-                    sampling.filter
-                ),
-                None => "1 sample".to_owned(),
-            }),
-            sphere_count: self.loaded.scene.spheres.len(),
-            scene_name: self.loaded.name(),
-            busy: self.busy(),
-            loading: self
-                .loading
-                .as_ref()
-                .filter(|pending| pending.shows_progress())
-                .map(|pending| (pending.path.display().to_string(), pending.fraction())),
-            message: self.status.as_ref(),
+    /// Remembers the view the open scene is in, to restore when it is opened again.
+    fn remember_view(&mut self) {
+        if let Some(path) = &self.loaded.path {
+            let key = SceneViews::key(path);
+            self.settings
+                .views
+                .last
+                .insert(key, SavedView::of(&self.view));
         }
-    }
-
-    /// A render or a write is under way.
-    fn busy(&self) -> bool {
-        self.worker.as_ref().is_some_and(|w| !w.is_idle()) || self.writing.is_some()
-    }
-
-    /// The two images with the probe and the histogram; applies the gestures made on them.
-    fn images_ui(&mut self, ui: &mut egui::Ui) {
-        let probe_lines = probe_text::probe_lines(self.pinned_probe(), self.hover_probe());
-        let style = self.depth_style();
-        let shown = self.shown.as_ref().map(|s| ShownImages {
-            colour: &s.colour,
-            depth: &s.depth,
-            size_px: [s.frame.width_px, s.frame.height_px],
-            depth_range: s.view.depth_range,
-            histogram: s.histogram.as_ref(),
-        });
-        let footer = Footer {
-            probe_lines: &probe_lines,
-            pinned: self.probe.pinned_px,
-            depth_range: &mut self.view.depth_range,
-            colour_map: style.colour_map,
-            no_hit_rgb: style.no_hit_rgb,
-        };
-        let gestures = images_ui(ui, shown.as_ref(), footer);
-        self.apply_gestures(&gestures);
-        let (width_px, height_px) = gestures.wanted_px;
-        if (width_px, height_px) != (self.view.width_px, self.view.height_px) {
-            // The same world point stays under the pinned probe only in pixels of this size.
-            self.probe.pinned_px = None;
-        }
-        self.view.width_px = width_px;
-        self.view.height_px = height_px;
     }
 }
 
@@ -254,40 +206,19 @@ impl eframe::App for ViewerApp {
         self.poll_load();
         self.poll_background();
         self.handle_input(&ctx);
-
-        let mut actions = Vec::new();
-        egui::Panel::top("toolbar").show(ui, |ui| {
-            actions.extend(toolbar::toolbar_ui(ui, &mut self.settings.show_controls));
-        });
-        if let Some(error) = self.scene_error.clone() {
-            egui::Panel::top("scene_error").show(ui, |ui| {
-                if error_banner_ui(ui, &error) {
-                    self.scene_error = None;
-                }
-            });
-        }
-        egui::Panel::bottom("status").show(ui, |ui| status_bar_ui(ui, &self.status_line()));
-        if self.settings.show_controls {
-            // The images keep at least half of the window.
-            let max_width = (0.5 * ui.available_width()).max(160.0);
-            egui::Panel::left("controls")
-                .resizable(true)
-                .default_size(330.0_f32.min(max_width))
-                .max_size(max_width)
-                .show(ui, |ui| actions.extend(self.side_panel_ui(ui)));
-        }
-        egui::CentralPanel::default().show(ui, |ui| self.images_ui(ui));
-        self.confirm_ui(&ctx);
+        let actions = self.layout_ui(ui);
         for action in actions {
             self.apply(action);
         }
+        self.history.observe(&self.view, std::time::Instant::now());
         self.submit_if_changed();
         if self.busy() {
-            ctx.request_repaint_after(Duration::from_millis(100));
+            ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        self.remember_view();
         eframe::set_value(storage, eframe::APP_KEY, &self.settings);
     }
 }

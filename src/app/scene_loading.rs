@@ -12,6 +12,7 @@ use super::reload::FileWatcher;
 use super::state::LoadedScene;
 use super::status::Status;
 use super::tasks::{Poll, Task};
+use super::views::SceneViews;
 use crate::render::View;
 
 /// Loads shorter than this show no progress (most scenes load in a few milliseconds).
@@ -81,6 +82,11 @@ impl ViewerApp {
     /// good scene stays; a good one replaces the scene and keeps the user's camera unless it was
     /// still the file's.
     pub(crate) fn reload(&mut self) {
+        // A file that failed to open is tried again: it may have been fixed.
+        if let Some(failed) = self.failed_open.clone() {
+            self.start_load(&failed, LoadKind::Open);
+            return;
+        }
         let Some(path) = self.loaded.path.clone() else {
             self.status = Some(Status::info(
                 "the embedded default scene has no file to reload",
@@ -128,6 +134,9 @@ impl ViewerApp {
             Ok(loaded) => loaded,
             Err(error) => {
                 self.scene_error = Some(error);
+                if kind == LoadKind::Open {
+                    self.watch_failed_open(&path);
+                }
                 return;
             }
         };
@@ -148,12 +157,28 @@ impl ViewerApp {
         }
     }
 
-    /// Puts a newly opened scene on screen, remembers it and watches its file.
+    /// Watches a file that failed to open, so that fixing it opens it.
+    fn watch_failed_open(&mut self, path: &Path) {
+        self.failed_open = Some(path.to_path_buf());
+        let ctx = self.ctx.clone();
+        // A file that does not exist cannot be watched; Reload still tries it again.
+        self.watcher = FileWatcher::watch(path, move || ctx.request_repaint()).ok();
+    }
+
+    /// Puts a newly opened scene on screen in the view it was last seen in (if it was), remembers
+    /// it and watches its file.
     fn adopt_opened(&mut self, loaded: LoadedScene, path: &Path) {
+        self.remember_view();
+        self.failed_open = None;
         self.adopt(loaded, false);
-        self.probe.pinned_px = None;
+        if let Some(last) = self.settings.views.last.get(&SceneViews::key(path)) {
+            self.view = last.applied_to(&self.view);
+        }
+        self.history.reset(&self.view);
+        self.magnifier = Default::default();
+        self.probe.pinned_world = None;
         self.settings.last_scene = Some(path.to_path_buf());
-        self.path_text = path.display().to_string();
+        self.fields.path_text = path.display().to_string();
         self.ctx
             .send_viewport_cmd(egui::ViewportCommand::Title(format!(
                 "raytracer — {}",

@@ -30,6 +30,8 @@ pub struct ExportSettings {
     pub format: ExportFormat,
     /// Also write colour and depth side by side in one picture.
     pub side_by_side: bool,
+    /// Under the side-by-side picture, a legend: the colour bar and the depth range.
+    pub legend: bool,
     /// Export at the displayed size (`true`) or at `size_px`.
     pub displayed_size: bool,
     /// Export size when not the displayed size.
@@ -46,6 +48,7 @@ impl Default for ExportSettings {
             path: "raytracer.png".into(),
             format: ExportFormat::Png,
             side_by_side: true,
+            legend: true,
             displayed_size: true,
             size_px: [1024, 1024],
             extra_depth: ExtraDepth::None,
@@ -68,6 +71,8 @@ pub struct Settings {
     pub quality: crate::render::Quality,
     /// How the depth image is drawn.
     pub depth: DepthDisplay,
+    /// Per scene file: the view it was last seen in, and the views the user named.
+    pub views: super::views::SceneViews,
 }
 
 /// How the depth image is drawn on screen (and exported).
@@ -81,6 +86,10 @@ pub struct DepthDisplay {
     pub mark_no_hit: bool,
     /// "Auto range" ignores this percentage of the visible t at each end (0: min to max).
     pub auto_cut_percent: f64,
+    /// The histogram's bars on a logarithmic scale of the counts.
+    pub log_counts: bool,
+    /// Keep fitting the depth range to the visible t while the view changes.
+    pub follow: bool,
 }
 
 impl Default for DepthDisplay {
@@ -89,6 +98,8 @@ impl Default for DepthDisplay {
             colour_map: DepthColourMap::Grey,
             mark_no_hit: true,
             auto_cut_percent: 1.0,
+            log_counts: false,
+            follow: false,
         }
     }
 }
@@ -112,6 +123,7 @@ impl Default for Settings {
             export: ExportSettings::default(),
             quality: crate::render::Quality::default(),
             depth: DepthDisplay::default(),
+            views: super::views::SceneViews::default(),
         }
     }
 }

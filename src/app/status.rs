@@ -1,5 +1,11 @@
 //! [`Status`]: the one message the status bar shows — what kind it is, its text, and what clears
-//! it — instead of strings matched by their prefix.
+//! it — instead of strings matched by their prefix. Information goes stale after
+//! [`INFO_LIFETIME`] and is no longer shown; errors stay until something replaces or clears them.
+
+use std::time::{Duration, Instant};
+
+/// How long an informational message stays in the status bar.
+pub(crate) const INFO_LIFETIME: Duration = Duration::from_secs(12);
 
 /// Whether a message reports a failure.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -28,6 +34,8 @@ pub(crate) struct Status {
     pub(crate) text: String,
     /// What clears it.
     pub(crate) clears: Clears,
+    /// When it was made.
+    pub(crate) created: Instant,
 }
 
 impl Status {
@@ -37,6 +45,7 @@ impl Status {
             kind: StatusKind::Info,
             text: text.into(),
             clears: Clears::WhenReplaced,
+            created: Instant::now(),
         }
     }
 
@@ -46,6 +55,7 @@ impl Status {
             kind: StatusKind::Error,
             text: text.into(),
             clears: Clears::WhenReplaced,
+            created: Instant::now(),
         }
     }
 
@@ -55,11 +65,17 @@ impl Status {
             kind: StatusKind::Error,
             text: format!("view: {text}"),
             clears: Clears::WhenAFrameRenders,
+            created: Instant::now(),
         }
     }
 
     /// Whether this is an error.
     pub(crate) fn is_error(&self) -> bool {
         self.kind == StatusKind::Error
+    }
+
+    /// Whether it is information old enough to no longer show.
+    pub(crate) fn is_stale(&self) -> bool {
+        self.kind == StatusKind::Info && self.created.elapsed() >= INFO_LIFETIME
     }
 }

@@ -38,6 +38,8 @@ pub struct Probe {
     pub(crate) ray_origin_world: DVec3,
     /// The hit, `None` where the ray sees the background.
     pub hit: Option<ProbeHit>,
+    /// The pixel's 8-bit colour in the frame.
+    pub colour_rgb: [u8; 3],
 }
 
 /// Probes pixel (`x_px`, `y_up_px`) of `frame`, which must have been rendered from `scene` through
@@ -83,7 +85,31 @@ pub(crate) fn probe(
         screen_world: DVec2::new(u, v),
         ray_origin_world,
         hit,
+        colour_rgb: frame.colour[index],
     })
+}
+
+/// Where the world point `point_world` falls on the image of `view`: image pixels from the
+/// bottom-left corner (continuous; pixel (x, y) spans [x, x + 1) × [y, y + 1)), whether or not
+/// inside the image. `None` for an unusable view. A pinned point follows the view with it.
+pub fn pixel_of_point(view: &View, point_world: DVec3) -> Option<DVec2> {
+    let basis = view.validate().ok()?;
+    let camera = basis.to_camera(point_world - view.center_world);
+    let pixel_size = view.grid().pixel_size_world;
+    let (width, height) = (f64::from(view.width_px), f64::from(view.height_px));
+    let px = DVec2::new(
+        camera.x / pixel_size + 0.5 * width,
+        camera.y / pixel_size + 0.5 * height,
+    );
+    px.is_finite().then_some(px)
+}
+
+/// The world point a click on pixel position `px` pins: the hit point where the pixel shows a
+/// sphere, else the point on the screen plane.
+pub fn point_of_probe(probe: &Probe) -> DVec3 {
+    probe
+        .hit
+        .map_or(probe.ray_origin_world, |hit| hit.point_world)
 }
 
 #[cfg(test)]

@@ -14,6 +14,7 @@
 //!   supersampling flags). It `cd`s to its own folder, so it runs from anywhere.
 
 mod command;
+mod legend;
 
 use std::path::{Path, PathBuf};
 
@@ -99,6 +100,8 @@ pub(crate) struct ExportPlan {
     pub(crate) format: ImageFormat,
     /// Also write colour and depth side by side.
     pub(crate) side_by_side: bool,
+    /// Under the side-by-side picture, the colour bar and the depth range.
+    pub(crate) legend: bool,
     /// Colour map of the depth image.
     pub(crate) colour_map: DepthColourMap,
     /// Lossless or 16-bit depth, if any.
@@ -208,7 +211,10 @@ pub(crate) fn write_export(
     let depth = frame.depth_image_mapped(range, map, DepthColourMap::FILE_NO_HIT);
     stage_image(&mut set, &files.images.depth, &depth)?;
     if plan.side_by_side {
-        let both = frame.side_by_side_mapped(range, map);
+        let mut both = frame.side_by_side_mapped(range, map);
+        if plan.legend {
+            both = legend::with_legend(&both, range, map);
+        }
         stage_image(&mut set, &files.images.side_by_side, &both)?;
     }
     match (plan.extra_depth, &files.depth_raw) {
@@ -281,6 +287,7 @@ mod tests {
             base_path: PathBuf::from("shots/my view.png"),
             format: ImageFormat::Png,
             side_by_side: true,
+            legend: true,
             colour_map: DepthColourMap::Turbo,
             extra_depth: ExtraDepth::Raw(RawDepthFormat::Exr),
             program: Some(PathBuf::from("/opt/it's/raytracer")),
@@ -350,6 +357,7 @@ mod tests {
                     .join(format!("shot {}.tga", colour_map.name())),
                 format: ImageFormat::Png,
                 side_by_side: true,
+                legend: false,
                 colour_map,
                 extra_depth,
                 program: None,

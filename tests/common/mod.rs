@@ -57,9 +57,22 @@ pub(crate) fn settle(harness: &mut Harness<'static, ViewerApp>) {
 /// Scrolls the widget labelled `label` into view, moves the pointer onto it (a press where the
 /// pointer has not been yet belongs to the widget under its last position), then clicks it.
 pub(crate) fn click(harness: &mut Harness<'static, ViewerApp>, label: &str) {
-    harness.get_by_label(label).scroll_to_me();
-    // The accessibility tree describes the previous pass: step so it has the scrolled layout.
+    // Changes made to the state directly show in the layout a pass later.
     harness.run_steps(2);
+    harness.get_by_label(label).scroll_to_me();
+    // The scroll is animated, and the accessibility tree describes the previous pass: step until
+    // the widget stays where it is.
+    harness.run_steps(2);
+    let mut rect = harness.get_by_label(label).rect();
+    for _ in 0..60 {
+        harness.step();
+        let now = harness.get_by_label(label).rect();
+        if now == rect {
+            break;
+        }
+        rect = now;
+    }
+    harness.step();
     harness.get_by_label(label).hover();
     harness.step();
     harness.get_by_label(label).click();

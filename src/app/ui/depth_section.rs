@@ -1,26 +1,26 @@
-//! The side panel's depth section: colour map, the no-hit mark, and "auto range" with its
-//! percentile cut.
+//! The side panel's depth section: colour map, the no-hit mark, "auto range" with its percentile
+//! cut and a "follow" mode that keeps fitting while the view changes, the histogram's count
+//! scale, and resetting the range to the file's.
 
 use egui::{RichText, Ui};
 
+use crate::app::actions::Action;
 use crate::app::state::DepthDisplay;
 use crate::explore::depth_stats::MAX_PERCENTILE_CUT;
 use crate::render::depth_map::DepthColourMap;
 
-/// What the depth section asked for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub(crate) struct DepthToolRequests {
-    /// Fit the depth range to the visible t now.
-    pub(crate) auto_range: bool,
-}
-
-/// The side panel's depth section: colour map, no-hit mark, auto range with its percentile cut.
-pub(crate) fn depth_tools_ui(ui: &mut Ui, display: &mut DepthDisplay) -> DepthToolRequests {
-    let mut requests = DepthToolRequests::default();
+/// The side panel's depth section. Returns the actions asked for.
+pub(crate) fn depth_tools_ui(ui: &mut Ui, display: &mut DepthDisplay) -> Vec<Action> {
+    let mut actions = Vec::new();
     ui.horizontal(|ui| {
         ui.label("colour map");
         for map in DepthColourMap::ALL {
-            ui.radio_value(&mut display.colour_map, map, map.name());
+            ui.radio_value(&mut display.colour_map, map, map.name())
+                .on_hover_text(match map {
+                    DepthColourMap::Grey => "the course's grey ramp: near white, far black",
+                    DepthColourMap::Turbo => "turbo: near red, far blue",
+                    DepthColourMap::Viridis => "viridis: near yellow, far purple",
+                });
         }
     });
     ui.checkbox(&mut display.mark_no_hit, "mark no-hit pixels")
@@ -33,7 +33,7 @@ pub(crate) fn depth_tools_ui(ui: &mut Ui, display: &mut DepthDisplay) -> DepthTo
             .on_hover_text("fit depth min and max to the t visible in the view (A)")
             .clicked()
         {
-            requests.auto_range = true;
+            actions.push(Action::AutoRange);
         }
         let label = ui.label("ignore % at each end");
         ui.add(
@@ -42,12 +42,26 @@ pub(crate) fn depth_tools_ui(ui: &mut Ui, display: &mut DepthDisplay) -> DepthTo
                 .speed(0.1)
                 .max_decimals(1),
         )
-        .labelled_by(label.id);
+        .labelled_by(label.id)
+        .on_hover_text("auto range leaves out this share of the visible t at each end (outliers)");
+    });
+    ui.horizontal(|ui| {
+        ui.checkbox(&mut display.follow, "follow")
+            .on_hover_text("keep fitting the range to the visible t while the view changes");
+        ui.checkbox(&mut display.log_counts, "log counts")
+            .on_hover_text("the histogram's bars on a logarithmic scale of the pixel counts");
+        if ui
+            .button("Reset depth")
+            .on_hover_text("the depth range the file's view started with (D)")
+            .clicked()
+        {
+            actions.push(Action::ResetDepth);
+        }
     });
     ui.label(
         RichText::new("drag the lines on the histogram to set the range")
             .small()
             .weak(),
     );
-    requests
+    actions
 }

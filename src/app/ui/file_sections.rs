@@ -25,7 +25,8 @@ pub(crate) fn file_ui(ui: &mut Ui, path_text: &mut String, save_path: &mut Strin
     ui.horizontal(|ui| {
         let label = ui.label("view to");
         ui.add(egui::TextEdit::singleline(save_path).desired_width(150.0))
-            .labelled_by(label.id);
+            .labelled_by(label.id)
+            .on_hover_text("the scene file \"Save view as scene\" writes (asks before replacing)");
         if ui
             .button("Save view as scene")
             .on_hover_text("write the scene with the current camera (centre, direction, up, size)")
@@ -38,7 +39,8 @@ pub(crate) fn file_ui(ui: &mut Ui, path_text: &mut String, save_path: &mut Strin
         let label = ui.label("path");
         let field = ui
             .add(egui::TextEdit::singleline(path_text).desired_width(170.0))
-            .labelled_by(label.id);
+            .labelled_by(label.id)
+            .on_hover_text("a scene file to open (Enter opens it)");
         let entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
         if ui.button("Open path").clicked() || entered {
             requests.open_path = Some(path_text.clone());
@@ -74,10 +76,22 @@ pub(crate) fn export_ui(
         });
     }
     ui.horizontal(|ui| {
-        ui.radio_value(&mut settings.format, ExportFormat::Png, "PNG");
-        ui.radio_value(&mut settings.format, ExportFormat::Tga, "TGA");
+        ui.radio_value(&mut settings.format, ExportFormat::Png, "PNG")
+            .on_hover_text("image format when the path names none (a .png or .tga path decides)");
+        ui.radio_value(&mut settings.format, ExportFormat::Tga, "TGA")
+            .on_hover_text("uncompressed 24-bit TGA, as the course writes");
     });
-    ui.checkbox(&mut settings.side_by_side, "also side by side");
+    ui.horizontal(|ui| {
+        ui.checkbox(&mut settings.side_by_side, "also side by side")
+            .on_hover_text("colour and depth in one picture");
+        ui.add_enabled(
+            settings.side_by_side,
+            egui::Checkbox::new(&mut settings.legend, "with a legend"),
+        )
+        .on_hover_text(
+            "a strip under the side-by-side picture: the colour bar and the depth range",
+        );
+    });
     ui.horizontal(|ui| {
         let label = ui.label("depth also as");
         let choices = [
@@ -102,17 +116,30 @@ pub(crate) fn export_ui(
     });
     ui.horizontal(|ui| {
         let label = ui.label("to");
-        ui.add(egui::TextEdit::singleline(&mut settings.path).desired_width(150.0))
-            .labelled_by(label.id);
-        if ui.button("Export to path").clicked() {
+        let field = ui
+            .add(egui::TextEdit::singleline(&mut settings.path).desired_width(150.0))
+            .labelled_by(label.id)
+            .on_hover_text("base path: name_colour, name_depth, …; a folder exports into it");
+        let entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+        if ui.button("Export to path").clicked() || entered {
             requests.export_to_path = true;
         }
     });
+    // The format follows the path's extension, and the radio buttons show it.
+    let extension = std::path::Path::new(settings.path.trim())
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    match extension.as_deref() {
+        Some("png") => settings.format = ExportFormat::Png,
+        Some("tga") => settings.format = ExportFormat::Tga,
+        _ => {}
+    }
     ui.label(
         RichText::new(
             "writes <name>_colour, <name>_depth (in the colour map on screen), <name>_both, \
              <name>_scene.txt (the current camera) and <name>_command.sh (the command line \
-             that renders the same files)",
+             that renders the same files); asks before replacing any file",
         )
         .small()
         .weak(),

@@ -1,49 +1,56 @@
-//! The histogram of visible t under the depth image: the depth range drawn on it with its two
-//! ends draggable, a legend strip of the colour map below it, and the axis labels. The statistics
-//! themselves are in [`crate::explore::depth_stats`].
+//! The histogram of visible t under the depth image: the depth range drawn on it, its two ends
+//! draggable and labelled with their t, a legend strip of the colour map, the axis's end labels
+//! (never overlapping: a label that would touch another is left out) and, under the pointer, the
+//! t and the pixel count of the bar there. The axis fits the t visible in the frame, so it follows
+//! zoom and pan; a range end outside it sits at the edge, marked with an arrow. Counts can be
+//! drawn on a logarithmic scale. The statistics themselves are in
+//! [`crate::explore::depth_stats`].
 
-use egui::{Color32, CursorIcon, Pos2, Rect, Sense, Stroke, Ui, Vec2};
+use egui::{Align2, Color32, CursorIcon, FontId, Pos2, Rect, Sense, Stroke, Ui, Vec2};
 
 use super::probe_text::short_number;
 use crate::explore::depth_stats::DepthHistogram;
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 
-/// Height of the histogram block (bars, legend strip and labels), in points.
-pub(crate) const HISTOGRAM_POINTS: f32 = 88.0;
-
-/// Height of the bars, in points.
-const BARS_POINTS: f32 = 46.0;
-
 /// Height of the legend strip under the bars, in points.
-const LEGEND_POINTS: f32 = 10.0;
+const LEGEND_POINTS: f32 = 8.0;
+
+/// Height of a line of labels, in points.
+const LABEL_POINTS: f32 = 14.0;
 
 /// Half width of a handle's grab area, in points.
 const HANDLE_HALF_WIDTH_POINTS: f32 = 6.0;
+
+/// Font size of the labels, in points.
+const LABEL_FONT_POINTS: f32 = 11.0;
 
 /// Accessible labels of the two handles (tests find them by these).
 pub const MIN_HANDLE_LABEL: &str = "depth min handle";
 /// See [`MIN_HANDLE_LABEL`].
 pub const MAX_HANDLE_LABEL: &str = "depth max handle";
 
-/// The t interval the histogram's x axis spans: the visible t and the depth range, with a
-/// little room on each side so both ends can be grabbed.
-pub fn histogram_axis(histogram: &DepthHistogram, range: &DepthRange) -> (f64, f64) {
-    let mut low = histogram.t_low;
-    let mut high = histogram.t_high;
-    for t in [range.min_t, range.max_t] {
-        if t.is_finite() {
-            low = low.min(t);
-            high = high.max(t);
-        }
+/// How the histogram is drawn.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct HistogramStyle {
+    /// Bar heights on a logarithmic scale of the counts (else the square root).
+    pub(crate) log_counts: bool,
+    /// The block's height, points.
+    pub(crate) height: f32,
+}
+
+impl HistogramStyle {
+    /// The same style in a block `height` points high.
+    pub(crate) fn with_height(self, height: f32) -> Self {
+        Self { height, ..self }
     }
-    if !(high - low).is_finite() {
-        // A range end so far out that the axis would be infinite: the axis shows the visible t
-        // only, and that handle sits at the edge.
-        low = histogram.t_low;
-        high = histogram.t_high;
-    }
+}
+
+/// The t interval the histogram's x axis spans: the visible t, with a little room on each side
+/// so that ends at the edge can be grabbed.
+pub fn histogram_axis(histogram: &DepthHistogram, _range: &DepthRange) -> (f64, f64) {
+    let (low, high) = (histogram.t_low, histogram.t_high);
     let span = high - low;
-    let pad = if span > 0.0 {
+    let pad = if span > 0.0 && span.is_finite() {
         0.04 * span
     } else {
         (low.abs() * 1e-3).max(1e-9)
@@ -67,9 +74,11 @@ struct Layout {
 impl Layout {
     fn new(block: Rect, histogram: &DepthHistogram, range: &DepthRange) -> Self {
         let width = block.width();
+        // Labels of the range's ends above the bars, the axis's below the legend.
+        let bars_height = (block.height() - 2.0 * LABEL_POINTS - LEGEND_POINTS - 4.0).max(8.0);
         let bars = Rect::from_min_size(
-            Pos2::new(block.left(), block.top() + 4.0),
-            Vec2::new(width, BARS_POINTS),
+            Pos2::new(block.left(), block.top() + LABEL_POINTS),
+            Vec2::new(width, bars_height),
         );
         let legend = Rect::from_min_size(
             Pos2::new(block.left(), bars.bottom() + 2.0),
@@ -104,35 +113,57 @@ pub(crate) fn histogram_ui(
     ui: &mut Ui,
     histogram: Option<&DepthHistogram>,
     range: &mut DepthRange,
+    style: HistogramStyle,
     colour_map: DepthColourMap,
     no_hit_rgb: [u8; 3],
 ) -> bool {
     let width = ui.available_width();
-    let (block, _) = ui.allocate_exact_size(Vec2::new(width, HISTOGRAM_POINTS), Sense::hover());
+    let (block, response) = ui.allocate_exact_size(Vec2::new(width, style.height), Sense::hover());
     let Some(histogram) = histogram else {
         ui.painter().text(
             block.left_top() + Vec2::new(0.0, 4.0),
-            egui::Align2::LEFT_TOP,
+            Align2::LEFT_TOP,
             "no sphere visible: nothing to histogram",
-            egui::FontId::proportional(12.0),
+            FontId::proportional(12.0),
             ui.visuals().weak_text_color(),
         );
         return false;
     };
     let layout = Layout::new(block, histogram, range);
     let painter = ui.painter_at(block);
-    paint_bars(ui, &painter, &layout, histogram);
+    paint_bars(ui, &painter, &layout, histogram, style.log_counts);
     paint_legend(&painter, &layout, range, colour_map, no_hit_rgb);
-    let moved = range_handles_ui(ui, &painter, &layout, range);
-    paint_labels(ui, &painter, &layout, histogram, no_hit_rgb);
+    let mut labels = Labels::default();
+    let moved = range_handles_ui(ui, &painter, &layout, range, &mut labels);
+    paint_axis_labels(ui, &painter, &layout, histogram, no_hit_rgb, &mut labels);
+    // Kept for the tests and tools that check the labels never overlap.
+    ui.ctx()
+        .data_mut(|data| data.insert_temp(labels_id(), labels.placed.clone()));
+    if let Some(pointer) = response.hover_pos() {
+        paint_hover_readout(ui, &painter, &layout, histogram, pointer);
+    }
     moved
 }
 
-/// Bars: each bin from its t interval, height by count relative to the tallest bin.
-fn paint_bars(ui: &Ui, painter: &egui::Painter, layout: &Layout, histogram: &DepthHistogram) {
+/// Bars: each bin from its t interval, height by count relative to the tallest bin (square root
+/// or logarithm of the count, so small bins stay visible).
+fn paint_bars(
+    ui: &Ui,
+    painter: &egui::Painter,
+    layout: &Layout,
+    histogram: &DepthHistogram,
+    log_counts: bool,
+) {
     let bars = layout.bars;
     painter.rect_filled(bars, 0.0, ui.visuals().extreme_bg_color);
-    let tallest = histogram.max_count().max(1) as f32;
+    let scale = |count: u32| {
+        if log_counts {
+            (1.0 + f64::from(count)).ln() as f32
+        } else {
+            (count as f32).sqrt()
+        }
+    };
+    let tallest = scale(histogram.max_count().max(1));
     let bin_width_t = histogram.bin_width();
     let bar_colour = ui.visuals().text_color().gamma_multiply(0.7);
     for (bin, &count) in histogram.counts.iter().enumerate() {
@@ -142,7 +173,7 @@ fn paint_bars(ui: &Ui, painter: &egui::Painter, layout: &Layout, histogram: &Dep
         let t0 = histogram.t_low + bin as f64 * bin_width_t;
         let x0 = layout.x_of(t0);
         let x1 = layout.x_of(t0 + bin_width_t).max(x0 + 1.0);
-        let height = (count as f32 / tallest).sqrt() * BARS_POINTS;
+        let height = scale(count) / tallest * bars.height();
         let bar = Rect::from_min_max(
             Pos2::new(x0, bars.bottom() - height),
             Pos2::new(x1, bars.bottom()),
@@ -172,12 +203,62 @@ fn paint_legend(
     }
 }
 
-/// The range's two ends, each a draggable line. Returns true when one moved.
+fn labels_id() -> egui::Id {
+    egui::Id::unique("histogram labels")
+}
+
+/// Where the histogram's labels were drawn in the last pass (for tests and tools).
+pub fn histogram_label_rects(ctx: &egui::Context) -> Vec<Rect> {
+    ctx.data(|data| data.get_temp::<Vec<Rect>>(labels_id()))
+        .unwrap_or_default()
+}
+
+/// The rectangles of the labels drawn so far: a new label that would overlap one is left out.
+#[derive(Default)]
+struct Labels {
+    placed: Vec<Rect>,
+}
+
+impl Labels {
+    /// Draws `text` anchored at `at` unless it would overlap a label already drawn (or leave
+    /// `bounds`); returns whether it was drawn.
+    fn place(
+        &mut self,
+        painter: &egui::Painter,
+        at: Pos2,
+        anchor: Align2,
+        text: &str,
+        colour: Color32,
+        bounds: Rect,
+    ) -> Option<Rect> {
+        let font = FontId::proportional(LABEL_FONT_POINTS);
+        let galley = painter.layout_no_wrap(text.to_owned(), font, colour);
+        let mut rect = anchor.anchor_size(at, galley.size());
+        // Keep it inside the block.
+        let shift_x =
+            (bounds.left() - rect.left()).max(0.0) + (bounds.right() - rect.right()).min(0.0);
+        rect = rect.translate(Vec2::new(shift_x, 0.0));
+        if self
+            .placed
+            .iter()
+            .any(|other| other.expand(2.0).intersects(rect))
+        {
+            return None;
+        }
+        painter.galley(rect.min, galley, colour);
+        self.placed.push(rect);
+        Some(rect)
+    }
+}
+
+/// The range's two ends, each a draggable line labelled with its t; an end outside the axis
+/// sits at the edge with an arrow. Returns true when one moved.
 fn range_handles_ui(
     ui: &Ui,
     painter: &egui::Painter,
     layout: &Layout,
     range: &mut DepthRange,
+    labels: &mut Labels,
 ) -> bool {
     let (bars, legend) = (layout.bars, layout.legend);
     let mut moved = false;
@@ -185,10 +266,13 @@ fn range_handles_ui(
     for (is_min, label) in [(true, MIN_HANDLE_LABEL), (false, MAX_HANDLE_LABEL)] {
         let t = if is_min { range.min_t } else { range.max_t };
         // NaN (a degenerate axis) puts the handle at the left edge: widget rects must be numbers.
-        let x = match layout.x_of(t) {
-            x if x.is_nan() => bars.left(),
-            x => x.clamp(bars.left(), bars.right()),
+        let raw_x = layout.x_of(t);
+        let x = if raw_x.is_nan() {
+            bars.left()
+        } else {
+            raw_x.clamp(bars.left(), bars.right())
         };
+        let outside = raw_x.is_nan() || raw_x < bars.left() || raw_x > bars.right();
         let grab = Rect::from_min_max(
             Pos2::new(x - HANDLE_HALF_WIDTH_POINTS, bars.top()),
             Pos2::new(x + HANDLE_HALF_WIDTH_POINTS, legend.bottom()),
@@ -207,6 +291,29 @@ fn range_handles_ui(
             [Pos2::new(x, bars.top()), Pos2::new(x, legend.bottom())],
             Stroke::new(stroke_width, accent),
         );
+        let name = if is_min { "min" } else { "max" };
+        let arrow = match (outside, raw_x < bars.left()) {
+            (true, true) => "< ",
+            (true, false) => "> ",
+            _ => "",
+        };
+        let text = format!("{arrow}{name} {}", short_number(t));
+        let anchor = if x < bars.center().x {
+            Align2::LEFT_BOTTOM
+        } else {
+            Align2::RIGHT_BOTTOM
+        };
+        let at = Pos2::new(x, bars.top());
+        let placed = labels.place(painter, at, anchor, &text, accent, layout.block);
+        if placed.is_none() {
+            // Both ends close together: the second label goes on the other side of its line.
+            let flipped = if anchor == Align2::LEFT_BOTTOM {
+                Align2::RIGHT_BOTTOM
+            } else {
+                Align2::LEFT_BOTTOM
+            };
+            labels.place(painter, at, flipped, &text, accent, layout.block);
+        }
         if response.dragged()
             && let Some(pointer) = response.interact_pointer_pos()
         {
@@ -222,53 +329,91 @@ fn range_handles_ui(
     moved
 }
 
-/// The axis's end labels, the pixel counts, and a swatch of the no-hit colour.
-fn paint_labels(
+/// The axis's end labels, the pixel counts and a swatch of the no-hit colour, each left out
+/// where it would overlap another label.
+fn paint_axis_labels(
     ui: &Ui,
     painter: &egui::Painter,
     layout: &Layout,
     histogram: &DepthHistogram,
     no_hit_rgb: [u8; 3],
+    labels: &mut Labels,
 ) {
     let block = layout.block;
-    let label_y = layout.legend.bottom() + 2.0;
-    let font = egui::FontId::proportional(11.0);
+    let y = layout.legend.bottom() + 2.0;
     let weak = ui.visuals().weak_text_color();
-    painter.text(
-        Pos2::new(block.left(), label_y),
-        egui::Align2::LEFT_TOP,
-        format!("t {}", short_number(layout.axis_low)),
-        font.clone(),
+    let low = format!("t {}", short_number(layout.axis_low));
+    let high = format!("t {}", short_number(layout.axis_high));
+    labels.place(
+        painter,
+        Pos2::new(block.left(), y),
+        Align2::LEFT_TOP,
+        &low,
         weak,
+        block,
     );
-    painter.text(
-        Pos2::new(block.right(), label_y),
-        egui::Align2::RIGHT_TOP,
-        format!("t {}", short_number(layout.axis_high)),
-        font.clone(),
+    labels.place(
+        painter,
+        Pos2::new(block.right(), y),
+        Align2::RIGHT_TOP,
+        &high,
         weak,
+        block,
     );
-    let counts = format!(
-        "{} visible px · {} no-hit px",
-        histogram.total(),
-        histogram.no_hit
+    let counts = format!("{} px · {} no hit", histogram.total(), histogram.no_hit);
+    let at = Pos2::new(block.center().x, y);
+    if let Some(rect) = labels.place(painter, at, Align2::CENTER_TOP, &counts, weak, block) {
+        let [r, g, b] = no_hit_rgb;
+        painter.rect_filled(
+            Rect::from_min_size(
+                Pos2::new(rect.right() + 4.0, rect.top() + 2.0),
+                Vec2::splat((rect.height() - 4.0).max(2.0)),
+            ),
+            0.0,
+            Color32::from_rgb(r, g, b),
+        );
+    }
+}
+
+/// Under the pointer: the t there and how many pixels its bar holds.
+fn paint_hover_readout(
+    ui: &Ui,
+    painter: &egui::Painter,
+    layout: &Layout,
+    histogram: &DepthHistogram,
+    pointer: Pos2,
+) {
+    if !layout.bars.contains(pointer) {
+        return;
+    }
+    let t = layout.t_of(pointer.x);
+    let bin = ((t - histogram.t_low) / histogram.bin_width()).floor();
+    let count = if bin >= 0.0 && (bin as usize) < histogram.counts.len() {
+        histogram.counts[bin as usize]
+    } else {
+        0
+    };
+    let text = format!("t {} · {count} px", short_number(t));
+    painter.line_segment(
+        [
+            Pos2::new(pointer.x, layout.bars.top()),
+            Pos2::new(pointer.x, layout.bars.bottom()),
+        ],
+        Stroke::new(1.0, ui.visuals().weak_text_color()),
     );
-    let text_rect = painter.text(
-        Pos2::new(block.center().x, label_y),
-        egui::Align2::CENTER_TOP,
-        counts,
-        font,
-        weak,
+    let anchor = if pointer.x < layout.bars.center().x {
+        Align2::LEFT_TOP
+    } else {
+        Align2::RIGHT_TOP
+    };
+    let font = FontId::proportional(LABEL_FONT_POINTS);
+    let galley = painter.layout_no_wrap(text, font, ui.visuals().strong_text_color());
+    let rect = anchor.anchor_size(
+        Pos2::new(pointer.x + 4.0, layout.bars.top() + 2.0),
+        galley.size(),
     );
-    let [r, g, b] = no_hit_rgb;
-    painter.rect_filled(
-        Rect::from_min_size(
-            Pos2::new(text_rect.right() + 4.0, text_rect.top() + 2.0),
-            Vec2::splat(text_rect.height() - 4.0),
-        ),
-        0.0,
-        Color32::from_rgb(r, g, b),
-    );
+    painter.rect_filled(rect.expand(2.0), 2.0, ui.visuals().extreme_bg_color);
+    painter.galley(rect.min, galley, ui.visuals().strong_text_color());
 }
 
 #[cfg(test)]
@@ -276,16 +421,15 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_axis_holds_the_visible_t_and_the_range() {
+    fn the_axis_holds_the_visible_t() {
         let histogram = DepthHistogram {
             t_low: 9.0,
             t_high: 11.0,
             counts: vec![1, 2],
             no_hit: 0,
         };
+        // The range does not widen the axis: it follows what is visible.
         let (low, high) = histogram_axis(&histogram, &DepthRange::new(10.0, 20.0));
-        assert!(low < 9.0 && high > 20.0);
-        let (low, high) = histogram_axis(&histogram, &DepthRange::new(9.5, 10.5));
         assert!(low < 9.0 && low > 8.8 && high > 11.0 && high < 11.2);
         // A single t still gives an axis of some width.
         let single = DepthHistogram {
@@ -296,8 +440,7 @@ mod tests {
         };
         let (low, high) = histogram_axis(&single, &DepthRange::new(5.0, 5.0));
         assert!(low < 5.0 && high > 5.0);
-        // Range ends at ±1e308 (typed by hand) would make the axis infinite: it keeps the
-        // visible t, finite.
+        // Range ends at ±1e308 (typed by hand) leave it finite.
         let (low, high) = histogram_axis(&histogram, &DepthRange::new(-1e308, 1e308));
         assert!(low.is_finite() && high.is_finite() && low < 9.0 && high > 11.0);
     }

@@ -1,12 +1,17 @@
-//! The central area: the colour and depth images side by side, and under them the pixel probe
-//! (left) and the depth histogram with its legend (right). Pointer input on either image comes
-//! back as [`ImageGestures`] in image pixels (y up), which the viewer turns into navigation (see
-//! [`crate::explore::navigate`]); nothing here changes the view itself except the histogram's handles.
+//! The central area: the colour and depth images — side by side, or one above the other when
+//! that shows them larger (narrow windows) — and under them the pixel probe and the depth
+//! histogram, in a compact form in short windows. Each image has a frame, the pinned pixel's
+//! ring and a crosshair at the pixel under the pointer (on both images); the magnifier enlarges
+//! both together. Pointer input comes back as [`ImageGestures`]; nothing here changes the view
+//! itself except the histogram's handles.
 
-use egui::{Color32, PointerButton, Pos2, Rect, RichText, Sense, Stroke, TextureHandle, Ui, Vec2};
+use egui::{Color32, Rect, Sense, Stroke, TextureHandle, Ui, Vec2};
 use glam::DVec2;
 
-use super::histogram::{HISTOGRAM_POINTS, histogram_ui};
+use super::gestures::{ImageGestures, read_gestures};
+use super::histogram::{HistogramStyle, histogram_ui};
+use super::magnifier::{Magnifier, Region};
+use super::probe_panel::probe_ui;
 use super::probe_text::short_number;
 use crate::explore::depth_stats::DepthHistogram;
 use crate::render::MAX_SIDE_PX;
@@ -18,17 +23,14 @@ const IMAGE_GAP_POINTS: f32 = 8.0;
 /// Height reserved for the caption above each image, in points.
 const CAPTION_POINTS: f32 = 20.0;
 
-/// Height reserved under the images for the probe and the histogram, in points.
-pub(crate) const FOOTER_POINTS: f32 = HISTOGRAM_POINTS + 24.0;
+/// Height under the images for the probe and the histogram, in points.
+const FOOTER_POINTS: f32 = 112.0;
 
-/// Font size of the probe's lines, in points.
-const PROBE_FONT_POINTS: f32 = 11.0;
+/// The same in short windows.
+const COMPACT_FOOTER_POINTS: f32 = 64.0;
 
-/// Scrolling this many points zooms by a factor of two.
-const SCROLL_POINTS_PER_DOUBLING: f64 = 240.0;
-
-/// Orbit angle per point of drag, radians (a drag across 300 points turns about 90°).
-pub const ORBIT_RAD_PER_POINT: f64 = std::f64::consts::FRAC_PI_2 / 300.0;
+/// Below this height of the area the footer is compact.
+const COMPACT_BELOW_POINTS: f32 = 520.0;
 
 /// Accessible labels of the two images (tests find them by these).
 pub(crate) const IMAGE_LABELS: [&str; 2] = ["colour image", "depth image"];
@@ -47,159 +49,86 @@ pub(crate) struct ShownImages<'a> {
     pub(crate) histogram: Option<&'a DepthHistogram>,
 }
 
-/// What the footer under the images shows and edits.
+/// What the area shows and edits besides the images.
 pub(crate) struct Footer<'a> {
     /// Lines of the pixel probe (hovered and pinned pixel).
     pub(crate) probe_lines: &'a [String],
-    /// A pixel is pinned (an "unpin" button is shown).
+    /// The pinned pixel, if it is in view.
     pub(crate) pinned: Option<DVec2>,
+    /// A pixel is pinned (an "Unpin" button is shown), in view or not.
+    pub(crate) has_pin: bool,
+    /// The pixel under the pointer.
+    pub(crate) hover: Option<DVec2>,
     /// The depth range the histogram's handles edit (the current view's).
     pub(crate) depth_range: &'a mut DepthRange,
+    /// How the histogram is drawn.
+    pub(crate) histogram_style: HistogramStyle,
     /// Colour map for the histogram's legend.
     pub(crate) colour_map: DepthColourMap,
     /// Colour of no-hit pixels on screen.
     pub(crate) no_hit_rgb: [u8; 3],
+    /// The magnifier.
+    pub(crate) magnifier: Magnifier,
 }
 
-/// Pointer input on the images, in image pixels with y up (see [`crate::explore::navigate`]).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub(crate) struct ImageGestures {
-    /// Image size in physical pixels the area asks for.
-    pub(crate) wanted_px: (u32, u32),
-    /// Primary (or middle) drag: the picture should follow by this many pixels.
-    pub(crate) pan_px: DVec2,
-    /// Secondary drag, or a primary drag with Shift: orbit by these many points (x right, y up).
-    pub(crate) orbit_points: DVec2,
-    /// Wheel or pinch zoom: size factor (< 1 zooms in) and the anchor pixel.
-    pub(crate) zoom: Option<(f64, DVec2)>,
-    /// The pointer's position on the image, if it is over one.
-    pub(crate) hover_px: Option<DVec2>,
-    /// A click (no drag) on an image pins this position.
-    pub(crate) clicked_px: Option<DVec2>,
-    /// "Unpin" was clicked.
-    pub(crate) unpin: bool,
-    /// A histogram handle moved the depth range.
-    pub(crate) depth_range_dragged: bool,
+/// How the two images share the area.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Arrangement {
+    /// Colour left, depth right.
+    SideBySide,
+    /// Colour above, depth below.
+    Stacked,
 }
 
-/// The image size (physical pixels) that fills half of the area `available_points` at
-/// `pixels_per_point`: the two images side by side, each below its caption and above the footer.
+/// Where things go in the area.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct AreaLayout {
+    pub(crate) arrangement: Arrangement,
+    /// The space of one image, points.
+    pub(crate) image_points: Vec2,
+    /// The footer's height, points.
+    pub(crate) footer_points: f32,
+}
+
+/// The arrangement that shows the images larger (by their shorter side) in `available` points.
+pub(crate) fn area_layout(available: Vec2) -> AreaLayout {
+    let footer_points = if available.y < COMPACT_BELOW_POINTS {
+        COMPACT_FOOTER_POINTS
+    } else {
+        FOOTER_POINTS
+    };
+    let side_by_side = Vec2::new(
+        (available.x - IMAGE_GAP_POINTS) * 0.5,
+        available.y - CAPTION_POINTS - footer_points,
+    );
+    let stacked = Vec2::new(
+        available.x,
+        (available.y - 2.0 * CAPTION_POINTS - IMAGE_GAP_POINTS - footer_points) * 0.5,
+    );
+    let shorter = |v: Vec2| v.x.min(v.y);
+    let (arrangement, image_points) = if shorter(stacked) > shorter(side_by_side) {
+        (Arrangement::Stacked, stacked)
+    } else {
+        (Arrangement::SideBySide, side_by_side)
+    };
+    AreaLayout {
+        arrangement,
+        image_points: image_points.max(Vec2::splat(1.0)),
+        footer_points,
+    }
+}
+
+/// The image size (physical pixels) that fills one image's space of the area `available_points`
+/// at `pixels_per_point`.
 pub(crate) fn image_size_px(
     available_points: Vec2,
     pixels_per_point: f32,
     max_texture_side: usize,
 ) -> (u32, u32) {
-    let half = half_points(available_points);
+    let space = area_layout(available_points).image_points;
     let max_side = (max_texture_side as f32).min(MAX_SIDE_PX as f32);
     let to_px = |points: f32| (points * pixels_per_point).floor().clamp(1.0, max_side) as u32;
-    (to_px(half.x), to_px(half.y))
-}
-
-fn half_points(available: Vec2) -> Vec2 {
-    Vec2::new(
-        ((available.x - IMAGE_GAP_POINTS) * 0.5).max(1.0),
-        (available.y - CAPTION_POINTS - FOOTER_POINTS).max(1.0),
-    )
-}
-
-/// Position of `pos` on an image drawn in `rect` of `size_px` pixels: image pixels, y up.
-pub(crate) fn image_px_of(pos: Pos2, rect: Rect, size_px: [u32; 2]) -> DVec2 {
-    DVec2::new(
-        f64::from((pos.x - rect.min.x) / rect.width()) * f64::from(size_px[0]),
-        f64::from((rect.max.y - pos.y) / rect.height()) * f64::from(size_px[1]),
-    )
-}
-
-/// Where image position `px` (pixels, y up) is drawn in `rect`.
-fn pos_of_image_px(px: DVec2, rect: Rect, size_px: [u32; 2]) -> Pos2 {
-    Pos2::new(
-        rect.min.x + (px.x / f64::from(size_px[0])) as f32 * rect.width(),
-        rect.max.y - (px.y / f64::from(size_px[1])) as f32 * rect.height(),
-    )
-}
-
-/// The colour and depth images side by side, each scaled to fit its half while keeping square
-/// pixels (at 1:1 physical pixels when the frame matches the area), with the probe and the
-/// histogram under them. Returns the pointer gestures and the size the area asks for.
-pub(crate) fn images_ui(
-    ui: &mut Ui,
-    shown: Option<&ShownImages<'_>>,
-    Footer {
-        probe_lines,
-        pinned,
-        depth_range,
-        colour_map,
-        no_hit_rgb,
-    }: Footer<'_>,
-) -> ImageGestures {
-    let pixels_per_point = ui.ctx().pixels_per_point();
-    let available = ui.available_size();
-    let max_texture_side = ui.ctx().input(|i| i.max_texture_side);
-    let mut gestures = ImageGestures {
-        wanted_px: image_size_px(available, pixels_per_point, max_texture_side),
-        ..ImageGestures::default()
-    };
-    let half = half_points(available);
-    ui.horizontal_top(|ui| {
-        ui.spacing_mut().item_spacing.x = IMAGE_GAP_POINTS;
-        let captions = match shown {
-            Some(images) => [
-                "colour".to_owned(),
-                format!(
-                    "depth  (t {} near … {} far)",
-                    short_number(images.depth_range.min_t),
-                    short_number(images.depth_range.max_t)
-                ),
-            ],
-            None => ["colour".to_owned(), "depth".to_owned()],
-        };
-        for (index, caption) in captions.into_iter().enumerate() {
-            ui.vertical(|ui| {
-                ui.set_width(half.x);
-                ui.label(caption);
-                let (area, response) = ui.allocate_exact_size(half, Sense::click_and_drag());
-                let label = IMAGE_LABELS[index];
-                response.widget_info(|| {
-                    egui::WidgetInfo::labeled(egui::Role::Image, true, label.to_owned())
-                });
-                match shown {
-                    None => {
-                        ui.painter().rect_filled(area, 0.0, Color32::from_gray(30));
-                    }
-                    Some(images) => {
-                        let texture = if index == 0 {
-                            images.colour
-                        } else {
-                            images.depth
-                        };
-                        let rect = image_rect(area, images.size_px, pixels_per_point);
-                        ui.painter().image(
-                            texture.id(),
-                            rect,
-                            Rect::from_min_max(Pos2::ZERO, Pos2::new(1.0, 1.0)),
-                            Color32::WHITE,
-                        );
-                        if let Some(pin) = pinned {
-                            let at = pos_of_image_px(pin, rect, images.size_px);
-                            ui.painter()
-                                .circle_stroke(at, 5.0, Stroke::new(2.0, Color32::BLACK));
-                            ui.painter()
-                                .circle_stroke(at, 4.0, Stroke::new(1.5, Color32::WHITE));
-                        }
-                        read_gestures(ui, &response, rect, images.size_px, &mut gestures);
-                    }
-                }
-                if index == 0 {
-                    probe_ui(ui, probe_lines, pinned.is_some(), &mut gestures);
-                } else {
-                    let histogram = shown.and_then(|s| s.histogram);
-                    gestures.depth_range_dragged =
-                        histogram_ui(ui, histogram, depth_range, colour_map, no_hit_rgb);
-                }
-            });
-        }
-    });
-    gestures
+    (to_px(space.x), to_px(space.y))
 }
 
 /// Where a frame of `size_px` is drawn in `area`: scaled to fit, square pixels, snapped to the
@@ -211,68 +140,177 @@ fn image_rect(area: Rect, size_px: [u32; 2], pixels_per_point: f32) -> Rect {
     Rect::from_min_size(min, frame_points * scale)
 }
 
-/// Reads drags, wheel, pinch, hover and clicks on one image into `gestures`.
-fn read_gestures(
-    ui: &Ui,
-    response: &egui::Response,
-    rect: Rect,
-    size_px: [u32; 2],
-    gestures: &mut ImageGestures,
-) {
-    let px_per_point = DVec2::new(
-        f64::from(size_px[0]) / f64::from(rect.width()),
-        f64::from(size_px[1]) / f64::from(rect.height()),
-    );
-    let on_image = |pos: Pos2| rect.contains(pos).then(|| image_px_of(pos, rect, size_px));
-    if response.dragged() {
-        let delta = response.drag_delta();
-        let delta_points = DVec2::new(f64::from(delta.x), -f64::from(delta.y));
-        let shift = ui.input(|i| i.modifiers.shift);
-        if response.dragged_by(PointerButton::Secondary)
-            || (response.dragged_by(PointerButton::Primary) && shift)
-        {
-            gestures.orbit_points += delta_points;
-        } else {
-            gestures.pan_px += delta_points * px_per_point;
+/// The images, the probe and the histogram. Returns the pointer gestures and the image size the
+/// area asks for.
+pub(crate) fn images_ui(
+    ui: &mut Ui,
+    shown: Option<&ShownImages<'_>>,
+    footer: Footer<'_>,
+) -> ImageGestures {
+    let pixels_per_point = ui.ctx().pixels_per_point();
+    let available = ui.available_size();
+    let max_texture_side = ui.ctx().input(|i| i.max_texture_side);
+    let layout = area_layout(available);
+    let mut gestures = ImageGestures {
+        wanted_px: image_size_px(available, pixels_per_point, max_texture_side),
+        ..ImageGestures::default()
+    };
+    let captions = captions(shown);
+    let Footer {
+        probe_lines,
+        pinned,
+        has_pin,
+        hover,
+        depth_range,
+        histogram_style,
+        colour_map,
+        no_hit_rgb,
+        magnifier,
+    } = footer;
+    let marks = Marks {
+        pinned,
+        hover,
+        magnifier,
+    };
+    let mut image = |ui: &mut Ui, index: usize| {
+        ui.label(&captions[index]);
+        image_ui(ui, index, layout.image_points, shown, marks, &mut gestures);
+    };
+    let half_width = |ui: &Ui| ((ui.available_width() - IMAGE_GAP_POINTS) * 0.5).max(1.0);
+    match layout.arrangement {
+        Arrangement::SideBySide => {
+            ui.horizontal_top(|ui| {
+                ui.spacing_mut().item_spacing.x = IMAGE_GAP_POINTS;
+                for index in 0..2 {
+                    ui.vertical(|ui| {
+                        ui.set_width(layout.image_points.x);
+                        image(ui, index);
+                    });
+                }
+            });
+        }
+        Arrangement::Stacked => {
+            ui.spacing_mut().item_spacing.y = IMAGE_GAP_POINTS;
+            image(ui, 0);
+            image(ui, 1);
         }
     }
-    let hover = response.hover_pos().and_then(on_image);
-    if let Some(anchor) = hover {
-        gestures.hover_px = Some(anchor);
-        let (scroll, pinch) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
-        let factor = (-f64::from(scroll) / SCROLL_POINTS_PER_DOUBLING).exp2() / f64::from(pinch);
-        if factor != 1.0 && factor.is_finite() {
-            gestures.zoom = Some((factor, anchor));
-        }
-    }
-    if response.clicked() {
-        gestures.clicked_px = response.interact_pointer_pos().and_then(on_image);
+    let footer_size = Vec2::new(ui.available_width(), layout.footer_points);
+    ui.allocate_ui(footer_size, |ui| {
+        ui.horizontal_top(|ui| {
+            ui.spacing_mut().item_spacing.x = IMAGE_GAP_POINTS;
+            let width = half_width(ui);
+            ui.vertical(|ui| {
+                ui.set_width(width);
+                if probe_ui(ui, probe_lines, has_pin, layout.footer_points - 4.0) {
+                    gestures.unpin = true;
+                }
+            });
+            ui.vertical(|ui| {
+                ui.set_width(width);
+                let histogram = shown.and_then(|s| s.histogram);
+                let height = layout.footer_points;
+                gestures.depth_range_dragged = histogram_ui(
+                    ui,
+                    histogram,
+                    depth_range,
+                    histogram_style.with_height(height),
+                    colour_map,
+                    no_hit_rgb,
+                );
+            });
+        });
+    });
+    gestures
+}
+
+/// The captions above the two images.
+fn captions(shown: Option<&ShownImages<'_>>) -> [String; 2] {
+    match shown {
+        Some(images) => [
+            "colour".to_owned(),
+            format!(
+                "depth  (t {} near … {} far)",
+                short_number(images.depth_range.min_t),
+                short_number(images.depth_range.max_t)
+            ),
+        ],
+        None => ["colour".to_owned(), "depth".to_owned()],
     }
 }
 
-/// The probe's lines under the colour image, and an "Unpin" button while a pixel is pinned.
-fn probe_ui(ui: &mut Ui, lines: &[String], pinned: bool, gestures: &mut ImageGestures) {
-    let (rect, _) = ui.allocate_exact_size(
-        Vec2::new(ui.available_width(), FOOTER_POINTS - 4.0),
-        Sense::hover(),
+/// What is drawn over both images.
+#[derive(Clone, Copy)]
+struct Marks {
+    pinned: Option<DVec2>,
+    hover: Option<DVec2>,
+    magnifier: Magnifier,
+}
+
+/// One image in a space of `space` points: the texture (the magnifier's region of it), its frame,
+/// the pixel grid when magnified, the pinned pixel's ring and the crosshair.
+fn image_ui(
+    ui: &mut Ui,
+    index: usize,
+    space: Vec2,
+    shown: Option<&ShownImages<'_>>,
+    marks: Marks,
+    gestures: &mut ImageGestures,
+) {
+    let (area, response) = ui.allocate_exact_size(space, Sense::click_and_drag());
+    let label = IMAGE_LABELS[index];
+    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, label.to_owned()));
+    let Some(images) = shown else {
+        ui.painter().rect_filled(area, 0.0, Color32::from_gray(30));
+        return;
+    };
+    let texture = if index == 0 {
+        images.colour
+    } else {
+        images.depth
+    };
+    let rect = image_rect(area, images.size_px, ui.ctx().pixels_per_point());
+    let region = marks.magnifier.region(images.size_px);
+    let painter = ui.painter_at(area);
+    painter.image(
+        texture.id(),
+        rect,
+        region.uv(images.size_px),
+        Color32::WHITE,
     );
-    let mut child = ui.new_child(egui::UiBuilder::new().max_rect(rect));
-    // The button first, so it stays put while the hover lines come and go.
-    if pinned
-        && child
-            .small_button("Unpin")
-            .on_hover_text("Escape unpins too")
-            .clicked()
-    {
-        gestures.unpin = true;
+    region.paint_grid(&painter, rect);
+    // A frame, so a background as dark as the panel still shows where the image ends.
+    painter.rect_stroke(
+        rect.expand(1.0),
+        0.0,
+        Stroke::new(1.0, ui.visuals().widgets.noninteractive.bg_stroke.color),
+        egui::StrokeKind::Outside,
+    );
+    if let Some(pin) = marks.pinned {
+        let at = region.pos_of_image_px(pin, rect);
+        painter.circle_stroke(at, 5.0, Stroke::new(2.0, Color32::BLACK));
+        painter.circle_stroke(at, 4.0, Stroke::new(1.5, Color32::WHITE));
     }
-    if lines.is_empty() {
-        child.weak("hover an image to probe a pixel; click to pin it");
+    if let Some(hover) = marks.hover {
+        paint_crosshair(&painter, region, rect, hover);
     }
-    for line in lines {
-        child.add(
-            egui::Label::new(RichText::new(line).monospace().size(PROBE_FONT_POINTS)).truncate(),
-        );
+    read_gestures(ui, &response, rect, region, gestures);
+}
+
+/// A crosshair at the centre of the pixel `hover` (image pixels, y up), in black and white so it
+/// shows on any colour.
+fn paint_crosshair(painter: &egui::Painter, region: Region, rect: Rect, hover: DVec2) {
+    let centre = region.pos_of_image_px(hover.floor() + DVec2::splat(0.5), rect);
+    if !rect.contains(centre) {
+        return;
+    }
+    for (width, colour) in [(3.0, Color32::BLACK), (1.0, Color32::WHITE)] {
+        let stroke = Stroke::new(width, colour);
+        let arm = 9.0;
+        painter.line_segment([centre - Vec2::X * arm, centre - Vec2::X * 3.0], stroke);
+        painter.line_segment([centre + Vec2::X * 3.0, centre + Vec2::X * arm], stroke);
+        painter.line_segment([centre - Vec2::Y * arm, centre - Vec2::Y * 3.0], stroke);
+        painter.line_segment([centre + Vec2::Y * 3.0, centre + Vec2::Y * arm], stroke);
     }
 }
 
@@ -282,10 +320,11 @@ mod tests {
 
     #[test]
     fn render_size_follows_physical_pixels() {
-        // 808 points wide: two images of (808 − 8) / 2 = 400 points; the height is what the
-        // caption and the footer leave.
+        // 808 points wide: two images of (808 − 8) / 2 = 400 points side by side; the height is
+        // what the caption and the footer leave.
         let height = 600.0 + CAPTION_POINTS + FOOTER_POINTS;
         let area = Vec2::new(808.0, height);
+        assert_eq!(area_layout(area).arrangement, Arrangement::SideBySide);
         assert_eq!(image_size_px(area, 1.0, 8192), (400, 600));
         assert_eq!(image_size_px(area, 2.0, 8192), (800, 1200));
         assert_eq!(image_size_px(area, 1.5, 8192), (600, 900));
@@ -295,16 +334,13 @@ mod tests {
     }
 
     #[test]
-    fn pointer_positions_map_to_image_pixels_y_up() {
-        let rect = Rect::from_min_size(Pos2::new(10.0, 20.0), Vec2::new(100.0, 50.0));
-        let size = [200, 100];
-        assert_eq!(image_px_of(rect.left_bottom(), rect, size), DVec2::ZERO);
-        assert_eq!(
-            image_px_of(rect.right_top(), rect, size),
-            DVec2::new(200.0, 100.0)
-        );
-        let px = DVec2::new(50.0, 25.0);
-        let back = image_px_of(pos_of_image_px(px, rect, size), rect, size);
-        assert!((back - px).length() < 1e-3);
+    fn narrow_tall_areas_stack_the_images_and_short_ones_shrink_the_footer() {
+        let tall = area_layout(Vec2::new(400.0, 900.0));
+        assert_eq!(tall.arrangement, Arrangement::Stacked);
+        assert!(tall.image_points.x.min(tall.image_points.y) > 300.0);
+        let short = area_layout(Vec2::new(400.0, 250.0));
+        assert_eq!(short.arrangement, Arrangement::SideBySide);
+        assert_eq!(short.footer_points, COMPACT_FOOTER_POINTS);
+        assert!(short.image_points.x.min(short.image_points.y) >= 130.0);
     }
 }

@@ -4,15 +4,23 @@
 use crate::explore::probe::Probe;
 
 /// Three lines describing a probe: where the pixel is, what its ray hits, and where.
-pub(crate) fn describe_probe(name: &str, probe: &Probe) -> Vec<String> {
+pub(crate) fn describe_probe(name: &str, probe: &Probe, depth_rgb: [u8; 3]) -> Vec<String> {
     let short = short_number;
-    let mut lines = vec![format!(
-        "{name:<6} pixel ({}, {}) · screen ({}, {})",
-        probe.x_px,
-        probe.y_up_px,
-        short(probe.screen_world.x),
-        short(probe.screen_world.y)
-    )];
+    let rgb = |[r, g, b]: [u8; 3]| format!("{r} {g} {b} #{r:02x}{g:02x}{b:02x}");
+    let mut lines = vec![
+        format!(
+            "{name:<6} pixel ({}, {}) · screen ({}, {})",
+            probe.x_px,
+            probe.y_up_px,
+            short(probe.screen_world.x),
+            short(probe.screen_world.y)
+        ),
+        format!(
+            "       colour {} · depth {}",
+            rgb(probe.colour_rgb),
+            rgb(depth_rgb)
+        ),
+    ];
     match &probe.hit {
         None => lines.push("       no hit".to_owned()),
         Some(hit) => {
@@ -41,11 +49,18 @@ pub(crate) fn describe_probe(name: &str, probe: &Probe) -> Vec<String> {
     lines
 }
 
-/// The probe's lines: the pinned pixel first, then the hovered one.
-pub(crate) fn probe_lines(pinned: Option<Probe>, hover: Option<Probe>) -> Vec<String> {
+/// The probe's lines: the pinned pixel first, then the hovered one; `depth_rgb` gives a probed
+/// pixel's colour in the depth image on screen.
+pub(crate) fn probe_lines(
+    pinned: Option<Probe>,
+    hover: Option<Probe>,
+    depth_rgb: impl Fn(&Probe) -> [u8; 3],
+) -> Vec<String> {
     [("pinned", pinned), ("hover", hover)]
         .into_iter()
-        .filter_map(|(name, probe)| probe.map(|probe| describe_probe(name, &probe)))
+        .filter_map(|(name, probe)| {
+            probe.map(|probe| describe_probe(name, &probe, depth_rgb(&probe)))
+        })
         .flatten()
         .collect()
 }

@@ -1,7 +1,9 @@
-//! The status bar (render time, size, precision, what is on screen, the scene, load progress,
-//! the last message) and the error banner of a scene that failed to load.
+//! The status bar (the last message first, then render time, size, precision, what is on screen,
+//! the magnification, the scene, load progress) on one line whatever the window's width: the
+//! message and the scene's name are shortened with "…" and shown whole on hover. And the error of
+//! a scene that failed to load, floating over the images so that it moves nothing.
 
-use egui::{RichText, Ui};
+use egui::{Label, RichText, Ui};
 
 use crate::app::status::Status;
 use crate::render::Precision;
@@ -20,76 +22,89 @@ pub(crate) struct StatusLine<'a> {
     pub(crate) precision: Option<Precision>,
     /// What is on screen: "preview" or the refined quality.
     pub(crate) stage: Option<String>,
+    /// The magnifier's zoom (1: not magnified).
+    pub(crate) magnification: f64,
     /// A render is in flight.
     pub(crate) busy: bool,
     /// A scene load that has run long enough to show its progress: its name and share done.
     pub(crate) loading: Option<(String, f32)>,
-    /// Message of the last action (export result, view problem).
+    /// Message of the last action (export result, view problem), while it is current.
     pub(crate) message: Option<&'a Status>,
 }
 
-/// The status bar: render time, image size, sphere count, scene path, last message.
+/// The status bar.
 pub(crate) fn status_bar_ui(ui: &mut Ui, status: &StatusLine<'_>) {
     ui.horizontal(|ui| {
+        if status.busy {
+            ui.spinner();
+        }
+        if let Some((name, fraction)) = &status.loading {
+            ui.add(
+                egui::ProgressBar::new(*fraction)
+                    .desired_width(120.0)
+                    .show_percentage(),
+            )
+            .on_hover_text(format!("loading {name}"));
+        }
         match status.render_ms {
-            Some(ms) => ui.label(format!("render {ms:.1} ms")),
-            None => ui.label("render —"),
-        };
-        ui.separator();
+            Some(ms) => ui.label(format!("{ms:.1} ms")),
+            None => ui.label("—"),
+        }
+        .on_hover_text("time to render the frame on screen and prepare its textures");
         if let Some([w, h]) = status.size_px {
-            ui.label(format!("{w}×{h} px"));
-            ui.separator();
+            ui.label(format!("{w}×{h}"));
         }
         if let Some(precision) = status.precision {
             ui.label(precision.name());
-            ui.separator();
         }
         if let Some(stage) = &status.stage {
             ui.label(stage);
-            ui.separator();
+        }
+        if status.magnification > 1.0 {
+            ui.label(format!("magnified {:.1}×", status.magnification))
+                .on_hover_text("the images enlarged without a new render (1 or Ctrl+0: fit)");
         }
         let plural = if status.sphere_count == 1 { "" } else { "s" };
         ui.label(format!("{} sphere{plural}", status.sphere_count));
         ui.separator();
-        ui.label(&status.scene_name);
-        if status.busy {
-            ui.separator();
-            ui.spinner();
-        }
-        if let Some((name, fraction)) = &status.loading {
-            ui.separator();
-            ui.add(
-                egui::ProgressBar::new(*fraction)
-                    .desired_width(160.0)
-                    .show_percentage(),
-            );
-            ui.label(format!("loading {name}"));
-        }
         if let Some(message) = status.message {
-            ui.separator();
             let colour = if message.is_error() {
                 ui.visuals().error_fg_color
             } else {
                 ui.visuals().text_color()
             };
-            ui.label(RichText::new(&message.text).color(colour));
+            ui.add(Label::new(RichText::new(&message.text).color(colour)).truncate());
+        } else {
+            ui.add(Label::new(RichText::new(&status.scene_name).weak()).truncate());
         }
     });
 }
 
-/// A red banner with an error (e.g. a scene that failed to parse) and a dismiss button.
-/// Returns true when dismissed.
-pub(crate) fn error_banner_ui(ui: &mut Ui, message: &str) -> bool {
+/// A scene's error floating over the top of the images with a "Dismiss" button: it moves nothing
+/// else. Returns true when dismissed.
+pub(crate) fn error_overlay_ui(ctx: &egui::Context, message: &str) -> bool {
     let mut dismissed = false;
-    ui.horizontal(|ui| {
-        ui.label(
-            RichText::new(message)
-                .color(ui.visuals().error_fg_color)
-                .monospace(),
-        );
-        if ui.button("Dismiss").clicked() {
-            dismissed = true;
-        }
-    });
+    egui::Area::new(egui::Id::unique("scene error"))
+        .anchor(egui::Align2::CENTER_TOP, egui::vec2(0.0, 40.0))
+        .order(egui::Order::Foreground)
+        .show(ctx, |ui| {
+            egui::Frame::popup(ui.style()).show(ui, |ui| {
+                let width = (ctx.content_rect().width() - 60.0).max(100.0);
+                ui.set_max_width(width);
+                ui.horizontal(|ui| {
+                    if ui.button("Dismiss").clicked() {
+                        dismissed = true;
+                    }
+                    ui.add(
+                        Label::new(
+                            RichText::new(message)
+                                .color(ui.visuals().error_fg_color)
+                                .monospace(),
+                        )
+                        .wrap(),
+                    );
+                });
+            });
+        });
     dismissed
 }

@@ -15,44 +15,122 @@ fn widened(range: &std::ops::RangeInclusive<f64>, value: f64) -> std::ops::Range
     }
 }
 
-fn slider(ui: &mut Ui, label: &str, value: &mut f64, range: std::ops::RangeInclusive<f64>) {
-    ui.add(
-        egui::Slider::new(value, range)
-            .text(label)
-            .clamping(egui::SliderClamping::Never)
-            .max_decimals(6),
-    );
+/// Room beside a slider for its value field and its name, points.
+const SLIDER_TEXT_POINTS: f32 = 150.0;
+
+/// Shift or Alt while dragging a slider moves it at this share of the speed.
+pub(crate) const FINE_DRAG: f64 = 0.1;
+
+/// A notch of the wheel on a focused slider nudges it by this share of its range (Shift: a
+/// tenth of that).
+const NUDGE_SHARE: f64 = 0.005;
+
+/// One slider of the view: as wide as the panel allows, fine with Shift or Alt, nudged by the
+/// wheel while it has the keyboard focus, with a tooltip.
+fn slider(
+    ui: &mut Ui,
+    label: &str,
+    value: &mut f64,
+    range: std::ops::RangeInclusive<f64>,
+    logarithmic: bool,
+    tooltip: &str,
+) {
+    let before = *value;
+    ui.spacing_mut().slider_width = (ui.available_width() - SLIDER_TEXT_POINTS).max(60.0);
+    let (low, high) = (*range.start(), *range.end());
+    let response = ui
+        .add(
+            egui::Slider::new(value, range)
+                .text(label)
+                .logarithmic(logarithmic)
+                .clamping(egui::SliderClamping::Never)
+                .max_decimals(6),
+        )
+        .on_hover_text(format!(
+            "{tooltip}\nType a value, drag (Shift or Alt: fine), or scroll while focused"
+        ));
+    let modifiers = ui.input(|i| i.modifiers);
+    let fine = modifiers.shift || modifiers.alt;
+    if response.dragged() && fine && value.is_finite() && before.is_finite() {
+        *value = before + (*value - before) * FINE_DRAG;
+    }
+    if response.has_focus() {
+        // Wheel notches (not the smoothed scroll, which spreads one notch over frames).
+        let scroll: f32 = ui.input(|i| {
+            i.raw
+                .events
+                .iter()
+                .filter_map(|event| match event {
+                    egui::Event::MouseWheel { delta, .. } => Some(delta.y),
+                    _ => None,
+                })
+                .sum()
+        });
+        if scroll != 0.0 && before.is_finite() {
+            let share = if fine { NUDGE_SHARE * 0.1 } else { NUDGE_SHARE };
+            let notches = f64::from(scroll.signum());
+            *value = if logarithmic && before > 0.0 {
+                before * (1.0 + 10.0 * share).powf(notches)
+            } else {
+                before + notches * share * (high - low)
+            };
+        }
+    }
+}
+
+/// What an edit of the view controls did.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub(crate) struct Edit {
+    /// A valid change was applied to the view.
+    pub(crate) applied: bool,
+    /// A change that would make the view unrenderable, not applied, and why.
+    pub(crate) rejected: Option<String>,
 }
 
 /// Sliders (each with a typed-in value) for the camera centre, size, depth range, direction and
-/// up. Edits `view` in place. ("Reset view" is in the toolbar.)
-pub(crate) fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) {
+/// up. A change that leaves the view renderable is applied to `view`; one that does not is not
+/// (the fields show the view's values again) and the returned [`Edit`] says why, so an invalid
+/// value never blocks the valid edits after it.
+pub(crate) fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) -> Edit {
+    let mut candidate = *view;
     ui.heading("View");
+    let axes = ["x", "y", "z"];
     for (axis, name) in ["centre x", "centre y", "centre z"].into_iter().enumerate() {
-        let mut value = view.center_world[axis];
-        slider(ui, name, &mut value, ranges.center_world[axis].clone());
-        view.center_world[axis] = value;
+        let tooltip = format!("The camera's centre, world {}", axes[axis]);
+        slider(
+            ui,
+            name,
+            &mut candidate.center_world[axis],
+            ranges.center_world[axis].clone(),
+            false,
+            &tooltip,
+        );
     }
-    ui.add(
-        egui::Slider::new(&mut view.size_world, ranges.size_world.clone())
-            .text("size")
-            .logarithmic(true)
-            .clamping(egui::SliderClamping::Never)
-            .max_decimals(6),
+    slider(
+        ui,
+        "size",
+        &mut candidate.size_world,
+        ranges.size_world.clone(),
+        true,
+        "The screen's width in world units: smaller zooms in",
     );
     ui.separator();
     ui.label("Depth range (t: near … far)");
     slider(
         ui,
         "depth min",
-        &mut view.depth_range.min_t,
+        &mut candidate.depth_range.min_t,
         ranges.depth_t.clone(),
+        false,
+        "t drawn white (near)",
     );
     slider(
         ui,
         "depth max",
-        &mut view.depth_range.max_t,
+        &mut candidate.depth_range.max_t,
         ranges.depth_t.clone(),
+        false,
+        "t drawn black (far)",
     );
     ui.separator();
     ui.collapsing("Direction and up", |ui| {
@@ -61,18 +139,46 @@ pub(crate) fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) {
             .into_iter()
             .enumerate()
         {
-            let mut value = view.direction_world[axis];
-            let range = widened(&unit, value);
-            slider(ui, name, &mut value, range);
-            view.direction_world[axis] = value;
+            let range = widened(&unit, candidate.direction_world[axis]);
+            let tooltip = format!("The view direction, world {} (any length)", axes[axis]);
+            slider(
+                ui,
+                name,
+                &mut candidate.direction_world[axis],
+                range,
+                false,
+                &tooltip,
+            );
         }
         for (axis, name) in ["up x", "up y", "up z"].into_iter().enumerate() {
-            let mut value = view.up_world[axis];
-            let range = widened(&unit, value);
-            slider(ui, name, &mut value, range);
-            view.up_world[axis] = value;
+            let range = widened(&unit, candidate.up_world[axis]);
+            let tooltip = format!("Up, world {} (need not be perpendicular)", axes[axis]);
+            slider(
+                ui,
+                name,
+                &mut candidate.up_world[axis],
+                range,
+                false,
+                &tooltip,
+            );
         }
     });
+    if candidate == *view {
+        return Edit::default();
+    }
+    match candidate.validate() {
+        Ok(_) => {
+            *view = candidate;
+            Edit {
+                applied: true,
+                rejected: None,
+            }
+        }
+        Err(error) => Edit {
+            applied: false,
+            rejected: Some(format!("not applied: {error}")),
+        },
+    }
 }
 
 /// The quality section: precision mode.
@@ -102,23 +208,32 @@ pub(crate) fn quality_ui(ui: &mut Ui, quality: &mut Quality) {
                 }
             })
             .response
-            .labelled_by(label.id);
+            .labelled_by(label.id)
+            .on_hover_text(
+                "Samples per pixel: 1 is the course's exact picture; more smooths edges",
+            );
     });
     if samples == 1 {
         quality.sampling = None;
         return;
     }
+    // The trade-off study's front (docs/tradeoff.md): uniform samples with a box over the pixel.
     let sampling = quality.sampling.get_or_insert(Sampling {
-        sampler: Sampler::Jittered,
+        sampler: Sampler::Uniform,
         samples,
-        filter: Filter::Tent { radius: 1.0 },
+        filter: Filter::PIXEL_BOX,
         seed: 0,
     });
     sampling.samples = samples;
     ui.horizontal(|ui| {
         ui.label("sampler");
         for sampler in Sampler::ALL {
-            ui.radio_value(&mut sampling.sampler, sampler, sampler.name());
+            ui.radio_value(&mut sampling.sampler, sampler, sampler.name())
+                .on_hover_text(match sampler {
+                    Sampler::Uniform => "an n×n grid of cell centres",
+                    Sampler::Jittered => "one random point in each cell of an n×n grid",
+                    Sampler::Random => "independent random points",
+                });
         }
     });
     ui.horizontal(|ui| {
@@ -131,6 +246,7 @@ pub(crate) fn quality_ui(ui: &mut Ui, quality: &mut Quality) {
         ] {
             if ui
                 .radio(sampling.filter.name() == filter.name(), filter.name())
+                .on_hover_text("How samples combine into a pixel; box 0.5 is the pixel's area")
                 .clicked()
             {
                 sampling.filter = filter;
@@ -143,7 +259,8 @@ pub(crate) fn quality_ui(ui: &mut Ui, quality: &mut Quality) {
                 .range(0.1..=MAX_FILTER_SIZE)
                 .speed(0.05),
         )
-        .labelled_by(label.id);
+        .labelled_by(label.id)
+        .on_hover_text("The filter's radius (sigma for Gaussian), pixels");
         sampling.filter = sampling.filter.with_size(size);
     });
 }

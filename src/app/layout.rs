@@ -1,0 +1,207 @@
+//! Composing the window: the toolbar, the status bar, the controls (a side panel in wide windows,
+//! a drawer over the images in narrow ones, always reachable from the toolbar's "Controls"), the
+//! central area with the images, and the windows above it (the replace confirmation, the
+//! shortcuts overlay, a scene's error). Nothing here moves the layout when a message comes or
+//! goes: errors float over the images, the status line keeps one line.
+
+use std::path::PathBuf;
+
+use super::ViewerApp;
+use super::actions::Action;
+use super::ui::histogram::HistogramStyle;
+use super::ui::images::{Footer, ShownImages, images_ui};
+use super::ui::status_bar::{StatusLine, error_overlay_ui, status_bar_ui};
+use super::ui::{
+    depth_section, file_sections, help, probe_text, toolbar, view_controls, views_section,
+};
+use crate::explore::probe::pixel_of_point;
+
+/// Below this window width the controls are a drawer over the images, not a side panel.
+pub(crate) const DRAWER_BELOW_POINTS: f32 = 900.0;
+
+/// Width of the side panel (or the drawer), points.
+const PANEL_POINTS: f32 = 320.0;
+
+impl ViewerApp {
+    /// The whole window; returns what the user asked for.
+    pub(super) fn layout_ui(&mut self, ui: &mut egui::Ui) -> Vec<Action> {
+        let mut actions = Vec::new();
+        let window_width = ui.available_width();
+        let narrow = window_width < DRAWER_BELOW_POINTS;
+        egui::Panel::top("toolbar").show(ui, |ui| {
+            let state = toolbar::ToolbarState {
+                show_controls: &mut self.settings.show_controls,
+                can_undo: self.history.can_undo(&self.view),
+                can_redo: self.history.can_redo(),
+                narrow: window_width < toolbar::MENU_BELOW_POINTS,
+            };
+            actions.extend(toolbar::toolbar_ui(ui, state));
+        });
+        egui::Panel::bottom("status").show(ui, |ui| status_bar_ui(ui, &self.status_line()));
+        if self.settings.show_controls && !narrow {
+            egui::Panel::left("controls")
+                .resizable(true)
+                .default_size(PANEL_POINTS)
+                .max_size((0.45 * window_width).max(200.0))
+                .show(ui, |ui| actions.extend(self.side_panel_ui(ui)));
+        }
+        egui::CentralPanel::default().show(ui, |ui| self.images_ui(ui));
+        let ctx = ui.ctx().clone();
+        if self.settings.show_controls && narrow {
+            let mut open = true;
+            let height = ctx.content_rect().height() - 100.0;
+            egui::Window::new("Controls")
+                .open(&mut open)
+                .anchor(egui::Align2::LEFT_TOP, egui::vec2(4.0, 36.0))
+                .default_width(PANEL_POINTS.min(window_width - 16.0))
+                .max_height(height.max(100.0))
+                .collapsible(false)
+                .resizable(false)
+                .show(&ctx, |ui| actions.extend(self.side_panel_ui(ui)));
+            self.settings.show_controls = open;
+        }
+        if let Some(error) = self.scene_error.clone()
+            && error_overlay_ui(&ctx, &error)
+        {
+            self.scene_error = None;
+        }
+        self.confirm_ui(&ctx);
+        if self.help_open {
+            self.help_open = help::help_ui(&ctx);
+        }
+        actions
+    }
+
+    /// The controls: view, depth tools, quality, named views, file and export sections.
+    fn side_panel_ui(&mut self, ui: &mut egui::Ui) -> Vec<Action> {
+        let mut actions = Vec::new();
+        egui::ScrollArea::vertical().show(ui, |ui| {
+            let ranges = self.loaded.ranges(&self.view);
+            let edit = view_controls::controls_ui(ui, &mut self.view, &ranges);
+            if let Some(problem) = edit.rejected {
+                self.fields.invalid_edit = Some(problem);
+            } else if edit.applied {
+                self.fields.invalid_edit = None;
+            }
+            if let Some(problem) = &self.fields.invalid_edit {
+                ui.colored_label(ui.visuals().error_fg_color, problem);
+            }
+            actions.extend(depth_section::depth_tools_ui(ui, &mut self.settings.depth));
+            ui.separator();
+            view_controls::quality_ui(ui, &mut self.settings.quality);
+            ui.separator();
+            let named = self
+                .loaded
+                .path
+                .as_ref()
+                .map(|path| super::views::SceneViews::key(path))
+                .and_then(|key| self.settings.views.named.get(&key));
+            let has_file = self.loaded.path.is_some();
+            actions.extend(views_section::views_ui(
+                ui,
+                named.map_or(&[], Vec::as_slice),
+                &mut self.fields.view_name,
+                has_file,
+            ));
+            ui.separator();
+            let export = &mut self.settings.export;
+            let file =
+                file_sections::file_ui(ui, &mut self.fields.path_text, &mut export.scene_path);
+            if let Some(path) = file.open_path {
+                actions.push(Action::Open(PathBuf::from(path.trim())));
+            }
+            if file.save_view {
+                actions.push(Action::SaveViewTo(PathBuf::from(export.scene_path.trim())));
+            }
+            ui.separator();
+            if file_sections::export_ui(ui, export, self.dialog_note).export_to_path {
+                actions.push(Action::ExportTo(PathBuf::from(export.path.trim())));
+            }
+        });
+        actions
+    }
+
+    /// What the status bar shows now.
+    fn status_line(&self) -> StatusLine<'_> {
+        let shown = self.shown.as_ref();
+        StatusLine {
+            render_ms: shown.map(|s| s.render_ms),
+            size_px: shown.map(|s| [s.frame.width_px, s.frame.height_px]),
+            precision: shown.map(|s| s.frame.precision),
+            stage: shown.map(|s| match s.quality.sampling {
+                _ if self.showing_preview() => "preview (1 sample)".to_owned(),
+                Some(sampling) => format!(
+                    "{} {} samples, {}",
+                    sampling.samples,
+                    sampling.sampler.name(),
+                    sampling.filter
+                ),
+                None => "1 sample".to_owned(),
+            }),
+            magnification: self.magnifier.zoom,
+            sphere_count: self.loaded.scene.spheres.len(),
+            scene_name: self.loaded.name(),
+            busy: self.busy(),
+            loading: self
+                .loading
+                .as_ref()
+                .filter(|pending| pending.shows_progress())
+                .map(|pending| (pending.path.display().to_string(), pending.fraction())),
+            message: self.status.as_ref().filter(|status| !status.is_stale()),
+        }
+    }
+
+    /// A render or a write is under way.
+    pub(super) fn busy(&self) -> bool {
+        self.worker.as_ref().is_some_and(|w| !w.is_idle()) || self.writing.is_some()
+    }
+
+    /// Where the pinned point is on the frame on screen (image pixels, y up), if it is in view.
+    pub(super) fn pinned_px(&self) -> Option<glam::DVec2> {
+        let shown = self.shown.as_ref()?;
+        let px = pixel_of_point(&shown.view, self.probe.pinned_world?)?;
+        let inside = px.x >= 0.0
+            && px.y >= 0.0
+            && px.x < f64::from(shown.view.width_px)
+            && px.y < f64::from(shown.view.height_px);
+        inside.then_some(px)
+    }
+
+    /// The two images with the probe and the histogram; applies the gestures made on them.
+    fn images_ui(&mut self, ui: &mut egui::Ui) {
+        let style = self.depth_style();
+        let range = self.shown.as_ref().map(|s| s.view.depth_range);
+        let depth_rgb = |probe: &crate::explore::probe::Probe| match (range, probe.hit) {
+            (Some(range), Some(hit)) => style.colour_map.rgb(&range, hit.t, style.no_hit_rgb),
+            _ => style.no_hit_rgb,
+        };
+        let probe_lines =
+            probe_text::probe_lines(self.pinned_probe(), self.hover_probe(), depth_rgb);
+        let shown = self.shown.as_ref().map(|s| ShownImages {
+            colour: &s.colour,
+            depth: &s.depth,
+            size_px: [s.frame.width_px, s.frame.height_px],
+            depth_range: s.view.depth_range,
+            histogram: s.histogram.as_ref(),
+        });
+        let footer = Footer {
+            probe_lines: &probe_lines,
+            pinned: self.pinned_px(),
+            has_pin: self.probe.pinned_world.is_some(),
+            hover: self.probe.hover_px,
+            depth_range: &mut self.view.depth_range,
+            histogram_style: HistogramStyle {
+                log_counts: self.settings.depth.log_counts,
+                height: 0.0,
+            },
+            colour_map: style.colour_map,
+            no_hit_rgb: style.no_hit_rgb,
+            magnifier: self.magnifier,
+        };
+        let gestures = images_ui(ui, shown.as_ref(), footer);
+        self.apply_gestures(&gestures);
+        let (width_px, height_px) = gestures.wanted_px;
+        self.view.width_px = width_px;
+        self.view.height_px = height_px;
+    }
+}
