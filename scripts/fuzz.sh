@@ -14,7 +14,8 @@ if [ -n "$logs" ]; then
   mkdir -p "$logs"
   logs=$(cd "$logs" && pwd)
 fi
-cd "$(dirname "$0")/../fuzz"
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root/fuzz"
 if ! rustup toolchain list | grep -q '^nightly'; then
   rustup toolchain install nightly --profile minimal
 fi
@@ -33,7 +34,7 @@ for target in ${FUZZ_TARGETS:-scene command_line}; do
   echo "fuzzing $target for $seconds s"
   cargo +nightly fuzz run --release "$target" "$corpus" -- \
     -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-    2>&1 | tee "$log" | grep -E '^(Done|stat::|==|SUMMARY|INFO: Seed)|ERROR|panicked' || true
+    2>&1 | sed -e "s#$root/##g" -e "s#$corpus#<copy of fuzz/corpus/$target>#g" | tee "$log" | grep -E '^(Done|stat::|==|SUMMARY|INFO: Seed)|ERROR|panicked' || true
   status=${PIPESTATUS[0]}
   rm -rf "$corpus"
   if [ "$status" -ne 0 ]; then

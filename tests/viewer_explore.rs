@@ -19,7 +19,7 @@ use raytracer::render::{NO_HIT, View};
 
 mod common;
 
-use common::{click, scene_path, settle};
+use common::{click, drag, scene_path, settle};
 
 fn viewer(input: &str) -> Harness<'static, ViewerApp> {
     common::viewer(Some(scene_path(input)))
@@ -31,40 +31,6 @@ fn view(harness: &Harness<'static, ViewerApp>) -> View {
 
 fn image_rect(harness: &Harness<'static, ViewerApp>, label: &str) -> Rect {
     harness.get_by_label(label).rect()
-}
-
-/// Presses `button` at `from`, moves to `to` in a few steps and releases.
-fn drag(
-    harness: &mut Harness<'static, ViewerApp>,
-    button: PointerButton,
-    modifiers: Modifiers,
-    from: Pos2,
-    to: Pos2,
-) {
-    harness.event(Event::ModifiersChanged(modifiers));
-    harness.hover_at(from);
-    harness.step();
-    harness.event(Event::PointerButton {
-        pos: from,
-        button,
-        pressed: true,
-        modifiers,
-    });
-    harness.step();
-    for step in 1..=4 {
-        harness.hover_at(from + (to - from) * (step as f32 / 4.0));
-        harness.step();
-    }
-    harness.event(Event::PointerButton {
-        pos: to,
-        button,
-        pressed: false,
-        modifiers,
-    });
-    harness.step();
-    harness.event(Event::ModifiersChanged(Modifiers::NONE));
-    harness.event(Event::PointerGone);
-    settle(harness);
 }
 
 fn assert_close(a: f64, b: f64, tolerance: f64, what: &str) {

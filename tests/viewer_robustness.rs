@@ -116,6 +116,15 @@ fn thousands_of_hostile_inputs_never_panic() {
             0 => {
                 size = sizes[(rng.next_u64() % sizes.len() as u64) as usize];
                 harness.set_size(egui::vec2(size.0, size.1));
+                harness.step();
+                // Narrow windows keep the controls in a drawer: open it, as a user would.
+                if harness
+                    .query_by_role_and_label(Role::Slider, SLIDERS[0])
+                    .is_none()
+                    && let Some(toggle) = harness.query_by_label("Controls")
+                {
+                    toggle.click();
+                }
                 done[0] += 1;
             }
             1 | 2 => {
@@ -131,13 +140,29 @@ fn thousands_of_hostile_inputs_never_panic() {
                     done[1] += 1;
                 }
             }
-            3 => match harness.query_by_role_and_label(Role::Button, "Reset view") {
-                Some(button) => {
-                    button.click();
-                    done[2] += 1;
+            3 => {
+                // Narrow windows keep it in the toolbar's "More" menu.
+                let in_sight = harness
+                    .query_by_role_and_label(Role::Button, "Reset view")
+                    .is_some();
+                if !in_sight
+                    && let Some(more) = harness.query_by_role_and_label(Role::Button, "More")
+                {
+                    more.click();
+                    harness.step();
+                    harness.step();
                 }
-                None => assert!(!roomy, "step {step}: no Reset view in a {size:?} window"),
-            },
+                match harness.query_by_role_and_label(Role::Button, "Reset view") {
+                    Some(button) => {
+                        button.click();
+                        done[2] += 1;
+                    }
+                    None => assert!(
+                        size.0 < 320.0,
+                        "step {step}: no Reset view in a {size:?} window"
+                    ),
+                }
+            }
             _ => {
                 let label = SLIDERS[(rng.next_u64() % SLIDERS.len() as u64) as usize];
                 match harness.query_by_role_and_label(Role::Slider, label) {
@@ -157,9 +182,10 @@ fn thousands_of_hostile_inputs_never_panic() {
             assert_consistent(&mut harness, step);
         }
     }
-    // Every kind of abuse happened many times (the widgets were found, not skipped).
+    // Every kind of abuse happened many times (the widgets were found, not skipped; the three
+    // tiny sizes show no controls, so a reset is possible in about 2 of 5 steps that try one).
     assert!(
-        done[0] > 100 && done[1] > 200 && done[2] > 80 && done[3] > 600,
+        done[0] > 100 && done[1] > 200 && done[2] > 50 && done[3] > 600,
         "{done:?}"
     );
 

@@ -36,6 +36,11 @@ impl ViewerApp {
             .map(|shown| (shown.frame.as_ref(), &shown.view))
     }
 
+    /// The persisted settings.
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
     /// The persisted settings, to change.
     pub fn settings_mut(&mut self) -> &mut Settings {
         &mut self.settings

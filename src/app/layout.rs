@@ -28,15 +28,23 @@ impl ViewerApp {
         let mut actions = Vec::new();
         let window_width = ui.available_width();
         let narrow = window_width < DRAWER_BELOW_POINTS;
-        egui::Panel::top("toolbar").show(ui, |ui| {
+        let toolbar = egui::Panel::top("toolbar").show(ui, |ui| {
+            // In a narrow window the toggle opens the drawer (closed at first, so the images show).
+            let controls = if narrow {
+                &mut self.drawer_open
+            } else {
+                &mut self.settings.show_controls
+            };
             let state = toolbar::ToolbarState {
-                show_controls: &mut self.settings.show_controls,
+                show_controls: controls,
                 can_undo: self.history.can_undo(&self.view),
                 can_redo: self.history.can_redo(),
                 narrow: window_width < toolbar::MENU_BELOW_POINTS,
             };
             actions.extend(toolbar::toolbar_ui(ui, state));
         });
+        // The drawer opens just below the toolbar, however many rows the toolbar wraps into.
+        let toolbar_bottom = toolbar.response.rect.bottom();
         egui::Panel::bottom("status").show(ui, |ui| status_bar_ui(ui, &self.status_line()));
         if self.settings.show_controls && !narrow {
             egui::Panel::left("controls")
@@ -47,18 +55,21 @@ impl ViewerApp {
         }
         egui::CentralPanel::default().show(ui, |ui| self.images_ui(ui));
         let ctx = ui.ctx().clone();
-        if self.settings.show_controls && narrow {
+        if self.drawer_open && narrow {
             let mut open = true;
-            let height = ctx.content_rect().height() - 100.0;
-            egui::Window::new("Controls")
+            let height = ctx.content_rect().height() - toolbar_bottom - 64.0;
+            egui::Window::new("View controls")
                 .open(&mut open)
-                .anchor(egui::Align2::LEFT_TOP, egui::vec2(4.0, 36.0))
+                .anchor(
+                    egui::Align2::LEFT_TOP,
+                    egui::vec2(4.0, toolbar_bottom + 4.0),
+                )
                 .default_width(PANEL_POINTS.min(window_width - 16.0))
                 .max_height(height.max(100.0))
                 .collapsible(false)
                 .resizable(false)
                 .show(&ctx, |ui| actions.extend(self.side_panel_ui(ui)));
-            self.settings.show_controls = open;
+            self.drawer_open = open;
         }
         if let Some(error) = self.scene_error.clone()
             && error_overlay_ui(&ctx, &error)

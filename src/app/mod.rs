@@ -106,6 +106,8 @@ pub struct ViewerApp {
     history: History,
     /// The shortcuts and gestures overlay is open.
     help_open: bool,
+    /// The controls drawer of narrow windows is open.
+    drawer_open: bool,
     /// The camera the depth range was last fitted for in "follow" mode.
     followed: Option<SavedView>,
     /// The `raytracer` binary export scripts run.
@@ -168,6 +170,7 @@ impl ViewerApp {
             magnifier: Magnifier::default(),
             history,
             help_open: false,
+            drawer_open: false,
             followed: None,
             program: request.program.clone(),
             saving_open_scene: false,

@@ -5,6 +5,8 @@
 pub(crate) mod xvfb;
 
 use std::path::{Path, PathBuf};
+
+use egui::{Event, Modifiers, PointerButton, Pos2};
 use std::time::{Duration, Instant};
 
 use egui_kittest::Harness;
@@ -77,4 +79,60 @@ pub(crate) fn click(harness: &mut Harness<'static, ViewerApp>, label: &str) {
     harness.step();
     harness.get_by_label(label).click();
     harness.step();
+}
+
+/// Presses `button` at `from`, moves to `to` in a few steps and releases.
+pub(crate) fn drag(
+    harness: &mut Harness<'static, ViewerApp>,
+    button: PointerButton,
+    modifiers: Modifiers,
+    from: Pos2,
+    to: Pos2,
+) {
+    harness.event(Event::ModifiersChanged(modifiers));
+    harness.hover_at(from);
+    harness.step();
+    harness.event(Event::PointerButton {
+        pos: from,
+        button,
+        pressed: true,
+        modifiers,
+    });
+    harness.step();
+    for step in 1..=4 {
+        harness.hover_at(from + (to - from) * (step as f32 / 4.0));
+        harness.step();
+    }
+    harness.event(Event::PointerButton {
+        pos: to,
+        button,
+        pressed: false,
+        modifiers,
+    });
+    harness.step();
+    harness.event(Event::ModifiersChanged(Modifiers::NONE));
+    harness.event(Event::PointerGone);
+    settle(harness);
+}
+
+/// The viewer in a window of `size` points at `pixels_per_point` on `input`, settled.
+pub(crate) fn viewer_sized(
+    input: Option<PathBuf>,
+    size: egui::Vec2,
+    pixels_per_point: f32,
+) -> Harness<'static, ViewerApp> {
+    let mut harness = Harness::builder()
+        .with_size(size)
+        .with_pixels_per_point(pixels_per_point)
+        .build_eframe(move |cc| {
+            ViewerApp::new(
+                cc,
+                ViewerRequest {
+                    input,
+                    ..Default::default()
+                },
+            )
+        });
+    settle(&mut harness);
+    harness
 }

@@ -1,6 +1,6 @@
-//! The toolbar: open, export, undo and redo, reset, and in wide windows frame all, reload and
-//! save view as scene — in narrow ones those three are in a "More" menu, so every button stays on
-//! screen — then the controls toggle and the shortcuts overlay. It only reports what was clicked,
+//! The toolbar: open, export, undo and redo, reset view, frame all, reload and save view as
+//! scene — in narrow windows all but open and export are in a "More" menu, so every button stays
+//! on screen — then the controls toggle and the shortcuts overlay. It only reports what was clicked,
 //! as [`Action`]s.
 
 use egui::Ui;
@@ -66,45 +66,51 @@ pub(crate) fn toolbar_ui(
             Action::OpenDialog(DialogKind::SaveScene),
         ),
     ];
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         for (label, tooltip, action) in always {
             if ui.button(label).on_hover_text(tooltip).clicked() {
                 actions.push(action);
             }
         }
-        let undo = ui.add_enabled(can_undo, egui::Button::new("Undo"));
-        if undo
-            .on_hover_text("Back to the view before (Ctrl+Z)")
-            .clicked()
-        {
-            actions.push(Action::Undo);
-        }
-        let redo = ui.add_enabled(can_redo, egui::Button::new("Redo"));
-        if redo
-            .on_hover_text("Forward again (Ctrl+Shift+Z or Ctrl+Y)")
-            .clicked()
-        {
-            actions.push(Action::Redo);
-        }
-        if ui
-            .button("Reset view")
-            .on_hover_text("Back to the file's camera; the depth range stays (Home)")
-            .clicked()
-        {
-            actions.push(Action::ResetView);
-        }
+        let history_and_reset = |ui: &mut Ui, actions: &mut Vec<Action>| {
+            let undo = ui.add_enabled(can_undo, egui::Button::new("Undo"));
+            if undo
+                .on_hover_text("Back to the view before (Ctrl+Z)")
+                .clicked()
+            {
+                actions.push(Action::Undo);
+            }
+            let redo = ui.add_enabled(can_redo, egui::Button::new("Redo"));
+            if redo
+                .on_hover_text("Forward again (Ctrl+Shift+Z or Ctrl+Y)")
+                .clicked()
+            {
+                actions.push(Action::Redo);
+            }
+            if ui
+                .button("Reset view")
+                .on_hover_text("Back to the file's camera; the depth range stays (Home)")
+                .clicked()
+            {
+                actions.push(Action::ResetView);
+            }
+        };
         if narrow {
             ui.menu_button("More", |ui| {
+                history_and_reset(ui, &mut actions);
                 for (label, tooltip, action) in more {
                     if ui.button(label).on_hover_text(tooltip).clicked() {
                         actions.push(action);
-                        ui.close();
                     }
+                }
+                if !actions.is_empty() {
+                    ui.close();
                 }
             })
             .response
-            .on_hover_text("More: frame all, reload, save view as scene");
+            .on_hover_text("Undo, redo, reset view, frame all, reload, save view as scene");
         } else {
+            history_and_reset(ui, &mut actions);
             for (label, tooltip, action) in more {
                 if ui.button(label).on_hover_text(tooltip).clicked() {
                     actions.push(action);

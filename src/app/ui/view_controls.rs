@@ -51,8 +51,22 @@ fn slider(
         ));
     let modifiers = ui.input(|i| i.modifiers);
     let fine = modifiers.shift || modifiers.alt;
-    if response.dragged() && fine && value.is_finite() && before.is_finite() {
-        *value = before + (*value - before) * FINE_DRAG;
+    // A slider puts the value under the pointer; a fine drag moves it by a tenth of the pointer's
+    // travel since the drag began instead (and a press does not jump).
+    let start_id = response.id.with("fine drag start");
+    if response.drag_started() {
+        ui.data_mut(|data| data.insert_temp(start_id, (before, *value)));
+    }
+    let start: Option<(f64, f64)> = ui.data(|data| data.get_temp(start_id));
+    if (response.dragged() || response.drag_stopped())
+        && fine
+        && let Some((start_value, start_raw)) = start
+        && value.is_finite()
+    {
+        *value = start_value + (*value - start_raw) * FINE_DRAG;
+    }
+    if response.drag_stopped() {
+        ui.data_mut(|data| data.remove::<(f64, f64)>(start_id));
     }
     if response.has_focus() {
         // Wheel notches (not the smoothed scroll, which spreads one notch over frames).
