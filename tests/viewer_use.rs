@@ -297,6 +297,16 @@ fn the_magnifier_enlarges_the_frame_and_probes_the_pixel_under_the_pointer() {
         *harness.state().shown_frame().unwrap().0 == epoch_frame,
         "no new render"
     );
+    // The zoom kept the point under the pointer where it was: the frame's centre pixel.
+    let centre_probe = harness
+        .state()
+        .hover_probe()
+        .expect("a probe at the centre");
+    assert!(
+        centre_probe.x_px.abs_diff(frame_size[0] / 2) <= 1
+            && centre_probe.y_up_px.abs_diff(frame_size[1] / 2) <= 1,
+        "the centre pixel stayed under the pointer: {centre_probe:?} in {frame_size:?}"
+    );
     // The pixel under the pointer, computed here from the magnified region.
     let zoom = magnifier.zoom;
     let (w, h) = (f64::from(frame_size[0]), f64::from(frame_size[1]));

@@ -10,7 +10,7 @@ pub fn run(request: ViewerRequest) -> eframe::Result {
         viewport: egui::ViewportBuilder::default()
             .with_title("raytracer")
             .with_inner_size([1280.0, 720.0])
-            .with_min_inner_size([480.0, 320.0])
+            .with_min_inner_size([320.0, 240.0])
             .with_drag_and_drop(true),
         ..Default::default()
     };

@@ -173,7 +173,8 @@ pub(crate) fn images_ui(
         magnifier,
     };
     let mut image = |ui: &mut Ui, index: usize| {
-        ui.label(&captions[index]);
+        // One line: a long caption is elided (whole on hover), so it never pushes the footer out.
+        ui.add(egui::Label::new(&captions[index]).truncate());
         image_ui(ui, index, layout.image_points, shown, marks, &mut gestures);
     };
     let half_width = |ui: &Ui| ((ui.available_width() - IMAGE_GAP_POINTS) * 0.5).max(1.0);
