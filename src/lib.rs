@@ -21,7 +21,9 @@
 //! * [`oracle`] (feature `oracle`): the straightforward loop and the double-double reference,
 //!   for tests and studies only
 //! * [`explore`]: navigation, slider and depth ranges, probe, depth statistics
-//! * [`output`]: atomic writes, image encoders, lossless depth files
+//! * [`output`]: atomic writes, image encoders, lossless depth files, text in pictures
+//! * [`compare`]: the known mistakes, the variant renderer that makes them, image differences,
+//!   the diagnosis and the difference picture
 //! * [`cli`]: the flag table (parsing, usage, writing a request back), running a request,
 //!   progress bars
 //! * [`export`]: everything one export from the viewer writes, and the command that makes it again
@@ -43,6 +45,7 @@
 #[cfg(feature = "gui")]
 pub mod app;
 pub mod cli;
+pub mod compare;
 pub mod explore;
 pub mod export;
 pub mod geometry;

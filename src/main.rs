@@ -1,6 +1,7 @@
 //! `raytracer`: the course-compatible command line. With `-output`/`-depth` it renders without a
 //! window; otherwise it opens the viewer (feature `gui`). Exit status: 0 success, 1 scene or file
-//! error, 2 usage error, 128 + n when stopped by signal n.
+//! error, 2 usage error, 3 compared images differ (`-compare_output`, `-compare_depth`),
+//! 128 + n when stopped by signal n.
 
 #![deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
@@ -37,10 +38,24 @@ fn main() -> ExitCode {
         Command::Render(request) => {
             handle_termination_signals(OnSignal::Exit);
             match raytracer::cli::run::run(&request) {
-                Ok(report) if request.stats => {
-                    print_or_fail(&report.stats_lines(), ExitCode::SUCCESS)
+                Ok(report) => {
+                    let mut text = String::new();
+                    if request.stats {
+                        text.push_str(&report.stats_lines());
+                    }
+                    let mut status = ExitCode::SUCCESS;
+                    if let Some(compared) = &report.compare {
+                        text.push_str(&compared.lines());
+                        if !compared.matches() {
+                            status = ExitCode::from(3);
+                        }
+                    }
+                    if text.is_empty() {
+                        status
+                    } else {
+                        print_or_fail(&text, status)
+                    }
                 }
-                Ok(_) => ExitCode::SUCCESS,
                 Err(error) => {
                     print_err(&format!("raytracer: {error}\n"));
                     ExitCode::from(error.exit_status())

@@ -8,8 +8,8 @@ use std::path::{Path, PathBuf};
 
 /// The layers, bottom first. A module may use its own layer and the layers before it; `oracle`
 /// (test and study support) may use the core, and nothing but tests may use it.
-const LAYERS: [&str; 9] = [
-    "geometry", "scene", "render", "oracle", "explore", "output", "cli", "export", "app",
+const LAYERS: [&str; 10] = [
+    "geometry", "scene", "render", "oracle", "explore", "output", "compare", "cli", "export", "app",
 ];
 
 fn rust_files(folder: &Path, found: &mut Vec<PathBuf>) {

@@ -85,10 +85,15 @@ pub enum UsageError {
     /// Rendering needs a scene.
     #[error(
         "{} need {}",
-        [Flag::Output, Flag::Depth, Flag::Depth16, Flag::DepthRaw].map(Flag::name).join(", "),
+        [Flag::Output, Flag::Depth, Flag::Depth16, Flag::DepthRaw, Flag::CompareOutput, Flag::CompareDepth]
+            .map(Flag::name)
+            .join(", "),
         Flag::Input.synopsis()
     )]
     MissingInput,
+    /// `-diff` without an image to compare.
+    #[error("{diff} needs {output} or {depth}", diff = Flag::Diff, output = Flag::CompareOutput.synopsis(), depth = Flag::CompareDepth.synopsis())]
+    DiffWithoutComparison,
     /// A precision that is not f64, f32 or auto.
     #[error("{flag}: expected f64, f32 or auto, found '{0}'", flag = Flag::Precision)]
     BadPrecision(String),

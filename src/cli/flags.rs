@@ -36,6 +36,12 @@ pub enum Flag {
     TentFilter,
     /// Gaussian reconstruction filter.
     GaussianFilter,
+    /// A colour image to compare with the exact one.
+    CompareOutput,
+    /// A depth image to compare with the exact one.
+    CompareDepth,
+    /// The difference picture of a comparison.
+    Diff,
     /// Timings and counts after rendering.
     Stats,
     /// The usage text.
@@ -72,6 +78,9 @@ pub(crate) const FLAGS: &[FlagSpec] = &[
     FlagSpec { flag: Flag::BoxFilter, name: "-box_filter", aliases: &[], values: &["R"], help: "reconstruction filter, half-width R pixels (default 0.5)" },
     FlagSpec { flag: Flag::TentFilter, name: "-tent_filter", aliases: &[], values: &["R"], help: "tent filter of radius R pixels" },
     FlagSpec { flag: Flag::GaussianFilter, name: "-gaussian_filter", aliases: &[], values: &["SIGMA"], help: "Gaussian filter, sigma in pixels (support 2·sigma)" },
+    FlagSpec { flag: Flag::CompareOutput, name: "-compare_output", aliases: &[], values: &["FILE"], help: "compare a colour image (.tga/.png) with the exact one; name the mistakes" },
+    FlagSpec { flag: Flag::CompareDepth, name: "-compare_depth", aliases: &[], values: &["DMIN", "DMAX", "FILE"], help: "compare a depth image made over DMIN … DMAX with the exact one" },
+    FlagSpec { flag: Flag::Diff, name: "-diff", aliases: &[], values: &["FILE"], help: "write the comparison's picture: theirs, exact, heat map (.png/.tga)" },
     FlagSpec { flag: Flag::Stats, name: "-stats", aliases: &[], values: &[], help: "print timings and counts after rendering" },
     FlagSpec { flag: Flag::Help, name: "-help", aliases: &["--help", "-h"], values: &[], help: "print this help" },
 ];
@@ -139,12 +148,19 @@ pub fn usage() -> String {
     }
     let _ = write!(
         text,
-        "\nexit status: 0 success, 1 scene or file error, 2 usage error\n\
-         example:\n  raytracer {} scene1_01.txt {} 200 200 {} output1_01.tga {} 9 10 depth1_01.tga\n",
+        "\nexit status: 0 success (compared images match), 1 scene or file error, 2 usage error,\n\
+         3 compared images differ\n\
+         example:\n  raytracer {} scene1_01.txt {} 200 200 {} output1_01.tga {} 9 10 depth1_01.tga\n\
+         compare your own render with the exact one, and name the mistakes behind a difference:\n  \
+         raytracer {} scene1_01.txt {} mine.tga {} 9 10 mine_depth.tga {} diff.png\n",
         Flag::Input,
         Flag::Size,
         Flag::Output,
-        Flag::Depth
+        Flag::Depth,
+        Flag::Input,
+        Flag::CompareOutput,
+        Flag::CompareDepth,
+        Flag::Diff,
     );
     text
 }

@@ -1,12 +1,14 @@
 //! The course-compatible command line: one flag table ([`flags`]) from which parsing, the usage
 //! text and writing a request back to arguments all come; the typed requests ([`request`]);
 //! usage errors ([`error`]); running a render request without a window ([`run`]) and its
-//! progress bars on a terminal ([`progress`]).
+//! progress bars on a terminal ([`progress`]); comparing the user's images with the exact ones
+//! ([`compare`]).
 //!
 //! Parsing goes in two stages: [`RawArgs::parse`] splits the arguments into known flags and their
 //! values (arity, unknown and repeated flags), then [`RawArgs::validate`] turns them into a
 //! typed [`Command`] (numbers, sizes, formats).
 
+pub mod compare;
 mod error;
 mod flags;
 pub mod process;
@@ -22,5 +24,6 @@ pub use error::UsageError;
 pub use flags::{Flag, usage};
 pub use raw_args::RawArgs;
 pub use request::{
-    Command, DEFAULT_SIZE_PX, DepthOutput, RenderRequest, ViewerRequest, parse_command,
+    Command, CompareRequest, DEFAULT_SIZE_PX, DepthOutput, RenderRequest, ViewerRequest,
+    parse_command,
 };

@@ -41,6 +41,18 @@ pub struct DepthOutput {
     pub(crate) path: PathBuf,
 }
 
+/// Images to compare with the exact render (`-compare_output`, `-compare_depth`) and where to
+/// write the difference picture (`-diff`).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct CompareRequest {
+    /// Their colour image.
+    pub(crate) colour: Option<PathBuf>,
+    /// Their depth image and the range it was made over.
+    pub(crate) depth: Option<DepthOutput>,
+    /// The difference picture's destination.
+    pub(crate) diff: Option<PathBuf>,
+}
+
 /// A headless render: what to read, how large, what to write.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RenderRequest {
@@ -50,6 +62,11 @@ pub struct RenderRequest {
     pub(crate) width_px: u32,
     /// Image height in pixels.
     pub(crate) height_px: u32,
+    /// Whether `-size` was given (else the size is the course's 200×200, or that of the images
+    /// compared).
+    pub(crate) size_given: bool,
+    /// Images to compare with the exact render.
+    pub(crate) compare: Option<CompareRequest>,
     /// Colour image destination.
     pub(crate) colour_output: Option<PathBuf>,
     /// Depth image destination and range.
@@ -122,11 +139,13 @@ impl RawArgs {
         let depth_output = self.depth_output(Flag::Depth)?;
         let depth16_output = self.depth_output(Flag::Depth16)?;
         let depth_raw_output = self.output_path(Flag::DepthRaw, 0)?;
+        let compare = self.compare()?;
         let outputs: Vec<&PathBuf> = colour_output
             .iter()
             .chain(depth_output.iter().map(|d| &d.path))
             .chain(depth16_output.iter().map(|d| &d.path))
             .chain(depth_raw_output.iter())
+            .chain(compare.iter().flat_map(|c| c.diff.iter()))
             .collect();
         for (index, path) in outputs.iter().enumerate() {
             if outputs[..index].contains(path) {
@@ -149,7 +168,7 @@ impl RawArgs {
         } else {
             None
         };
-        if outputs.is_empty() {
+        if outputs.is_empty() && compare.is_none() {
             return Ok(Command::View(ViewerRequest {
                 input,
                 size_px,
@@ -163,6 +182,8 @@ impl RawArgs {
             input,
             width_px,
             height_px,
+            size_given: size_px.is_some(),
+            compare,
             colour_output,
             depth_output,
             depth_colour_map,
@@ -173,6 +194,30 @@ impl RawArgs {
                 sampling: self.sampling()?,
             },
             stats: self.has(Flag::Stats),
+        }))
+    }
+
+    /// The comparison flags; `None` without `-compare_output` and `-compare_depth`.
+    fn compare(&self) -> Result<Option<CompareRequest>, UsageError> {
+        let colour = self.output_path(Flag::CompareOutput, 0)?;
+        let depth = self.depth_output(Flag::CompareDepth)?;
+        let diff = self.output_path(Flag::Diff, 0)?;
+        if colour.is_none() && depth.is_none() {
+            return if diff.is_some() {
+                Err(UsageError::DiffWithoutComparison)
+            } else {
+                Ok(None)
+            };
+        }
+        if let (Some(colour), Some(depth)) = (&colour, &depth)
+            && *colour == depth.path
+        {
+            return Err(UsageError::SameOutput(colour.display().to_string()));
+        }
+        Ok(Some(CompareRequest {
+            colour,
+            depth,
+            diff,
         }))
     }
 
@@ -311,13 +356,15 @@ impl RenderRequest {
             arguments.extend(values);
         };
         push(Flag::Input, vec![self.input.clone().into()]);
-        push(
-            Flag::Size,
-            vec![
-                self.width_px.to_string().into(),
-                self.height_px.to_string().into(),
-            ],
-        );
+        if self.size_given {
+            push(
+                Flag::Size,
+                vec![
+                    self.width_px.to_string().into(),
+                    self.height_px.to_string().into(),
+                ],
+            );
+        }
         if let Some(path) = &self.colour_output {
             push(Flag::Output, vec![path.clone().into()]);
         }
@@ -359,6 +406,17 @@ impl RenderRequest {
                     .find(|(_, make)| make(size) == sampling.filter)
                     .map_or(Flag::BoxFilter, |(flag, _)| *flag);
                 push(filter_flag, vec![size.to_string().into()]);
+            }
+        }
+        if let Some(compare) = &self.compare {
+            if let Some(path) = &compare.colour {
+                push(Flag::CompareOutput, vec![path.clone().into()]);
+            }
+            if let Some(depth) = &compare.depth {
+                push(Flag::CompareDepth, depth_values(depth));
+            }
+            if let Some(path) = &compare.diff {
+                push(Flag::Diff, vec![path.clone().into()]);
             }
         }
         if self.stats {

@@ -7,6 +7,9 @@ use std::fmt::Write as _;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
+use image::RgbImage;
+
+use super::compare::{CompareReport, TheirImages, compare, read_theirs};
 use super::error::UsageError;
 use super::flags::Flag;
 use super::progress::StepProgress;
@@ -19,7 +22,7 @@ use crate::output::identity::{FileIdentity, identity};
 use crate::output::image_file::{check_writable, stage_image};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 use crate::render::memory::{load_bound_bytes, render_bound_bytes};
-use crate::render::{Frame, View, ViewError, render_with_progress};
+use crate::render::{Frame, Quality, View, ViewError, render_with_progress};
 use crate::scene::{LoadError, Scene, load_scene_with_progress};
 
 /// Why a headless render failed: a usage error (exit status 2) or a scene, view, memory or file
@@ -53,6 +56,34 @@ pub enum RunError {
     /// An image could not be written.
     #[error(transparent)]
     Write(#[from] WriteError),
+    /// An image to compare could not be read.
+    #[error("{flag} '{path}': cannot read the image: {message}")]
+    ReadImage {
+        /// The flag that named it.
+        flag: Flag,
+        /// Its path as given.
+        path: String,
+        /// What went wrong.
+        message: String,
+    },
+    /// An image to compare is not the size of the render.
+    #[error(
+        "{flag} '{path}' is {}×{} pixels, but {expected_by} {}×{}: compare images of one size \
+         (leave out -size to take it from the image)",
+        found.0, found.1, expected.0, expected.1
+    )]
+    CompareSize {
+        /// The flag that named the image.
+        flag: Flag,
+        /// Its path as given.
+        path: String,
+        /// Its size.
+        found: (u32, u32),
+        /// The size expected.
+        expected: (u32, u32),
+        /// What set the expected size: "-size asks for" or "-compare_output 'x.tga' is".
+        expected_by: String,
+    },
 }
 
 impl RunError {
@@ -89,6 +120,8 @@ pub struct RunReport {
     /// The memory bound of this run (loading or rendering, whichever is larger), bytes
     /// ([`crate::render::memory`]).
     pub(crate) memory_bound: u64,
+    /// What the comparison found (`-compare_output`, `-compare_depth`).
+    pub compare: Option<CompareReport>,
 }
 
 impl RunReport {
@@ -153,15 +186,34 @@ fn outputs(request: &RenderRequest) -> Vec<(Flag, &Path)> {
     if let Some(path) = &request.depth_raw_output {
         outputs.push((Flag::DepthRaw, path.as_path()));
     }
+    if let Some(path) = request.compare.as_ref().and_then(|c| c.diff.as_ref()) {
+        outputs.push((Flag::Diff, path.as_path()));
+    }
     outputs
 }
 
-/// Refuses a request whose outputs include the scene file, or name one file twice, by any
+/// Every file a request reads: the scene and the images to compare.
+fn inputs(request: &RenderRequest) -> Vec<(Flag, &Path)> {
+    let mut inputs = vec![(Flag::Input, request.input.as_path())];
+    if let Some(compare) = &request.compare {
+        if let Some(path) = &compare.colour {
+            inputs.push((Flag::CompareOutput, path.as_path()));
+        }
+        if let Some(depth) = &compare.depth {
+            inputs.push((Flag::CompareDepth, depth.path.as_path()));
+        }
+    }
+    inputs
+}
+
+/// Refuses a request whose outputs include a file it reads, or name one file twice, by any
 /// spelling or link.
 fn check_distinct_files(request: &RenderRequest) -> Result<(), UsageError> {
     let mut seen: Vec<(Flag, &Path, FileIdentity)> = Vec::new();
-    if let Some(input) = identity(&request.input) {
-        seen.push((Flag::Input, &request.input, input));
+    for (flag, path) in inputs(request) {
+        if let Some(input) = identity(path) {
+            seen.push((flag, path, input));
+        }
     }
     for (flag, path) in outputs(request) {
         let Some(id) = identity(path) else { continue };
@@ -192,9 +244,19 @@ fn check_memory(request: &RenderRequest, bound: u64) -> Result<u64, RunError> {
 }
 
 /// Makes each output of `request` from `frame` and stages it (one at a time, so only one
-/// output's pixels exist besides the frame), then commits them all.
-fn write_outputs(request: &RenderRequest, frame: &Frame) -> Result<(), WriteError> {
+/// output's pixels exist besides the frame), with the difference picture `diff`, then commits
+/// them all.
+fn write_outputs(
+    request: &RenderRequest,
+    frame: &Frame,
+    diff: Option<&RgbImage>,
+) -> Result<(), WriteError> {
     let mut files = FileSet::new();
+    if let (Some(path), Some(picture)) =
+        (request.compare.as_ref().and_then(|c| c.diff.as_ref()), diff)
+    {
+        stage_image(&mut files, path, picture)?;
+    }
     if let Some(path) = &request.colour_output {
         stage_image(&mut files, path, &frame.colour_image())?;
     }
@@ -213,9 +275,31 @@ fn write_outputs(request: &RenderRequest, frame: &Frame) -> Result<(), WriteErro
 }
 
 /// Runs a headless render request. Nothing is written unless every output can be: the files are
-/// checked before rendering and written all or nothing after it.
+/// checked before rendering and written all or nothing after it. Images to compare are read
+/// first; without `-size` the render takes their size.
 pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
     check_distinct_files(request)?;
+    let theirs = match &request.compare {
+        Some(compare) => {
+            let size = request
+                .size_given
+                .then_some((request.width_px, request.height_px));
+            read_theirs(compare, size)?
+        }
+        None => TheirImages::default(),
+    };
+    let sized;
+    let request = match theirs.size_px() {
+        Some((width_px, height_px)) if !request.size_given => {
+            sized = RenderRequest {
+                width_px,
+                height_px,
+                ..request.clone()
+            };
+            &sized
+        }
+        _ => request,
+    };
     for (flag, path) in outputs(request) {
         match flag {
             Flag::DepthRaw => check_writable_raw(path)?,
@@ -247,8 +331,24 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
     };
     let render = started.elapsed();
 
+    let (compare_report, diff) = match &request.compare {
+        Some(wanted) => {
+            // Compared with the exact picture: one sample per pixel in f64.
+            let exact_owned;
+            let exact = if request.quality == Quality::default() {
+                &frame
+            } else {
+                exact_owned = crate::render::render(&scene, &view)?;
+                &exact_owned
+            };
+            let (report, picture) = compare(&scene, request, wanted, &theirs, exact);
+            (Some(report), picture)
+        }
+        None => (None, None),
+    };
+
     let started = Instant::now();
-    write_outputs(request, &frame)?;
+    write_outputs(request, &frame, diff.as_ref())?;
     Ok(RunReport {
         sphere_count: scene.spheres.len(),
         parse,
@@ -260,5 +360,6 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
         disc_tests: frame.disc_tests,
         precision: frame.precision,
         memory_bound,
+        compare: compare_report,
     })
 }

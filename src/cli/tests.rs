@@ -18,6 +18,8 @@ fn course_command_line_gives_a_render_request() {
             input: "scene1_01.txt".into(),
             width_px: 200,
             height_px: 100,
+            size_given: true,
+            compare: None,
             colour_output: Some("out.tga".into()),
             depth_output: Some(DepthOutput {
                 range: DepthRange::new(9.0, 10.0),
@@ -172,6 +174,15 @@ fn requests_with_every_setting() -> Vec<RenderRequest> {
         input: "scenes/my scene.txt".into(),
         width_px: 640,
         height_px: 360,
+        size_given: true,
+        compare: Some(CompareRequest {
+            colour: Some("theirs/colour.tga".into()),
+            depth: Some(DepthOutput {
+                range: DepthRange::new(9.0, 10.25),
+                path: "theirs/depth.png".into(),
+            }),
+            diff: Some("out/diff.png".into()),
+        }),
         colour_output: Some("out/colour.png".into()),
         depth_output: Some(DepthOutput {
             range: DepthRange::new(-0.1, 1.0 / 3.0),
@@ -203,6 +214,25 @@ fn requests_with_every_setting() -> Vec<RenderRequest> {
             depth_colour_map: DepthColourMap::Grey,
             quality: Quality::default(),
             stats: false,
+            ..full.clone()
+        },
+        // A comparison alone, its size taken from the images.
+        RenderRequest {
+            width_px: 200,
+            height_px: 200,
+            size_given: false,
+            colour_output: None,
+            depth_output: None,
+            depth16_output: None,
+            depth_raw_output: None,
+            compare: Some(CompareRequest {
+                colour: None,
+                depth: Some(DepthOutput {
+                    range: DepthRange::new(-2.0, 2.0),
+                    path: "mine.tga".into(),
+                }),
+                diff: None,
+            }),
             ..full.clone()
         },
     ];

@@ -25,6 +25,8 @@ pub(crate) fn export_request(
         input: name(&files.scene),
         width_px: view.width_px,
         height_px: view.height_px,
+        size_given: true,
+        compare: None,
         colour_output: Some(name(&files.images.colour)),
         depth_output: Some(depth_output(&files.images.depth)),
         depth_colour_map: plan.colour_map,

@@ -1,6 +1,6 @@
 //! The legend under an exported side-by-side picture: the colour bar of the depth image's map
-//! from near (left) to far (right), with the depth range's two ends written in a small built-in
-//! pixel font (digits, `.`, `-`, `e`), so the picture says what its greys mean wherever it goes.
+//! from near (left) to far (right), with the depth range's two ends written beside it
+//! ([`crate::output::text`]), so the picture says what its greys mean wherever it goes.
 
 use image::{Rgb, RgbImage};
 
@@ -9,57 +9,17 @@ use crate::render::depth_map::{DepthColourMap, DepthRange};
 /// Height of the strip, pixels.
 pub(crate) const LEGEND_PX: u32 = 24;
 
-/// Scale of the 3×5 glyphs.
-const GLYPH_SCALE: u32 = 2;
+/// Scale of the legend's text.
+const TEXT_SCALE: u32 = 1;
 
-/// The glyphs, 3 columns × 5 rows each, a row per 3 bits (the top row first, the left column in
-/// the highest bit).
-fn glyph(c: char) -> Option<[u8; 5]> {
-    Some(match c {
-        '0' => [0b111, 0b101, 0b101, 0b101, 0b111],
-        '1' => [0b010, 0b110, 0b010, 0b010, 0b111],
-        '2' => [0b111, 0b001, 0b111, 0b100, 0b111],
-        '3' => [0b111, 0b001, 0b111, 0b001, 0b111],
-        '4' => [0b101, 0b101, 0b111, 0b001, 0b001],
-        '5' => [0b111, 0b100, 0b111, 0b001, 0b111],
-        '6' => [0b111, 0b100, 0b111, 0b101, 0b111],
-        '7' => [0b111, 0b001, 0b010, 0b010, 0b010],
-        '8' => [0b111, 0b101, 0b111, 0b101, 0b111],
-        '9' => [0b111, 0b101, 0b111, 0b001, 0b111],
-        '.' => [0b000, 0b000, 0b000, 0b000, 0b010],
-        '-' => [0b000, 0b000, 0b111, 0b000, 0b000],
-        'e' => [0b000, 0b111, 0b111, 0b100, 0b111],
-        _ => return None,
-    })
-}
-
-/// Width of `text` in pixels.
+/// Width of `text` in the legend, pixels.
 fn text_width(text: &str) -> u32 {
-    text.chars().count() as u32 * 4 * GLYPH_SCALE
+    crate::output::text::text_width(text, TEXT_SCALE)
 }
 
 /// Writes `text` with its top-left corner at (x, y).
 fn draw_text(image: &mut RgbImage, text: &str, x: u32, y: u32, colour: Rgb<u8>) {
-    for (index, c) in text.chars().enumerate() {
-        let Some(rows) = glyph(c) else { continue };
-        let left = x + index as u32 * 4 * GLYPH_SCALE;
-        for (row, bits) in rows.iter().enumerate() {
-            for column in 0..3u32 {
-                if bits & (0b100 >> column) == 0 {
-                    continue;
-                }
-                for dy in 0..GLYPH_SCALE {
-                    for dx in 0..GLYPH_SCALE {
-                        let px = left + column * GLYPH_SCALE + dx;
-                        let py = y + row as u32 * GLYPH_SCALE + dy;
-                        if px < image.width() && py < image.height() {
-                            image.put_pixel(px, py, colour);
-                        }
-                    }
-                }
-            }
-        }
-    }
+    crate::output::text::draw_text(image, text, x, y, TEXT_SCALE, colour);
 }
 
 /// A number as the legend writes it: up to 6 significant digits, exponent form when long.
@@ -93,8 +53,8 @@ pub(crate) fn with_legend(picture: &RgbImage, range: DepthRange, map: DepthColou
         }
     }
     let white = Rgb([235, 235, 235]);
-    draw_text(&mut image, &near, margin, bar_top + 1, white);
-    draw_text(&mut image, &far, bar_right + margin, bar_top + 1, white);
+    draw_text(&mut image, &near, margin, bar_top + 2, white);
+    draw_text(&mut image, &far, bar_right + margin, bar_top + 2, white);
     image
 }
 

@@ -1,11 +1,13 @@
 //! Writing files: atomic writes ([`atomic`]), 8-bit image files chosen by extension
 //! ([`image_file`]), and lossless depth files (PFM, OpenEXR) and 16-bit depth PNGs
-//! ([`depth_file`]). Nothing here knows about the command line or the viewer.
+//! ([`depth_file`]), and text drawn into pictures ([`text`]). Nothing here knows about the
+//! command line or the viewer.
 
 pub mod atomic;
 pub mod depth_file;
 pub(crate) mod identity;
 pub(crate) mod image_file;
+pub(crate) mod text;
 
 pub use atomic::{WriteError, write_atomically};
 pub use depth_file::RawDepthFormat;

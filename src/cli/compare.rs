@@ -1,0 +1,206 @@
+//! `-compare_output`, `-compare_depth` and `-diff`: read the user's images, compare them with
+//! the exact render of the request, name the mistakes behind a difference
+//! ([`crate::compare::diagnose`]) and draw the difference picture.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use image::RgbImage;
+
+use super::flags::Flag;
+use super::request::{CompareRequest, RenderRequest};
+use super::run::RunError;
+use crate::compare::picture::{Row, difference_picture};
+use crate::compare::{Diagnosis, Difference, Theirs, diagnose};
+use crate::render::depth_map::DepthRange;
+use crate::render::{Frame, View};
+use crate::scene::Scene;
+
+/// The user's images, read.
+#[derive(Debug, Default)]
+pub(crate) struct TheirImages {
+    colour: Option<RgbImage>,
+    depth: Option<RgbImage>,
+}
+
+impl TheirImages {
+    /// The size of the images (all the same), if any was read.
+    pub(crate) fn size_px(&self) -> Option<(u32, u32)> {
+        self.colour
+            .as_ref()
+            .or(self.depth.as_ref())
+            .map(RgbImage::dimensions)
+    }
+}
+
+/// What a comparison found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CompareReport {
+    /// Their colour image against the exact one.
+    pub(crate) colour: Option<Difference>,
+    /// Their depth image against the exact one.
+    pub(crate) depth: Option<Difference>,
+    /// The mistakes named.
+    pub(crate) diagnosis: Diagnosis,
+}
+
+impl CompareReport {
+    /// Whether the images match by the course's rule (colour identical; depth within one level on
+    /// at most 0.1% of the pixels).
+    pub fn matches(&self) -> bool {
+        self.colour.as_ref().is_none_or(Difference::colour_matches)
+            && self.depth.as_ref().is_none_or(Difference::depth_matches)
+    }
+
+    /// The report as `name: value` lines.
+    pub fn lines(&self) -> String {
+        let mut text = String::new();
+        for (kind, difference) in [("colour", &self.colour), ("depth", &self.depth)] {
+            if let Some(difference) = difference {
+                let _ = writeln!(
+                    text,
+                    "{kind}_pixels_differing: {}",
+                    difference.pixels_differing()
+                );
+                let _ = writeln!(
+                    text,
+                    "{kind}_max_difference: {}",
+                    difference.max_difference()
+                );
+            }
+        }
+        let _ = writeln!(text, "match: {}", if self.matches() { "yes" } else { "no" });
+        let words = self.diagnosis.mistakes.mistakes();
+        if words.is_empty() {
+            let _ = writeln!(text, "diagnosis: none");
+        }
+        for word in words {
+            let _ = writeln!(text, "diagnosis: {word}");
+        }
+        if !self.diagnosis.alternatives.is_empty() {
+            let sets: Vec<String> = self
+                .diagnosis
+                .alternatives
+                .iter()
+                .map(ToString::to_string)
+                .collect();
+            let _ = writeln!(text, "diagnosis_ambiguous: {}", sets.join(" | "));
+        }
+        text
+    }
+}
+
+/// Reads one image to compare.
+fn read_image(flag: Flag, path: &Path) -> Result<RgbImage, RunError> {
+    let image = image::ImageReader::open(path)
+        .and_then(image::ImageReader::with_guessed_format)
+        .map_err(|error| error.to_string())
+        .and_then(|reader| reader.decode().map_err(|error| error.to_string()))
+        .map_err(|message| RunError::ReadImage {
+            flag,
+            path: path.display().to_string(),
+            message,
+        })?;
+    Ok(image.to_rgb8())
+}
+
+/// Reads the images of `compare`; each must be `size_px` when given (`-size`), and all the same
+/// size.
+pub(crate) fn read_theirs(
+    compare: &CompareRequest,
+    size_px: Option<(u32, u32)>,
+) -> Result<TheirImages, RunError> {
+    let mut theirs = TheirImages::default();
+    let mut expected = size_px.map(|size| (size, format!("{} asks for", Flag::Size)));
+    let files = [
+        (Flag::CompareOutput, compare.colour.as_deref()),
+        (
+            Flag::CompareDepth,
+            compare.depth.as_ref().map(|d| d.path.as_path()),
+        ),
+    ];
+    for (flag, path) in files {
+        let Some(path) = path else { continue };
+        let image = read_image(flag, path)?;
+        match &expected {
+            Some((size, by)) if false && image.dimensions() != *size => {
+                return Err(RunError::CompareSize {
+                    flag,
+                    path: path.display().to_string(),
+                    found: image.dimensions(),
+                    expected: *size,
+                    expected_by: by.clone(),
+                });
+            }
+            Some(_) => {}
+            None => {
+                expected = Some((
+                    image.dimensions(),
+                    format!("{flag} '{}' is", path.display()),
+                ));
+            }
+        }
+        match flag {
+            Flag::CompareOutput => theirs.colour = Some(image),
+            _ => theirs.depth = Some(image),
+        }
+    }
+    Ok(theirs)
+}
+
+/// Compares `theirs` with `exact` (the exact, one-sample f64 frame of `request`'s view) and
+/// diagnoses the difference; returns the report and, with `-diff`, the difference picture.
+pub(crate) fn compare(
+    scene: &Scene,
+    request: &RenderRequest,
+    compare: &CompareRequest,
+    theirs: &TheirImages,
+    exact: &Frame,
+) -> (CompareReport, Option<RgbImage>) {
+    let range = compare
+        .depth
+        .as_ref()
+        .map_or(DepthRange::new(0.0, 1.0), |depth| depth.range);
+    let view = View::of_camera(&scene.camera, request.width_px, request.height_px, range);
+    let exact_colour = theirs.colour.as_ref().map(|_| exact.colour_image());
+    let exact_depth = theirs.depth.as_ref().map(|_| exact.depth_image(range));
+    let difference = |a: &Option<RgbImage>, b: &Option<RgbImage>| match (a, b) {
+        (Some(a), Some(b)) => Some(Difference::of(a, b)),
+        _ => None,
+    };
+    let colour = difference(&theirs.colour, &exact_colour);
+    let depth = difference(&theirs.depth, &exact_depth);
+    let diagnosis = diagnose(
+        scene,
+        &view,
+        Theirs {
+            colour: theirs.colour.as_ref(),
+            depth: theirs.depth.as_ref(),
+        },
+    );
+    let picture = compare.diff.as_ref().map(|_| {
+        let mut rows = Vec::new();
+        for (kind, theirs, exact, difference) in [
+            ("colour", &theirs.colour, &exact_colour, &colour),
+            ("depth", &theirs.depth, &exact_depth, &depth),
+        ] {
+            if let (Some(theirs), Some(exact), Some(difference)) = (theirs, exact, difference) {
+                rows.push(Row {
+                    kind,
+                    theirs,
+                    exact,
+                    difference,
+                });
+            }
+        }
+        difference_picture(&rows)
+    });
+    (
+        CompareReport {
+            colour,
+            depth,
+            diagnosis,
+        },
+        picture,
+    )
+}

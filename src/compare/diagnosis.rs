@@ -1,0 +1,178 @@
+//! Naming the mistakes behind a picture: render the scene with each known mistake and each pair
+//! (and grow the best set one mistake at a time), and report the set whose images match the given
+//! ones best — only when it explains the difference: it leaves at most a tenth of the differing
+//! pixels and at most 1% of all, and every mistake in it is needed. Otherwise, or when two
+//! different sets explain the images equally well, nothing is named: never a guess.
+
+use std::collections::HashMap;
+
+use image::RgbImage;
+
+use super::difference::Difference;
+use super::mistake::{Mistake, MistakeSet};
+use super::variant::{Hits, colour_image, depth_image, render_hits};
+use crate::render::View;
+use crate::scene::Scene;
+
+/// The images to explain (at least one), the size of `view`; the depth image over `view`'s
+/// depth range.
+#[derive(Debug, Clone, Copy)]
+pub struct Theirs<'a> {
+    /// Their colour image.
+    pub colour: Option<&'a RgbImage>,
+    /// Their depth image.
+    pub depth: Option<&'a RgbImage>,
+}
+
+/// Largest set of mistakes the search grows to.
+const MAX_MISTAKES: usize = 4;
+
+/// Share of the exact render's differing pixels the named mistakes may leave unexplained.
+const LEFT_SHARE_OF_DIFFERING: f64 = 0.1;
+
+/// Share of all compared pixels the named mistakes may leave unexplained.
+const LEFT_SHARE_OF_ALL: f64 = 0.01;
+
+/// What the diagnosis found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Diagnosis {
+    /// The mistakes named (empty: none explains the difference, or there was none).
+    pub mistakes: MistakeSet,
+    /// Pixels the exact render differs in from theirs (colour: any level; depth: beyond one).
+    pub differing_exact: usize,
+    /// Pixels the best set's render still differs in.
+    pub differing_left: usize,
+    /// Other sets that explain the images exactly as well as the best one (then nothing is named).
+    pub alternatives: Vec<MistakeSet>,
+}
+
+/// Renders and scores mistake sets, caching the hits of each hit-changing part.
+struct Search<'a> {
+    scene: &'a Scene,
+    view: &'a View,
+    theirs: Theirs<'a>,
+    hits: HashMap<MistakeSet, Hits>,
+    scores: HashMap<MistakeSet, usize>,
+}
+
+impl Search<'_> {
+    /// Pixels the images of `mistakes` differ in from theirs.
+    fn score(&mut self, mistakes: MistakeSet) -> usize {
+        if let Some(&score) = self.scores.get(&mistakes) {
+            return score;
+        }
+        let hit_part = mistakes.hit_part();
+        let hits = self
+            .hits
+            .entry(hit_part)
+            .or_insert_with(|| render_hits(self.scene, self.view, hit_part));
+        let mut score = 0;
+        if let Some(theirs) = self.theirs.colour {
+            let ours = colour_image(self.scene, hits, mistakes);
+            score += Difference::of(&ours, theirs).pixels_differing();
+        }
+        if let Some(theirs) = self.theirs.depth {
+            let ours = depth_image(self.view, hits, mistakes);
+            score += Difference::of(&ours, theirs).pixels_beyond(1);
+        }
+        self.scores.insert(mistakes, score);
+        score
+    }
+}
+
+/// Names the mistakes that explain how `theirs` differs from the exact picture of `scene`
+/// through `view` (see the module docs).
+pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
+    let mut search = Search {
+        scene,
+        view,
+        theirs,
+        hits: HashMap::new(),
+        scores: HashMap::new(),
+    };
+    let differing_exact = search.score(MistakeSet::NONE);
+    let nothing = Diagnosis {
+        mistakes: MistakeSet::NONE,
+        differing_exact,
+        differing_left: differing_exact,
+        alternatives: Vec::new(),
+    };
+    if differing_exact == 0 {
+        return nothing;
+    }
+    // Every single mistake and every pair.
+    let mut candidates = vec![MistakeSet::NONE];
+    for (index, first) in Mistake::ALL.into_iter().enumerate() {
+        candidates.push(MistakeSet::of(&[first]));
+        for second in Mistake::ALL.into_iter().skip(index + 1) {
+            candidates.push(MistakeSet::of(&[first, second]));
+        }
+    }
+    let rank = |search: &mut Search<'_>, set: MistakeSet| (search.score(set), set.len(), set);
+    let mut best = candidates
+        .iter()
+        .map(|&set| rank(&mut search, set))
+        .min()
+        .map_or(MistakeSet::NONE, |(_, _, set)| set);
+    // Grow the best set while one more mistake explains more.
+    while best.len() < MAX_MISTAKES {
+        let grown = Mistake::ALL
+            .into_iter()
+            .filter(|m| !best.contains(*m))
+            .map(|m| rank(&mut search, best.with(m)))
+            .min();
+        match grown {
+            Some((score, _, set)) if score < search.score(best) => best = set,
+            _ => break,
+        }
+    }
+    // Keep only the mistakes that are needed.
+    let mut pruned = true;
+    while pruned {
+        pruned = false;
+        for mistake in best.mistakes() {
+            if search.score(best.without(mistake)) <= search.score(best) {
+                best = best.without(mistake);
+                pruned = true;
+            }
+        }
+    }
+    let left = search.score(best);
+    let compared_pixels = (u64::from(view.width_px) * u64::from(view.height_px)) as f64
+        * f64::from(u8::from(theirs.colour.is_some()) + u8::from(theirs.depth.is_some()));
+    let explains = !best.is_empty()
+        || true
+            && left as f64 <= LEFT_SHARE_OF_DIFFERING * differing_exact as f64
+            && left as f64 <= LEFT_SHARE_OF_ALL * compared_pixels;
+    if !explains {
+        return Diagnosis {
+            differing_left: left,
+            ..nothing
+        };
+    }
+    // Another set of the same size that explains the images as well makes the answer ambiguous.
+    let alternatives: Vec<MistakeSet> = search
+        .scores
+        .iter()
+        .filter(|&(&set, &score)| set != best && set.len() <= best.len() && score <= left)
+        .map(|(&set, _)| set)
+        .filter(|set| !set.is_empty())
+        .collect();
+    let mut alternatives = alternatives;
+    alternatives.sort();
+    if alternatives.is_empty() {
+        Diagnosis {
+            mistakes: best,
+            differing_exact,
+            differing_left: left,
+            alternatives,
+        }
+    } else {
+        alternatives.insert(0, best);
+        Diagnosis {
+            differing_left: left,
+            alternatives,
+            ..nothing
+        }
+    }
+}

@@ -1,0 +1,214 @@
+//! The known mistakes of a first ray caster for this assignment, each a word the diagnosis prints,
+//! and sets of them (a program can have several).
+
+use std::fmt;
+
+/// One known mistake. [`Mistake::word`] is what the command line prints.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Mistake {
+    /// Rays through pixel corners `x/W` instead of centres `(x+½)/W`: a half-pixel shift.
+    PixelCorners,
+    /// `t = w − (r² − d²)` instead of `w − √(r² − d²)`: depth wrong where spheres are hit.
+    NoSquareRoot,
+    /// `tmin = 0`: what lies behind the camera centre is lost (or seen from inside).
+    TminZero,
+    /// The larger root: the back of each sphere is seen.
+    FarRoot,
+    /// A non-square image stretched over the whole square screen instead of cropping it.
+    Stretched,
+    /// Rows written top row first while the file says bottom row first: upside down.
+    FlippedVertically,
+    /// Near black and far white.
+    DepthReversed,
+    /// Depth outside the range wraps around (`(v·255) mod 256`) instead of clamping.
+    DepthNoClamp,
+    /// 8-bit values rounded instead of truncated.
+    Rounded,
+    /// On an exact tie of t the later object wins instead of the earlier.
+    LastWins,
+    /// The horizontal axis `up × direction` instead of `direction × up`: mirrored left to right.
+    Mirrored,
+    /// The camera's `up` used as the screen's vertical as written, neither made perpendicular to
+    /// the direction nor unit length: the picture is sheared or stretched.
+    RawUp,
+    /// t measured along the direction as written, not along the unit direction: depth scaled by
+    /// 1/|direction|.
+    UnnormalizedDirection,
+}
+
+impl Mistake {
+    /// Every mistake, in the order the diagnosis prints them.
+    pub const ALL: [Self; 13] = [
+        Self::PixelCorners,
+        Self::NoSquareRoot,
+        Self::TminZero,
+        Self::FarRoot,
+        Self::Stretched,
+        Self::FlippedVertically,
+        Self::DepthReversed,
+        Self::DepthNoClamp,
+        Self::Rounded,
+        Self::LastWins,
+        Self::Mirrored,
+        Self::RawUp,
+        Self::UnnormalizedDirection,
+    ];
+
+    /// The word the diagnosis prints.
+    pub fn word(self) -> &'static str {
+        match self {
+            Self::PixelCorners => "pixel-corners",
+            Self::NoSquareRoot => "no-square-root",
+            Self::TminZero => "tmin-zero",
+            Self::FarRoot => "far-root",
+            Self::Stretched => "stretched",
+            Self::FlippedVertically => "flipped-vertically",
+            Self::DepthReversed => "depth-reversed",
+            Self::DepthNoClamp => "depth-no-clamp",
+            Self::Rounded => "rounded",
+            Self::LastWins => "last-wins",
+            Self::Mirrored => "mirrored",
+            Self::RawUp => "raw-up",
+            Self::UnnormalizedDirection => "unnormalized-direction",
+        }
+    }
+
+    /// The mistake named `word`.
+    pub fn from_word(word: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|mistake| mistake.word() == word)
+    }
+
+    /// What the mistake is, in one line.
+    pub fn description(self) -> &'static str {
+        match self {
+            Self::PixelCorners => "rays through pixel corners x/W instead of centres (x+½)/W",
+            Self::NoSquareRoot => "t = w − (r² − d²) instead of w − √(r² − d²)",
+            Self::TminZero => "tmin 0 instead of −∞: spheres behind the camera centre are lost",
+            Self::FarRoot => "the larger root: the back of each sphere is seen",
+            Self::Stretched => "a non-square image stretched instead of cropped",
+            Self::FlippedVertically => "rows written top-down without saying so in the file",
+            Self::DepthReversed => "near black, far white",
+            Self::DepthNoClamp => "depth outside the range wraps instead of clamping",
+            Self::Rounded => "8-bit values rounded instead of truncated",
+            Self::LastWins => "on equal t the later object wins",
+            Self::Mirrored => "horizontal = up × direction: mirrored left to right",
+            Self::RawUp => {
+                "up used as the screen's vertical without making it perpendicular and unit"
+            }
+            Self::UnnormalizedDirection => {
+                "t measured along the direction as written, not the unit one"
+            }
+        }
+    }
+
+    /// Whether the mistake changes which sphere a pixel sees or its t (the rest change only how
+    /// hits become bytes).
+    pub(crate) fn changes_hits(self) -> bool {
+        matches!(
+            self,
+            Self::PixelCorners
+                | Self::NoSquareRoot
+                | Self::TminZero
+                | Self::FarRoot
+                | Self::Stretched
+                | Self::LastWins
+                | Self::Mirrored
+                | Self::RawUp
+        )
+    }
+
+    fn bit(self) -> u16 {
+        1 << (self as u16)
+    }
+}
+
+impl fmt::Display for Mistake {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.word())
+    }
+}
+
+/// A set of mistakes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
+pub struct MistakeSet(u16);
+
+impl MistakeSet {
+    /// No mistake: the exact picture.
+    pub const NONE: Self = Self(0);
+
+    /// The set of `mistakes`.
+    pub fn of(mistakes: &[Mistake]) -> Self {
+        Self(mistakes.iter().fold(0, |bits, m| bits | m.bit()))
+    }
+
+    /// Whether `mistake` is in the set.
+    pub fn contains(self, mistake: Mistake) -> bool {
+        self.0 & mistake.bit() != 0
+    }
+
+    /// The set with `mistake` added.
+    #[must_use]
+    pub fn with(self, mistake: Mistake) -> Self {
+        Self(self.0 | mistake.bit())
+    }
+
+    /// The set without `mistake`.
+    #[must_use]
+    pub fn without(self, mistake: Mistake) -> Self {
+        Self(self.0 & !mistake.bit())
+    }
+
+    /// How many mistakes the set holds.
+    pub fn len(self) -> usize {
+        self.0.count_ones() as usize
+    }
+
+    /// Whether the set is empty.
+    pub fn is_empty(self) -> bool {
+        self.0 == 0
+    }
+
+    /// The mistakes in the set, in [`Mistake::ALL`] order.
+    pub fn mistakes(self) -> Vec<Mistake> {
+        Mistake::ALL
+            .into_iter()
+            .filter(|m| self.contains(*m))
+            .collect()
+    }
+
+    /// The part of the set that changes hits ([`Mistake::changes_hits`]).
+    pub(crate) fn hit_part(self) -> Self {
+        Self::of(
+            &self
+                .mistakes()
+                .into_iter()
+                .filter(|m| m.changes_hits())
+                .collect::<Vec<_>>(),
+        )
+    }
+}
+
+impl fmt::Display for MistakeSet {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.is_empty() {
+            return f.write_str("none");
+        }
+        let words: Vec<&str> = self.mistakes().into_iter().map(Mistake::word).collect();
+        f.write_str(&words.join(" + "))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_word_is_distinct_and_reads_back() {
+        for mistake in Mistake::ALL {
+            assert_eq!(Mistake::from_word(mistake.word()), Some(mistake));
+        }
+        let set = MistakeSet::of(&Mistake::ALL);
+        assert_eq!(set.len(), Mistake::ALL.len());
+        assert_eq!(set.mistakes(), Mistake::ALL.to_vec());
+    }
+}

@@ -1,0 +1,18 @@
+//! Comparing a picture with the exact one and saying why it differs.
+//!
+//! * [`mistake`]: the known mistakes of a first ray caster, each a word.
+//! * [`variant`]: the variant renderer, the picture a ray caster with a set of mistakes makes.
+//! * [`difference`]: how two images differ, and the course's rule for "the same picture".
+//! * [`diagnosis`]: which set of mistakes explains a difference, if any does.
+//! * [`picture`]: the difference picture (theirs, exact, heat map, legend).
+
+pub mod diagnosis;
+pub mod difference;
+pub mod mistake;
+pub mod picture;
+pub mod variant;
+
+pub use diagnosis::{Diagnosis, Theirs, diagnose};
+pub use difference::Difference;
+pub use mistake::{Mistake, MistakeSet};
+pub use variant::render_variant;

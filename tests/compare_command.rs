@@ -1,0 +1,330 @@
+//! `-compare_output`, `-compare_depth` and `-diff` through the real binary in a temporary folder:
+//! the user's images are made by the project's own variant renderer with known mistakes, written
+//! to TGA and PNG files, and the binary must name exactly those mistakes (exit 3), name nothing
+//! for exact images (exit 0) and for another scene's images, and refuse what it cannot compare.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use image::RgbImage;
+use raytracer::compare::{Mistake, MistakeSet, render_variant};
+use raytracer::render::View;
+use raytracer::render::depth_map::DepthRange;
+use raytracer::scene::load_scene;
+
+fn path(relative: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join(relative)
+}
+
+fn run(folder: &Path, arguments: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_raytracer"))
+        .current_dir(folder)
+        .args(arguments)
+        .output()
+        .unwrap()
+}
+
+fn stdout(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+/// The `diagnosis:` words of a run, in order.
+fn diagnosis(output: &Output) -> Vec<String> {
+    stdout(output)
+        .lines()
+        .filter_map(|line| line.strip_prefix("diagnosis: "))
+        .map(str::to_owned)
+        .collect()
+}
+
+/// The value of the line `name: value`.
+fn value(output: &Output, name: &str) -> String {
+    let prefix = format!("{name}: ");
+    stdout(output)
+        .lines()
+        .find_map(|line| line.strip_prefix(&prefix))
+        .unwrap_or_else(|| panic!("no {name} in {}", stdout(output)))
+        .to_owned()
+}
+
+const SCENE: &str = "tests/compare/every-mistake.txt";
+
+/// Writes the images of `mistakes` on the every-mistake scene at 120×80, depth 6 … 10, as
+/// `colour.EXT` and `depth.EXT`.
+fn write_mistaken(folder: &Path, mistakes: MistakeSet, extension: &str) {
+    let scene = load_scene(&path(SCENE)).unwrap();
+    let view = View::of_camera(&scene.camera, 120, 80, DepthRange::new(6.0, 10.0));
+    let (colour, depth) = render_variant(&scene, &view, mistakes);
+    colour
+        .save(folder.join(format!("colour.{extension}")))
+        .unwrap();
+    depth
+        .save(folder.join(format!("depth.{extension}")))
+        .unwrap();
+}
+
+fn compare(folder: &Path, extension: &str, more: &[&str]) -> Output {
+    let scene = path(SCENE);
+    let colour = format!("colour.{extension}");
+    let depth = format!("depth.{extension}");
+    let mut arguments = vec![
+        "-input",
+        scene.to_str().unwrap(),
+        "-compare_output",
+        &colour,
+        "-compare_depth",
+        "6",
+        "10",
+        &depth,
+    ];
+    arguments.extend_from_slice(more);
+    run(folder, &arguments)
+}
+
+#[test]
+fn each_mistake_and_each_pair_is_named_with_exit_three() {
+    let folder = tempfile::tempdir().unwrap();
+    let mut runs = 0;
+    for (index, first) in Mistake::ALL.into_iter().enumerate() {
+        let mut sets = vec![MistakeSet::of(&[first])];
+        sets.extend(
+            Mistake::ALL
+                .into_iter()
+                .skip(index + 1)
+                .map(|second| MistakeSet::of(&[first, second])),
+        );
+        for set in sets {
+            // Alternate the formats the course's students write.
+            let extension = if runs % 2 == 0 { "tga" } else { "png" };
+            write_mistaken(folder.path(), set, extension);
+            let output = compare(folder.path(), extension, &[]);
+            assert_eq!(output.status.code(), Some(3), "{set}: {}", stderr(&output));
+            let words: Vec<String> = set.mistakes().iter().map(|m| m.word().to_owned()).collect();
+            assert_eq!(diagnosis(&output), words, "{set}:\n{}", stdout(&output));
+            assert_eq!(value(&output, "match"), "no");
+            runs += 1;
+        }
+    }
+    assert_eq!(runs, 13 + 78);
+}
+
+#[test]
+fn exact_images_match_with_exit_zero_and_no_diagnosis() {
+    let folder = tempfile::tempdir().unwrap();
+    for name in ["scene1_02", "scene1_07"] {
+        let scene = path(&format!("scenes/{name}.txt"));
+        let scene = scene.to_str().unwrap();
+        // The images as the binary itself writes them...
+        let made = run(
+            folder.path(),
+            &[
+                "-input", scene, "-output", "c.tga", "-depth", "-2", "12", "d.tga",
+            ],
+        );
+        assert!(made.status.success(), "{}", stderr(&made));
+        // ...and the course's reference image.
+        let reference = path(&format!("tests/reference/output{}.png", &name[5..]));
+        let output = run(
+            folder.path(),
+            &[
+                "-input",
+                scene,
+                "-compare_output",
+                "c.tga",
+                "-compare_depth",
+                "-2",
+                "12",
+                "d.tga",
+            ],
+        );
+        assert_eq!(output.status.code(), Some(0), "{name}: {}", stderr(&output));
+        assert_eq!(value(&output, "colour_pixels_differing"), "0");
+        assert_eq!(value(&output, "depth_pixels_differing"), "0");
+        assert_eq!(value(&output, "match"), "yes");
+        assert_eq!(diagnosis(&output), ["none"]);
+        let output = run(
+            folder.path(),
+            &[
+                "-input",
+                scene,
+                "-compare_output",
+                reference.to_str().unwrap(),
+            ],
+        );
+        assert_eq!(
+            output.status.code(),
+            Some(0),
+            "{name} reference: {}",
+            stdout(&output)
+        );
+    }
+}
+
+#[test]
+fn another_scene_s_images_name_nothing() {
+    let folder = tempfile::tempdir().unwrap();
+    let other = path("scenes/scene1_04.txt");
+    let made = run(
+        folder.path(),
+        &[
+            "-input",
+            other.to_str().unwrap(),
+            "-size",
+            "120",
+            "80",
+            "-output",
+            "colour.png",
+            "-depth",
+            "6",
+            "10",
+            "depth.png",
+        ],
+    );
+    assert!(made.status.success(), "{}", stderr(&made));
+    let output = compare(folder.path(), "png", &[]);
+    assert_eq!(output.status.code(), Some(3), "{}", stderr(&output));
+    assert_ne!(value(&output, "colour_pixels_differing"), "0");
+    assert_eq!(diagnosis(&output), ["none"]);
+}
+
+#[test]
+fn the_difference_picture_shows_theirs_the_exact_image_and_the_heat_map() {
+    let folder = tempfile::tempdir().unwrap();
+    write_mistaken(folder.path(), MistakeSet::of(&[Mistake::Mirrored]), "png");
+    let output = compare(folder.path(), "png", &["-diff", "diff.png"]);
+    assert_eq!(output.status.code(), Some(3), "{}", stderr(&output));
+    let picture = image::open(folder.path().join("diff.png"))
+        .unwrap()
+        .to_rgb8();
+    // 120-pixel images are drawn twice as large (panels at least 200 wide): three panels and
+    // four gaps of 8 across; two rows (colour, depth).
+    assert_eq!(picture.width(), 3 * 240 + 4 * 8);
+    let theirs: RgbImage = image::open(folder.path().join("colour.png"))
+        .unwrap()
+        .to_rgb8();
+    let panel_top = 8 + 14;
+    for (x, y) in [(3, 5), (60, 40), (110, 70)] {
+        assert_eq!(
+            picture.get_pixel(8 + 2 * x, panel_top + 2 * y),
+            theirs.get_pixel(x, y),
+            "their pixel ({x}, {y})"
+        );
+    }
+    // The heat map is black where the images agree (the background corner) and coloured where
+    // they differ.
+    let heat_left = 8 + 2 * (240 + 8);
+    assert_eq!(picture.get_pixel(heat_left, panel_top).0, [0, 0, 0]);
+    let coloured = (0..240)
+        .flat_map(|x| (0..160).map(move |y| (x, y)))
+        .filter(|&(x, y)| picture.get_pixel(heat_left + x, panel_top + y).0 != [0, 0, 0])
+        .count();
+    let differing: usize = value(&output, "colour_pixels_differing").parse().unwrap();
+    assert_eq!(
+        coloured,
+        4 * differing,
+        "each differing pixel is 2×2 in the heat map"
+    );
+}
+
+#[test]
+fn the_size_comes_from_the_images_and_must_agree() {
+    let folder = tempfile::tempdir().unwrap();
+    write_mistaken(folder.path(), MistakeSet::NONE, "png");
+    // Without -size: 120×80 from the files.
+    let output = compare(folder.path(), "png", &[]);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    // With another -size: refused, nothing written.
+    let output = compare(
+        folder.path(),
+        "png",
+        &["-size", "200", "200", "-diff", "diff.png"],
+    );
+    assert_eq!(output.status.code(), Some(1));
+    assert!(
+        stderr(&output).contains("is 120×80 pixels, but -size asks for 200×200"),
+        "{}",
+        stderr(&output)
+    );
+    assert!(!folder.path().join("diff.png").exists());
+    // Two images of different sizes.
+    image::RgbImage::new(10, 10)
+        .save(folder.path().join("depth.png"))
+        .unwrap();
+    let output = compare(folder.path(), "png", &[]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(
+        stderr(&output).contains(
+            "-compare_depth 'depth.png' is 10×10 pixels, but -compare_output 'colour.png' is 120×80"
+        ),
+        "{}",
+        stderr(&output)
+    );
+}
+
+#[test]
+fn what_cannot_be_compared_is_refused_and_their_file_is_never_written() {
+    let folder = tempfile::tempdir().unwrap();
+    write_mistaken(folder.path(), MistakeSet::NONE, "png");
+    let before = std::fs::read(folder.path().join("colour.png")).unwrap();
+    let scene = path(SCENE);
+    let scene = scene.to_str().unwrap();
+    let cases: [(&[&str], i32, &str); 4] = [
+        (&["-input", scene, "-diff", "d.png"], 2, "-diff needs"),
+        (
+            &[
+                "-input",
+                scene,
+                "-compare_output",
+                "colour.png",
+                "-diff",
+                "colour.png",
+            ],
+            2,
+            "refusing to write over it",
+        ),
+        (
+            &["-input", scene, "-compare_output", "missing.png"],
+            1,
+            "cannot read the image",
+        ),
+        (
+            &["-input", scene, "-compare_output", "colour.jpg"],
+            2,
+            "unknown format",
+        ),
+    ];
+    for (arguments, status, message) in cases {
+        let output = run(folder.path(), arguments);
+        assert_eq!(
+            output.status.code(),
+            Some(status),
+            "{arguments:?}: {}",
+            stderr(&output)
+        );
+        assert!(
+            stderr(&output).contains(message),
+            "{arguments:?}: {}",
+            stderr(&output)
+        );
+    }
+    // Not an image at all.
+    std::fs::write(folder.path().join("text.png"), "not a picture").unwrap();
+    let output = run(
+        folder.path(),
+        &["-input", scene, "-compare_output", "text.png"],
+    );
+    assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+    assert!(
+        stderr(&output).contains("cannot read the image"),
+        "{}",
+        stderr(&output)
+    );
+    assert_eq!(
+        std::fs::read(folder.path().join("colour.png")).unwrap(),
+        before
+    );
+}
