@@ -123,7 +123,7 @@ pub(crate) fn read_theirs(
         let Some(path) = path else { continue };
         let image = read_image(flag, path)?;
         match &expected {
-            Some((size, by)) if false && image.dimensions() != *size => {
+            Some((size, by)) if image.dimensions() != *size => {
                 return Err(RunError::CompareSize {
                     flag,
                     path: path.display().to_string(),

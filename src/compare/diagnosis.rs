@@ -141,9 +141,8 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
     let compared_pixels = (u64::from(view.width_px) * u64::from(view.height_px)) as f64
         * f64::from(u8::from(theirs.colour.is_some()) + u8::from(theirs.depth.is_some()));
     let explains = !best.is_empty()
-        || true
-            && left as f64 <= LEFT_SHARE_OF_DIFFERING * differing_exact as f64
-            && left as f64 <= LEFT_SHARE_OF_ALL * compared_pixels;
+        && left as f64 <= LEFT_SHARE_OF_DIFFERING * differing_exact as f64
+        && left as f64 <= LEFT_SHARE_OF_ALL * compared_pixels;
     if !explains {
         return Diagnosis {
             differing_left: left,

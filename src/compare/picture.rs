@@ -93,7 +93,7 @@ pub fn difference_picture(rows: &[Row<'_>]) -> RgbImage {
             ),
         ];
         for (column, (image, title)) in
-            (0u32..).zip([row.exact, row.theirs, &heat].iter().zip(&titles))
+            (0u32..).zip([row.theirs, row.exact, &heat].iter().zip(&titles))
         {
             let left = GAP_PX + column * (panel_w + GAP_PX);
             draw_text(&mut picture, title, left, top + 2, 1, TEXT);

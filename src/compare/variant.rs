@@ -69,7 +69,7 @@ impl PixelMapping {
 
 impl Rays {
     fn new(view: &View, mistakes: MistakeSet) -> Self {
-        let direction = view.direction_world;
+        let direction = view.direction_world.normalize();
         let true_horizontal = direction.cross(view.up_world).normalize();
         let horizontal = if mistakes.contains(Mistake::Mirrored) {
             -true_horizontal
@@ -214,7 +214,7 @@ pub fn render_hits(scene: &Scene, view: &View, mistakes: MistakeSet) -> Hits {
             }
         }
     }
-    let last_wins = false && mistakes.contains(Mistake::LastWins);
+    let last_wins = mistakes.contains(Mistake::LastWins);
     let pixels = (width * height) as usize;
     let mut t = vec![f64::INFINITY; pixels];
     let mut sphere = vec![u32::MAX; pixels];
