@@ -1,6 +1,7 @@
 //! The documentation cannot drift from what backs it:
 //! * every table in README.md marked `<!-- from docs/NAME.md -->` holds rows that are, verbatim,
-//!   rows of that generated report (the reports are written by committed commands);
+//!   rows of that generated report (the reports are written by committed commands), and every
+//!   code block so marked holds lines of it;
 //! * every row of docs/robustness.md cites tests that exist (or says "same" for the row above).
 
 use std::path::{Path, PathBuf};
@@ -40,6 +41,30 @@ fn readme_tables_equal_the_generated_reports() {
         };
         let report = read(source);
         let report_lines: Vec<&str> = report.lines().map(str::trim_end).collect();
+        // A code block: each of its lines is a line of the source.
+        if lines
+            .get(index + 1)
+            .is_some_and(|next| next.starts_with("```"))
+        {
+            let block: Vec<&str> = lines[index + 2..]
+                .iter()
+                .take_while(|line| !line.starts_with("```"))
+                .copied()
+                .collect();
+            assert!(
+                !block.is_empty(),
+                "the block after line {} is empty",
+                index + 1
+            );
+            for line in block {
+                assert!(
+                    report_lines.contains(&line.trim_end()),
+                    "README line not in {source}:\n{line}"
+                );
+                checked += 1;
+            }
+            continue;
+        }
         let rows = table_rows(&lines, index + 1);
         assert!(
             rows.len() > 1,

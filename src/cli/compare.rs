@@ -9,12 +9,44 @@ use image::RgbImage;
 
 use super::flags::Flag;
 use super::request::{CompareRequest, RenderRequest};
-use super::run::RunError;
 use crate::compare::picture::{Row, difference_picture};
 use crate::compare::{Diagnosis, Difference, Theirs, diagnose};
 use crate::render::depth_map::DepthRange;
 use crate::render::{Frame, View};
 use crate::scene::Scene;
+
+/// Why the images to compare cannot be compared.
+#[derive(Debug, thiserror::Error)]
+pub enum CompareError {
+    /// An image to compare could not be read.
+    #[error("{flag} '{path}': cannot read the image: {message}")]
+    ReadImage {
+        /// The flag that named it.
+        flag: Flag,
+        /// Its path as given.
+        path: String,
+        /// What went wrong.
+        message: String,
+    },
+    /// An image to compare is not the size of the render.
+    #[error(
+        "{flag} '{path}' is {}×{} pixels, but {expected_by} {}×{}: compare images of one size \
+         (leave out -size to take it from the image)",
+        found.0, found.1, expected.0, expected.1
+    )]
+    CompareSize {
+        /// The flag that named the image.
+        flag: Flag,
+        /// Its path as given.
+        path: String,
+        /// Its size.
+        found: (u32, u32),
+        /// The size expected.
+        expected: (u32, u32),
+        /// What set the expected size: "-size asks for" or "-compare_output 'x.tga' is".
+        expected_by: String,
+    },
+}
 
 /// The user's images, read.
 #[derive(Debug, Default)]
@@ -91,12 +123,12 @@ impl CompareReport {
 }
 
 /// Reads one image to compare.
-fn read_image(flag: Flag, path: &Path) -> Result<RgbImage, RunError> {
+fn read_image(flag: Flag, path: &Path) -> Result<RgbImage, CompareError> {
     let image = image::ImageReader::open(path)
         .and_then(image::ImageReader::with_guessed_format)
         .map_err(|error| error.to_string())
         .and_then(|reader| reader.decode().map_err(|error| error.to_string()))
-        .map_err(|message| RunError::ReadImage {
+        .map_err(|message| CompareError::ReadImage {
             flag,
             path: path.display().to_string(),
             message,
@@ -109,7 +141,7 @@ fn read_image(flag: Flag, path: &Path) -> Result<RgbImage, RunError> {
 pub(crate) fn read_theirs(
     compare: &CompareRequest,
     size_px: Option<(u32, u32)>,
-) -> Result<TheirImages, RunError> {
+) -> Result<TheirImages, CompareError> {
     let mut theirs = TheirImages::default();
     let mut expected = size_px.map(|size| (size, format!("{} asks for", Flag::Size)));
     let files = [
@@ -124,7 +156,7 @@ pub(crate) fn read_theirs(
         let image = read_image(flag, path)?;
         match &expected {
             Some((size, by)) if image.dimensions() != *size => {
-                return Err(RunError::CompareSize {
+                return Err(CompareError::CompareSize {
                     flag,
                     path: path.display().to_string(),
                     found: image.dimensions(),

@@ -169,7 +169,7 @@ pub fn usage() -> String {
 mod tests {
     use super::*;
 
-    const ALL: [Flag; 16] = [
+    const ALL: [Flag; 19] = [
         Flag::Input,
         Flag::Size,
         Flag::Output,
@@ -184,6 +184,9 @@ mod tests {
         Flag::BoxFilter,
         Flag::TentFilter,
         Flag::GaussianFilter,
+        Flag::CompareOutput,
+        Flag::CompareDepth,
+        Flag::Diff,
         Flag::Stats,
         Flag::Help,
     ];

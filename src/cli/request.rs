@@ -103,7 +103,7 @@ pub enum Command {
     /// Print the usage text.
     Help,
     /// Render without a window.
-    Render(RenderRequest),
+    Render(Box<RenderRequest>),
     /// Open the viewer.
     View(ViewerRequest),
 }
@@ -178,7 +178,7 @@ impl RawArgs {
         }
         let input = input.ok_or(UsageError::MissingInput)?;
         let (width_px, height_px) = size_px.unwrap_or(DEFAULT_SIZE_PX);
-        Ok(Command::Render(RenderRequest {
+        Ok(Command::Render(Box::new(RenderRequest {
             input,
             width_px,
             height_px,
@@ -194,7 +194,7 @@ impl RawArgs {
                 sampling: self.sampling()?,
             },
             stats: self.has(Flag::Stats),
-        }))
+        })))
     }
 
     /// The comparison flags; `None` without `-compare_output` and `-compare_depth`.

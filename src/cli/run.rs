@@ -9,7 +9,7 @@ use std::time::{Duration, Instant};
 
 use image::RgbImage;
 
-use super::compare::{CompareReport, TheirImages, compare, read_theirs};
+use super::compare::{CompareError, CompareReport, TheirImages, compare, read_theirs};
 use super::error::UsageError;
 use super::flags::Flag;
 use super::progress::StepProgress;
@@ -56,34 +56,9 @@ pub enum RunError {
     /// An image could not be written.
     #[error(transparent)]
     Write(#[from] WriteError),
-    /// An image to compare could not be read.
-    #[error("{flag} '{path}': cannot read the image: {message}")]
-    ReadImage {
-        /// The flag that named it.
-        flag: Flag,
-        /// Its path as given.
-        path: String,
-        /// What went wrong.
-        message: String,
-    },
-    /// An image to compare is not the size of the render.
-    #[error(
-        "{flag} '{path}' is {}×{} pixels, but {expected_by} {}×{}: compare images of one size \
-         (leave out -size to take it from the image)",
-        found.0, found.1, expected.0, expected.1
-    )]
-    CompareSize {
-        /// The flag that named the image.
-        flag: Flag,
-        /// Its path as given.
-        path: String,
-        /// Its size.
-        found: (u32, u32),
-        /// The size expected.
-        expected: (u32, u32),
-        /// What set the expected size: "-size asks for" or "-compare_output 'x.tga' is".
-        expected_by: String,
-    },
+    /// An image to compare could not be read or has the wrong size.
+    #[error(transparent)]
+    Compare(#[from] CompareError),
 }
 
 impl RunError {

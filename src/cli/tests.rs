@@ -14,7 +14,7 @@ fn course_command_line_gives_a_render_request() {
         parse("-input scene1_01.txt -size 200 100 -output out.tga -depth 9 10 depth.tga").unwrap();
     assert_eq!(
         command,
-        Command::Render(RenderRequest {
+        Command::Render(Box::new(RenderRequest {
             input: "scene1_01.txt".into(),
             width_px: 200,
             height_px: 100,
@@ -30,7 +30,7 @@ fn course_command_line_gives_a_render_request() {
             depth_raw_output: None,
             quality: Quality::default(),
             stats: false,
-        })
+        }))
     );
 }
 
@@ -269,7 +269,7 @@ fn a_request_written_back_to_arguments_parses_to_the_same_request() {
         }
         assert_eq!(
             parse_command(arguments.clone()),
-            Ok(Command::Render(request.clone())),
+            Ok(Command::Render(Box::new(request.clone()))),
             "{arguments:?}"
         );
     }

@@ -123,7 +123,8 @@ impl Rays {
             DVec2::new(self.vertical.dot(e1), self.vertical.dot(e2)),
         );
         let determinant = axes.determinant();
-        if !(determinant.abs() > 1e-12 * axes.col(0).length() * axes.col(1).length()) {
+        let scale = axes.col(0).length() * axes.col(1).length();
+        if determinant.is_nan() || determinant.abs() <= 1e-12 * scale {
             return everything;
         }
         let inverse = axes.inverse();
@@ -165,7 +166,7 @@ impl Rays {
 /// the point nearest the centre, `across_sq` the squared distance of the ray from the centre.
 fn sphere_t(w: f64, across_sq: f64, radius: f64, mistakes: MistakeSet) -> Option<f64> {
     let inside = radius * radius - across_sq;
-    if !(inside >= 0.0) {
+    if inside.is_nan() || inside < 0.0 {
         return None;
     }
     let half_chord = if mistakes.contains(Mistake::NoSquareRoot) {
