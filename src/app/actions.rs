@@ -53,6 +53,18 @@ pub(crate) enum Action {
     SaveViewTo(PathBuf),
     /// Release the pinned probe.
     Unpin,
+    /// Compare the image at this path with the exact render.
+    CompareImage(PathBuf, crate::app::compare::ImageKind),
+    /// Measure the chosen quality against the exact render on the current view.
+    CompareQuality,
+    /// What the compared image shows.
+    CompareShow(crate::app::compare::CompareShow),
+    /// The A/B flip: the render and their image in turn.
+    CompareFlip,
+    /// The difference view on and off.
+    CompareDifference,
+    /// Close the comparison.
+    CompareClose,
 }
 
 impl ViewerApp {
@@ -75,6 +87,16 @@ impl ViewerApp {
             Action::ResetMagnifier => self.magnifier = Default::default(),
             Action::ExportTo(_) | Action::SaveViewTo(_) => self.write_or_ask(action),
             Action::Unpin => self.probe.pinned_world = None,
+            Action::CompareImage(path, kind) => self.compare_with_file(path, kind),
+            Action::CompareQuality => self.compare_quality(),
+            Action::CompareShow(show) => {
+                if self.compare.current.is_some() {
+                    self.compare.show = show;
+                }
+            }
+            Action::CompareFlip => self.flip_comparison(),
+            Action::CompareDifference => self.toggle_difference(),
+            Action::CompareClose => self.close_comparison(),
         }
     }
 
@@ -241,6 +263,9 @@ impl ViewerApp {
             DialogKind::Export => typed(&export.path).map(Action::ExportTo),
             DialogKind::SaveScene => typed(&export.scene_path).map(Action::SaveViewTo),
             DialogKind::Open => typed(&self.fields.path_text).map(Action::Open),
+            DialogKind::CompareImage(kind) => {
+                typed(&self.compare.path_text).map(|path| Action::CompareImage(path, kind))
+            }
         };
         match action {
             Some(action) => self.apply(action),
@@ -265,6 +290,10 @@ impl ViewerApp {
                         DialogKind::SaveScene => {
                             self.settings.export.scene_path = path.display().to_string();
                             self.write_or_ask(Action::SaveViewTo(path));
+                        }
+                        DialogKind::CompareImage(kind) => {
+                            self.compare.path_text = path.display().to_string();
+                            self.compare_with_file(path, kind);
                         }
                     }
                 }

@@ -16,6 +16,8 @@ pub(crate) enum DialogKind {
     Export,
     /// "Save view as scene".
     SaveScene,
+    /// "Open an image to compare" (colour or depth).
+    CompareImage(crate::app::compare::ImageKind),
 }
 
 /// A dialog that is open (or whose answer has not been read yet).
@@ -92,6 +94,11 @@ pub(crate) fn spawn_dialog(
                 .set_title("Save view as scene")
                 .set_file_name(suggested_name)
                 .save_file(),
+            DialogKind::CompareImage(_) => dialog
+                .add_filter("image", &["tga", "png"])
+                .add_filter("any file", &["*"])
+                .set_title("Open an image to compare")
+                .pick_file(),
         }
     })?;
     Ok(PendingDialog { kind, task })

@@ -23,7 +23,7 @@ pub const KEY_ORBIT_RAD: f64 = std::f64::consts::PI / 36.0;
 pub const KEY_ZOOM_FACTOR: f64 = 1.25;
 
 /// The keys navigation listens to.
-const NAVIGATION_KEYS: [Key; 13] = [
+const NAVIGATION_KEYS: [Key; 14] = [
     Key::ArrowLeft,
     Key::ArrowRight,
     Key::ArrowUp,
@@ -37,6 +37,7 @@ const NAVIGATION_KEYS: [Key; 13] = [
     Key::D,
     Key::Num1,
     Key::Escape,
+    Key::B,
 ];
 
 impl ViewerApp {
@@ -94,7 +95,8 @@ impl ViewerApp {
 
     /// Keyboard navigation while no text field or slider has the keyboard: arrows move the
     /// camera, Shift+arrows orbit, `+`/`-` zoom at the image centre, F frames all, Home resets,
-    /// A fits the depth range, Escape unpins the probe.
+    /// A fits the depth range, Escape unpins the probe, B flips between the render and the compared
+    /// image, Shift+B shows the difference.
     fn navigation_keys(&mut self, ctx: &egui::Context) {
         if ctx.memory(|memory| memory.focused().is_some()) {
             return;
@@ -147,6 +149,8 @@ impl ViewerApp {
                 (Key::A, _) => self.apply(Action::AutoRange),
                 (Key::D, _) => self.apply(Action::ResetDepth),
                 (Key::Num1, _) => self.apply(Action::ResetMagnifier),
+                (Key::B, _) if shift => self.apply(Action::CompareDifference),
+                (Key::B, _) => self.apply(Action::CompareFlip),
                 (Key::Escape, _) if self.help_open => self.help_open = false,
                 (Key::Escape, _) => self.apply(Action::Unpin),
                 _ => {}

@@ -124,4 +124,19 @@ impl ViewerApp {
     pub fn wait_for_worker(&self, timeout: Duration) -> bool {
         self.worker.as_ref().is_none_or(|w| w.wait_idle(timeout))
     }
+
+    /// The comparison on screen (Compare section), if any.
+    pub fn comparison(&self) -> Option<&super::compare::ComparisonPixels> {
+        self.compare.current.as_ref().map(|c| &c.pixels)
+    }
+
+    /// What the compared image shows.
+    pub fn compare_show(&self) -> super::compare::CompareShow {
+        self.compare.show
+    }
+
+    /// True while a comparison is being computed.
+    pub fn comparing(&self) -> bool {
+        self.compare.busy()
+    }
 }

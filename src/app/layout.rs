@@ -8,13 +8,15 @@ use std::path::PathBuf;
 
 use super::ViewerApp;
 use super::actions::Action;
+use super::compare::{CompareShow, CompareSource, CompareState};
 use super::ui::histogram::HistogramStyle;
-use super::ui::images::{Footer, ShownImages, images_ui};
+use super::ui::images::{Compared, Footer, ShownImages, images_ui};
 use super::ui::status_bar::{StatusLine, error_overlay_ui, status_bar_ui};
 use super::ui::{
     depth_section, file_sections, help, probe_text, toolbar, view_controls, views_section,
 };
 use crate::explore::probe::pixel_of_point;
+use crate::render::View;
 
 /// Below this window width the controls are a drawer over the images, not a side panel.
 pub(crate) const DRAWER_BELOW_POINTS: f32 = 900.0;
@@ -101,6 +103,12 @@ impl ViewerApp {
             ui.separator();
             view_controls::quality_ui(ui, &mut self.settings.quality);
             ui.separator();
+            actions.extend(super::ui::compare_section::compare_ui(
+                ui,
+                &mut self.compare,
+                &self.settings.quality,
+            ));
+            ui.separator();
             let named = self
                 .loaded
                 .path
@@ -164,7 +172,9 @@ impl ViewerApp {
 
     /// A render or a write is under way.
     pub(super) fn busy(&self) -> bool {
-        self.worker.as_ref().is_some_and(|w| !w.is_idle()) || self.writing.is_some()
+        self.worker.as_ref().is_some_and(|w| !w.is_idle())
+            || self.writing.is_some()
+            || self.compare.busy()
     }
 
     /// Where the pinned point is on the frame on screen (image pixels, y up), if it is in view.
@@ -186,14 +196,24 @@ impl ViewerApp {
             (Some(range), Some(hit)) => style.colour_map.rgb(&range, hit.t, style.no_hit_rgb),
             _ => style.no_hit_rgb,
         };
-        let probe_lines =
+        let mut probe_lines =
             probe_text::probe_lines(self.pinned_probe(), self.hover_probe(), depth_rgb);
+        if let Some(line) = self
+            .probe
+            .hover_px
+            .and_then(|px| self.compare_probe_line(px))
+        {
+            probe_lines.push(line);
+        }
+        self.close_stale_measurement();
+        let compared = compared_picture(&self.compare, &self.view);
         let shown = self.shown.as_ref().map(|s| ShownImages {
             colour: &s.colour,
             depth: &s.depth,
             size_px: [s.frame.width_px, s.frame.height_px],
             depth_range: s.view.depth_range,
             histogram: s.histogram.as_ref(),
+            compared,
         });
         let footer = Footer {
             probe_lines: &probe_lines,
@@ -211,8 +231,71 @@ impl ViewerApp {
         };
         let gestures = images_ui(ui, shown.as_ref(), footer);
         self.apply_gestures(&gestures);
-        let (width_px, height_px) = gestures.wanted_px;
+        // While their image is compared the view keeps its size, so the two line up.
+        let (width_px, height_px) = self.compare.held_size_px().unwrap_or(gestures.wanted_px);
         self.view.width_px = width_px;
         self.view.height_px = height_px;
     }
+
+    /// A measurement of the chosen quality is of one view: it closes when the view changes.
+    fn close_stale_measurement(&mut self) {
+        if let Some(current) = &self.compare.current
+            && let CompareSource::Quality(_) = current.pixels.source
+        {
+            let mut measured = current.pixels.view;
+            measured.depth_range = self.view.depth_range;
+            if measured != self.view {
+                self.close_comparison();
+            }
+        }
+    }
+}
+
+/// What the Compare section shows in place of a rendered image, if anything.
+fn compared_picture<'a>(compare: &'a CompareState, view: &View) -> Option<Compared<'a>> {
+    let current = compare.current.as_ref()?;
+    let pixels = &current.pixels;
+    let kind = match pixels.kind {
+        super::compare::ImageKind::Colour => "colour",
+        super::compare::ImageKind::Depth => "depth",
+    };
+    let theirs = match pixels.source {
+        CompareSource::File(_) => "theirs",
+        CompareSource::Quality(_) => "chosen quality",
+    };
+    let moved = match pixels.source {
+        CompareSource::File(_) => {
+            let mut compared = pixels.view;
+            compared.depth_range = view.depth_range;
+            compared != *view
+        }
+        CompareSource::Quality(_) => false,
+    };
+    let note = if moved {
+        "  (view moved: Home lines it up again)"
+    } else {
+        ""
+    };
+    let (texture, caption) = match compare.show {
+        CompareShow::Rendered => return None,
+        CompareShow::Theirs => (
+            &current.theirs_texture,
+            format!("{kind}: {theirs} (B: the render){note}"),
+        ),
+        CompareShow::Difference => (
+            &current.heat_texture,
+            format!(
+                "{kind}: difference, {} pixels, largest {} (Shift+B: the render){note}",
+                pixels.difference.pixels_differing(),
+                pixels.difference.max_difference()
+            ),
+        ),
+    };
+    let (width, height) = pixels.theirs.dimensions();
+    Some(Compared {
+        index: pixels.kind.index(),
+        texture,
+        size_px: [width, height],
+        caption,
+    })
 }

@@ -8,6 +8,7 @@
 //! * [`frames`]: asking the worker for frames (progressive refinement) and taking them in
 //! * [`scene_loading`]: opening and reloading scene files in the background
 //! * [`actions`]: what the user can ask for ([`actions::Action`]), exports, dialogs
+//! * [`compare`]: their image (or the chosen quality) against the exact render, the diagnosis
 //! * [`confirm`]: asking before a write replaces files
 //! * [`views`]: undo and redo, named views, the view each scene was last seen in
 //! * [`view_actions`]: auto range and follow, frame all, resets, undo and redo, named views
@@ -21,6 +22,7 @@
 //! * [`ui`]: the drawing, one `*_ui` function per part
 
 pub(crate) mod actions;
+pub mod compare;
 pub(crate) mod confirm;
 pub(crate) mod dialogs;
 pub(crate) mod frames;
@@ -116,6 +118,8 @@ pub struct ViewerApp {
     saving_open_scene: bool,
     /// A write that waits for the user to agree to replace files.
     pending_replace: Option<confirm::PendingReplace>,
+    /// The Compare section: their image or the chosen quality against the exact render.
+    compare: compare::CompareState,
     ctx: egui::Context,
 }
 
@@ -175,6 +179,7 @@ impl ViewerApp {
             program: request.program.clone(),
             saving_open_scene: false,
             pending_replace: None,
+            compare: compare::CompareState::default(),
             ctx: cc.egui_ctx.clone(),
         };
         let ctx = cc.egui_ctx.clone();
@@ -208,6 +213,7 @@ impl eframe::App for ViewerApp {
         self.receive_frame();
         self.poll_load();
         self.poll_background();
+        self.poll_comparison();
         self.handle_input(&ctx);
         let actions = self.layout_ui(ui);
         for action in actions {

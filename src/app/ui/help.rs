@@ -8,7 +8,7 @@ use egui::RichText;
 pub(crate) const HELP_TITLE: &str = "Shortcuts and gestures";
 
 /// The rows of the overlay: what to press or do, and what it does.
-pub(crate) const SHORTCUTS: [(&str, &str); 24] = [
+pub(crate) const SHORTCUTS: [(&str, &str); 26] = [
     ("drag", "pan the camera (the picture follows the pointer)"),
     (
         "wheel",
@@ -26,6 +26,11 @@ pub(crate) const SHORTCUTS: [(&str, &str); 24] = [
         "pin the pixel (the pin stays on the point pinned while the view moves)",
     ),
     ("Escape", "unpin"),
+    (
+        "B",
+        "comparing: flip between the render and the compared image (A/B)",
+    ),
+    ("Shift+B", "comparing: the difference heat map on and off"),
     ("arrows", "move the camera"),
     ("Shift+arrows", "orbit by 5°"),
     ("+, -", "zoom the camera at the centre"),

@@ -47,6 +47,20 @@ pub(crate) struct ShownImages<'a> {
     pub(crate) depth_range: DepthRange,
     /// Visible t of the frame.
     pub(crate) histogram: Option<&'a DepthHistogram>,
+    /// A picture shown in place of one of the two (the Compare section's).
+    pub(crate) compared: Option<Compared<'a>>,
+}
+
+/// A picture shown in place of one of the rendered images: their image or the difference.
+pub(crate) struct Compared<'a> {
+    /// Which image it replaces (0 colour, 1 depth).
+    pub(crate) index: usize,
+    /// Its texture.
+    pub(crate) texture: &'a TextureHandle,
+    /// Its size in pixels.
+    pub(crate) size_px: [u32; 2],
+    /// Its caption.
+    pub(crate) caption: String,
 }
 
 /// What the area shows and edits besides the images.
@@ -227,7 +241,7 @@ pub(crate) fn images_ui(
 
 /// The captions above the two images.
 fn captions(shown: Option<&ShownImages<'_>>) -> [String; 2] {
-    match shown {
+    let mut captions = match shown {
         Some(images) => [
             "colour".to_owned(),
             format!(
@@ -237,7 +251,11 @@ fn captions(shown: Option<&ShownImages<'_>>) -> [String; 2] {
             ),
         ],
         None => ["colour".to_owned(), "depth".to_owned()],
+    };
+    if let Some(compared) = shown.and_then(|s| s.compared.as_ref()) {
+        captions[compared.index].clone_from(&compared.caption);
     }
+    captions
 }
 
 /// What is drawn over both images.
@@ -265,20 +283,15 @@ fn image_ui(
         ui.painter().rect_filled(area, 0.0, Color32::from_gray(30));
         return;
     };
-    let texture = if index == 0 {
-        images.colour
-    } else {
-        images.depth
+    let (texture, size_px) = match &images.compared {
+        Some(compared) if compared.index == index => (compared.texture, compared.size_px),
+        _ if index == 0 => (images.colour, images.size_px),
+        _ => (images.depth, images.size_px),
     };
-    let rect = image_rect(area, images.size_px, ui.ctx().pixels_per_point());
-    let region = marks.magnifier.region(images.size_px);
+    let rect = image_rect(area, size_px, ui.ctx().pixels_per_point());
+    let region = marks.magnifier.region(size_px);
     let painter = ui.painter_at(area);
-    painter.image(
-        texture.id(),
-        rect,
-        region.uv(images.size_px),
-        Color32::WHITE,
-    );
+    painter.image(texture.id(), rect, region.uv(size_px), Color32::WHITE);
     region.paint_grid(&painter, rect);
     // A frame, so a background as dark as the panel still shows where the image ends.
     painter.rect_stroke(

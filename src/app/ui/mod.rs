@@ -4,6 +4,7 @@
 //! * [`toolbar`]: the buttons along the top
 //! * [`view_controls`]: camera and depth-range sliders, the quality section
 //! * [`depth_section`]: colour map, no-hit mark, auto range
+//! * [`compare_section`]: their image or the chosen quality against the exact render
 //! * [`file_sections`]: open a typed path, save the view, export options
 //! * [`images`]: the two images (side by side or stacked), the probe and histogram under them
 //! * [`gestures`]: pointer input on the images; [`magnifier`]: enlarging the images themselves
@@ -13,6 +14,7 @@
 //! * [`probe_text`]: what the probe says about a pixel
 //! * [`status_bar`]: the status bar and the error banner
 
+pub(crate) mod compare_section;
 pub(crate) mod depth_section;
 pub(crate) mod file_sections;
 pub mod gestures;

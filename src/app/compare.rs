@@ -1,0 +1,432 @@
+//! The viewer's Compare section: put an image beside the exact render and say why it differs, or
+//! measure the chosen quality against the exact render on the user's own view.
+//!
+//! * **Their image** (colour or depth, TGA or PNG): the exact render of the open scene's own
+//!   camera at the image's size (what the course's command renders) is computed off the UI thread,
+//!   with the difference, the diagnosis ([`crate::compare::diagnose`]) and a heat map. While it is
+//!   open the view is held at the file's camera and the image's size, so the live render and their
+//!   image line up pixel for pixel; the compared image shows the render, theirs (the A/B flip, `B`)
+//!   or the difference (`Shift+B`), and the probe gives both values at the hovered pixel.
+//! * **Against the exact render**: the current view at the chosen quality (anti-aliasing or f32)
+//!   against the exact one-sample f64 render, and for anti-aliasing against a high-sample
+//!   reference: the mean error, the share of pixels off by more than 8 levels, the frame time.
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::time::Instant;
+
+use egui::{Color32, ColorImage, TextureHandle, TextureOptions};
+use image::RgbImage;
+
+use super::ViewerApp;
+use super::status::Status;
+use super::tasks::{Poll, Task};
+use crate::compare::picture::heat_map;
+use crate::compare::{Difference, Theirs, diagnose};
+use crate::render::sampling::Sampling;
+use crate::render::{Quality, View, render_with};
+use crate::scene::Scene;
+
+/// Samples per pixel of the high-sample reference an anti-aliased picture is measured against.
+pub(crate) const REFERENCE_SAMPLES: u32 = 256;
+
+/// A picture is "off" where a channel differs from the exact one by more than this many levels.
+pub(crate) const OFF_LEVELS: u8 = 8;
+
+/// Which of the two images is compared.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ImageKind {
+    /// The colour image.
+    #[default]
+    Colour,
+    /// The depth image (grey, the view's depth range).
+    Depth,
+}
+
+impl ImageKind {
+    /// The index of the image on screen (0 colour, 1 depth).
+    pub(crate) fn index(self) -> usize {
+        match self {
+            Self::Colour => 0,
+            Self::Depth => 1,
+        }
+    }
+}
+
+/// What the compared image shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum CompareShow {
+    /// The live render.
+    #[default]
+    Rendered,
+    /// Their image (or the picture at the chosen quality).
+    Theirs,
+    /// The heat map of the difference.
+    Difference,
+}
+
+/// Where the compared picture came from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CompareSource {
+    /// An image file the user opened.
+    File(PathBuf),
+    /// The current view at the chosen quality.
+    Quality(QualityFigures),
+}
+
+/// The trade measured on the user's view: the chosen quality against the exact render.
+#[derive(Debug, Clone, PartialEq)]
+pub struct QualityFigures {
+    /// The quality measured, in words.
+    pub quality: String,
+    /// Its frame time, milliseconds.
+    pub frame_ms: f64,
+    /// The exact render's frame time, milliseconds.
+    pub exact_ms: f64,
+    /// Mean difference from the exact render, levels (largest channel per pixel).
+    pub mean_error_levels: f64,
+    /// Share of pixels off the exact render by more than [`OFF_LEVELS`].
+    pub share_off: f64,
+    /// For anti-aliasing: the same two figures against a high-sample reference.
+    pub against_reference: Option<(f64, f64)>,
+}
+
+/// A finished comparison (pixels on the CPU; the textures are made on the UI thread).
+#[derive(Debug, Clone)]
+pub struct ComparisonPixels {
+    /// Where their picture came from.
+    pub source: CompareSource,
+    /// Which image it is.
+    pub kind: ImageKind,
+    /// The view both pictures are of.
+    pub view: View,
+    /// Their picture.
+    pub theirs: RgbImage,
+    /// The exact picture.
+    pub exact: RgbImage,
+    /// How they differ.
+    pub difference: Difference,
+    /// The mistakes that explain the difference (empty: none does, or none was looked for).
+    pub diagnosis: Vec<&'static str>,
+    /// Other sets that explain it as well (the diagnosis is then ambiguous).
+    pub ambiguous: bool,
+}
+
+/// A comparison on screen.
+pub(crate) struct Comparison {
+    pub(crate) pixels: ComparisonPixels,
+    pub(crate) theirs_texture: TextureHandle,
+    pub(crate) heat_texture: TextureHandle,
+}
+
+/// The Compare section's state.
+#[derive(Default)]
+pub(crate) struct CompareState {
+    /// The typed path of the image to open.
+    pub(crate) path_text: String,
+    /// Which image the typed path is compared with.
+    pub(crate) kind: ImageKind,
+    /// What the compared image shows.
+    pub(crate) show: CompareShow,
+    /// The comparison on screen.
+    pub(crate) current: Option<Comparison>,
+    /// A comparison being computed.
+    pending: Option<Task<Result<ComparisonPixels, String>>>,
+}
+
+impl CompareState {
+    /// A comparison is being computed.
+    pub(crate) fn busy(&self) -> bool {
+        self.pending.is_some()
+    }
+
+    /// The size the view is held at while their image is compared.
+    pub(crate) fn held_size_px(&self) -> Option<(u32, u32)> {
+        let current = self.current.as_ref()?;
+        matches!(current.pixels.source, CompareSource::File(_))
+            .then(|| current.pixels.theirs.dimensions())
+    }
+}
+
+/// Reads an image file to compare (any size; TGA, PNG and what else the `image` crate reads).
+pub fn read_their_image(path: &Path) -> Result<RgbImage, String> {
+    let image = image::ImageReader::open(path)
+        .and_then(image::ImageReader::with_guessed_format)
+        .map_err(|error| format!("cannot read '{}': {error}", path.display()))?
+        .decode()
+        .map_err(|error| format!("cannot read the image '{}': {error}", path.display()))?;
+    Ok(image.to_rgb8())
+}
+
+/// The exact picture of `kind` for `view`.
+fn exact_picture(scene: &Scene, view: &View, kind: ImageKind) -> Result<RgbImage, String> {
+    let frame = render_with(scene, view, &Quality::default()).map_err(|e| e.to_string())?;
+    Ok(match kind {
+        ImageKind::Colour => frame.colour_image(),
+        ImageKind::Depth => frame.depth_image(view.depth_range),
+    })
+}
+
+/// Compares `theirs` with the exact picture of the scene's own camera at their size (the depth
+/// range of `depth_view`), and diagnoses the difference.
+pub fn compare_file(
+    scene: &Scene,
+    path: &Path,
+    theirs: RgbImage,
+    kind: ImageKind,
+    depth_view: &View,
+) -> Result<ComparisonPixels, String> {
+    let (width_px, height_px) = theirs.dimensions();
+    let view = View::of_camera(&scene.camera, width_px, height_px, depth_view.depth_range);
+    let exact = exact_picture(scene, &view, kind)?;
+    let difference = Difference::of(&theirs, &exact);
+    let given = match kind {
+        ImageKind::Colour => Theirs {
+            colour: Some(&theirs),
+            depth: None,
+        },
+        ImageKind::Depth => Theirs {
+            colour: None,
+            depth: Some(&theirs),
+        },
+    };
+    let diagnosis = diagnose(scene, &view, given);
+    Ok(ComparisonPixels {
+        source: CompareSource::File(path.to_path_buf()),
+        kind,
+        view,
+        exact,
+        difference,
+        diagnosis: diagnosis
+            .mistakes
+            .mistakes()
+            .into_iter()
+            .map(crate::compare::Mistake::word)
+            .collect(),
+        ambiguous: !diagnosis.alternatives.is_empty(),
+        theirs,
+    })
+}
+
+/// The colour image of `view` at `quality` against the exact one (and, with anti-aliasing, a
+/// high-sample reference of the same sampler and filter).
+pub fn compare_quality(
+    scene: &Scene,
+    view: &View,
+    quality: &Quality,
+) -> Result<ComparisonPixels, String> {
+    let timed = |quality: &Quality| {
+        let started = Instant::now();
+        let frame = render_with(scene, view, quality).map_err(|e| e.to_string())?;
+        Ok::<_, String>((frame.colour_image(), started.elapsed().as_secs_f64() * 1e3))
+    };
+    let (theirs, frame_ms) = timed(quality)?;
+    let (exact, exact_ms) = timed(&Quality::default())?;
+    let difference = Difference::of(&theirs, &exact);
+    let figures = |difference: &Difference| {
+        let total = difference.per_pixel.len().max(1) as f64;
+        (
+            difference.mean_difference(),
+            difference.pixels_beyond(OFF_LEVELS) as f64 / total,
+        )
+    };
+    let (mean_error_levels, share_off) = figures(&difference);
+    let against_reference = match quality.sampling {
+        Some(sampling) => {
+            let reference_quality = Quality {
+                sampling: Some(Sampling {
+                    samples: REFERENCE_SAMPLES,
+                    ..sampling
+                }),
+                ..Quality::default()
+            };
+            let (reference, _) = timed(&reference_quality)?;
+            Some(figures(&Difference::of(&theirs, &reference)))
+        }
+        None => None,
+    };
+    Ok(ComparisonPixels {
+        source: CompareSource::Quality(QualityFigures {
+            quality: describe_quality(quality),
+            frame_ms,
+            exact_ms,
+            mean_error_levels,
+            share_off,
+            against_reference,
+        }),
+        kind: ImageKind::Colour,
+        view: *view,
+        theirs,
+        exact,
+        difference,
+        diagnosis: Vec::new(),
+        ambiguous: false,
+    })
+}
+
+/// A quality in words: precision and sampling.
+pub(crate) fn describe_quality(quality: &Quality) -> String {
+    let sampling = match &quality.sampling {
+        Some(sampling) => format!(
+            "{} {} samples, {}",
+            sampling.samples,
+            sampling.sampler.name(),
+            sampling.filter
+        ),
+        None => "1 sample".to_owned(),
+    };
+    format!("{:?}, {sampling}", quality.precision)
+}
+
+/// An RGB image as an egui image.
+fn to_colour_image(image: &RgbImage) -> ColorImage {
+    let size = [image.width() as usize, image.height() as usize];
+    ColorImage::new(
+        size,
+        image
+            .pixels()
+            .map(|p| Color32::from_rgb(p.0[0], p.0[1], p.0[2]))
+            .collect(),
+    )
+}
+
+impl ViewerApp {
+    /// Opens the image at `path` and compares it with the exact render of the open scene.
+    pub(crate) fn compare_with_file(&mut self, path: PathBuf, kind: ImageKind) {
+        let scene = Arc::clone(&self.loaded.scene);
+        let depth_view = self.view;
+        self.compare.kind = kind;
+        self.start_comparison(move || {
+            let theirs = read_their_image(&path)?;
+            compare_file(&scene, &path, theirs, kind, &depth_view)
+        });
+    }
+
+    /// Measures the chosen quality against the exact render on the current view.
+    pub(crate) fn compare_quality(&mut self) {
+        let scene = Arc::clone(&self.loaded.scene);
+        let view = self.view;
+        let quality = self.settings.quality;
+        self.start_comparison(move || compare_quality(&scene, &view, &quality));
+    }
+
+    /// Closes the comparison (the view is free again).
+    pub(crate) fn close_comparison(&mut self) {
+        self.compare.current = None;
+        self.compare.pending = None;
+        self.compare.show = CompareShow::Rendered;
+    }
+
+    fn start_comparison(
+        &mut self,
+        work: impl FnOnce() -> Result<ComparisonPixels, String> + Send + 'static,
+    ) {
+        match Task::spawn("compare", &self.ctx, move |_| work()) {
+            Ok(task) => self.compare.pending = Some(task),
+            Err(error) => {
+                self.status = Some(Status::error(format!(
+                    "cannot start the comparison: {error}"
+                )));
+            }
+        }
+    }
+
+    /// Takes a finished comparison in; with their image, holds the view at the file's camera and
+    /// their size. A depth comparison follows the depth range: it is made again when it changes.
+    pub(crate) fn poll_comparison(&mut self) {
+        let Some(task) = &self.compare.pending else {
+            if let Some(current) = &self.compare.current
+                && let CompareSource::File(path) = &current.pixels.source
+                && current.pixels.kind == ImageKind::Depth
+                && current.pixels.view.depth_range != self.view.depth_range
+            {
+                let path = path.clone();
+                self.compare_with_file(path, ImageKind::Depth);
+            }
+            return;
+        };
+        let pixels = match task.poll() {
+            Poll::Running => return,
+            Poll::Done(Ok(pixels)) => pixels,
+            Poll::Done(Err(error)) => {
+                self.compare.pending = None;
+                self.status = Some(Status::error(format!("compare: {error}")));
+                return;
+            }
+            Poll::Lost => {
+                self.compare.pending = None;
+                self.status = Some(Status::error("compare: the comparison stopped"));
+                return;
+            }
+        };
+        self.compare.pending = None;
+        let first = self.compare.current.is_none();
+        if let CompareSource::File(_) = pixels.source {
+            let depth_range = self.view.depth_range;
+            self.view = pixels.view;
+            self.view.depth_range = depth_range;
+        }
+        let theirs_texture = self.ctx.load_texture(
+            "compare theirs",
+            to_colour_image(&pixels.theirs),
+            TextureOptions::NEAREST,
+        );
+        let heat_texture = self.ctx.load_texture(
+            "compare heat",
+            to_colour_image(&heat_map(&pixels.difference)),
+            TextureOptions::NEAREST,
+        );
+        if first || matches!(pixels.source, CompareSource::Quality(_)) {
+            self.compare.show = CompareShow::Difference;
+        }
+        self.compare.current = Some(Comparison {
+            pixels,
+            theirs_texture,
+            heat_texture,
+        });
+    }
+
+    /// The A/B flip: the render and their image in turn.
+    pub(crate) fn flip_comparison(&mut self) {
+        if self.compare.current.is_some() {
+            self.compare.show = match self.compare.show {
+                CompareShow::Theirs => CompareShow::Rendered,
+                _ => CompareShow::Theirs,
+            };
+        }
+    }
+
+    /// The difference view on and off.
+    pub(crate) fn toggle_difference(&mut self) {
+        if self.compare.current.is_some() {
+            self.compare.show = match self.compare.show {
+                CompareShow::Difference => CompareShow::Rendered,
+                _ => CompareShow::Difference,
+            };
+        }
+    }
+
+    /// The probe's line for the compared image at pixel `px` (y up): theirs, exact, difference.
+    pub(crate) fn compare_probe_line(&self, px: glam::DVec2) -> Option<String> {
+        let pixels = &self.compare.current.as_ref()?.pixels;
+        let (width, height) = pixels.theirs.dimensions();
+        if px.x < 0.0 || px.y < 0.0 || px.x >= f64::from(width) || px.y >= f64::from(height) {
+            return None;
+        }
+        let (x, row) = (px.x as u32, height - 1 - px.y as u32);
+        let rgb = |image: &RgbImage| {
+            let [r, g, b] = image.get_pixel(x, row).0;
+            format!("{r} {g} {b}")
+        };
+        let name = match pixels.source {
+            CompareSource::File(_) => "theirs",
+            CompareSource::Quality(_) => "chosen",
+        };
+        Some(format!(
+            "{name} {} · exact {} · off by {}",
+            rgb(&pixels.theirs),
+            rgb(&pixels.exact),
+            pixels.difference.per_pixel[(row * width + x) as usize]
+        ))
+    }
+}

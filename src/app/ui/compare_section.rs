@@ -1,0 +1,170 @@
+//! The side panel's Compare section: open an image (colour or depth) to put beside the exact
+//! render, choose what the compared image shows (render, theirs, difference), read the counts and
+//! the diagnosis; or measure the chosen quality against the exact render.
+
+use egui::{RichText, Ui};
+
+use crate::app::actions::Action;
+use crate::app::compare::{
+    CompareShow, CompareSource, CompareState, ImageKind, OFF_LEVELS, REFERENCE_SAMPLES,
+};
+use crate::app::dialogs::DialogKind;
+use crate::render::Quality;
+
+/// The accessible label of the typed image path (tests find the field by it).
+pub(crate) const IMAGE_PATH_LABEL: &str = "image";
+
+/// The section. `quality` is the chosen quality ("against the exact render" is offered when it is
+/// not the exact one). Returns the actions asked for.
+pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Quality) -> Vec<Action> {
+    let mut actions = Vec::new();
+    ui.heading("Compare");
+    ui.horizontal(|ui| {
+        ui.radio_value(&mut state.kind, ImageKind::Colour, "colour")
+            .on_hover_text("the image is a colour image (-output)");
+        ui.radio_value(&mut state.kind, ImageKind::Depth, "depth")
+            .on_hover_text("the image is a depth image (-depth), of the depth range set above");
+    });
+    ui.horizontal(|ui| {
+        let label = ui.label(IMAGE_PATH_LABEL);
+        let field = ui
+            .add(egui::TextEdit::singleline(&mut state.path_text).desired_width(130.0))
+            .labelled_by(label.id)
+            .on_hover_text(
+                "their TGA or PNG image, rendered with the scene's camera (Enter opens it)",
+            );
+        let entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+        let typed = state.path_text.trim();
+        if (ui.button("Compare image").clicked() || entered) && !typed.is_empty() {
+            actions.push(Action::CompareImage(typed.into(), state.kind));
+        }
+        if ui
+            .small_button("…")
+            .on_hover_text("choose the image in a file dialog")
+            .clicked()
+        {
+            actions.push(Action::OpenDialog(DialogKind::CompareImage(state.kind)));
+        }
+    });
+    let exact = *quality == Quality::default();
+    if ui
+        .add_enabled(!exact, egui::Button::new("Against the exact render"))
+        .on_hover_text(format!(
+            "the current view at the chosen quality against the exact render (and, anti-aliased, \
+             against {REFERENCE_SAMPLES} samples): mean error, pixels off by more than \
+             {OFF_LEVELS} levels, frame time"
+        ))
+        .on_disabled_hover_text("choose anti-aliasing or f32 first: the exact quality is exact")
+        .clicked()
+    {
+        actions.push(Action::CompareQuality);
+    }
+    if state.busy() {
+        ui.horizontal(|ui| {
+            ui.spinner();
+            ui.label("comparing…");
+        });
+    }
+    let Some(current) = &state.current else {
+        ui.label(
+            RichText::new(
+                "their image is compared with the exact render of the scene's own camera at its \
+                 size: the view is held there while it is open",
+            )
+            .small()
+            .weak(),
+        );
+        return actions;
+    };
+    let pixels = &current.pixels;
+    let theirs_name = match &pixels.source {
+        CompareSource::File(_) => "theirs",
+        CompareSource::Quality(_) => "chosen quality",
+    };
+    let mut show = state.show;
+    ui.horizontal(|ui| {
+        ui.label("show");
+        ui.selectable_value(&mut show, CompareShow::Rendered, "render")
+            .on_hover_text("the live render");
+        ui.selectable_value(&mut show, CompareShow::Theirs, theirs_name)
+            .on_hover_text("B flips between the render and this");
+        ui.selectable_value(&mut show, CompareShow::Difference, "difference")
+            .on_hover_text("the heat map of the difference (Shift+B)");
+    });
+    if show != state.show {
+        actions.push(Action::CompareShow(show));
+    }
+    let kind = match pixels.kind {
+        ImageKind::Colour => "colour",
+        ImageKind::Depth => "depth",
+    };
+    let (width, height) = pixels.theirs.dimensions();
+    match &pixels.source {
+        CompareSource::File(path) => {
+            ui.label(format!(
+                "{kind} image {} ({width}×{height})",
+                path.display()
+            ));
+        }
+        CompareSource::Quality(figures) => {
+            ui.label(format!(
+                "{} against the exact render ({width}×{height})",
+                figures.quality
+            ));
+        }
+    }
+    let differing = pixels.difference.pixels_differing();
+    let total = pixels.difference.per_pixel.len().max(1);
+    ui.label(format!(
+        "pixels differing: {differing} ({:.2}%) · largest difference: {} levels",
+        100.0 * differing as f64 / total as f64,
+        pixels.difference.max_difference()
+    ));
+    match &pixels.source {
+        CompareSource::File(_) => {
+            let matches = match pixels.kind {
+                ImageKind::Colour => pixels.difference.colour_matches(),
+                ImageKind::Depth => pixels.difference.depth_matches(),
+            };
+            ui.label(if matches {
+                "match: yes (the course's rule)"
+            } else {
+                "match: no"
+            });
+            let diagnosis = if pixels.diagnosis.is_empty() {
+                if matches {
+                    "none needed".to_owned()
+                } else if pixels.ambiguous {
+                    "none (several explanations fit equally)".to_owned()
+                } else {
+                    "none (no known mistake explains it)".to_owned()
+                }
+            } else {
+                pixels.diagnosis.join(", ")
+            };
+            ui.label(RichText::new(format!("diagnosis: {diagnosis}")).strong());
+        }
+        CompareSource::Quality(figures) => {
+            ui.label(format!(
+                "mean error {:.3} levels · off by > {OFF_LEVELS}: {:.2}% of pixels",
+                figures.mean_error_levels,
+                100.0 * figures.share_off
+            ));
+            if let Some((mean, share)) = figures.against_reference {
+                ui.label(format!(
+                    "against {REFERENCE_SAMPLES} samples: mean {mean:.3} levels · off by > \
+                     {OFF_LEVELS}: {:.2}%",
+                    100.0 * share
+                ));
+            }
+            ui.label(format!(
+                "frame {:.1} ms (exact {:.1} ms)",
+                figures.frame_ms, figures.exact_ms
+            ));
+        }
+    }
+    if ui.button("Close comparison").clicked() {
+        actions.push(Action::CompareClose);
+    }
+    actions
+}

@@ -1,0 +1,229 @@
+//! The viewer's Compare section as a user meets it (egui_kittest): their image typed into the
+//! section is put beside the exact render and diagnosed, the A/B flip and the difference view
+//! replace the compared image on screen, the probe gives both values, a depth image follows the
+//! depth range, and "Against the exact render" measures the chosen quality on the user's view.
+//! Their images are made by the project's variant renderer and written as real files.
+#![cfg(feature = "gui")]
+
+mod common;
+
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+use egui::{Key, Modifiers, vec2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use raytracer::app::ViewerApp;
+use raytracer::app::compare::{CompareShow, CompareSource};
+use raytracer::compare::{Mistake, MistakeSet, render_variant};
+use raytracer::render::View;
+use raytracer::render::depth_map::DepthRange;
+use raytracer::render::{Filter, Sampler, Sampling};
+use raytracer::scene::load_scene;
+
+use common::{click, settle, viewer};
+
+type App = Harness<'static, ViewerApp>;
+
+const SCENE: &str = "tests/compare/every-mistake.txt";
+
+fn scene_file() -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join(SCENE)
+}
+
+/// Writes the colour and depth images of `mistakes` at 160×120, depth 6 … 10, into `folder`.
+fn write_theirs(folder: &Path, mistakes: MistakeSet) -> (String, String) {
+    let scene = load_scene(&scene_file()).unwrap();
+    let view = View::of_camera(&scene.camera, 160, 120, DepthRange::new(6.0, 10.0));
+    let (colour, depth) = render_variant(&scene, &view, mistakes);
+    let colour_path = folder.join("theirs.tga");
+    let depth_path = folder.join("theirs_depth.png");
+    colour.save(&colour_path).unwrap();
+    depth.save(&depth_path).unwrap();
+    (
+        colour_path.display().to_string(),
+        depth_path.display().to_string(),
+    )
+}
+
+/// Steps until no comparison is being computed and the frame on screen is current.
+fn wait_for_comparison(harness: &mut App) {
+    let deadline = Instant::now() + Duration::from_secs(120);
+    loop {
+        harness.step();
+        if !harness.state().comparing() {
+            break;
+        }
+        assert!(Instant::now() < deadline, "the comparison did not finish");
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    settle(harness);
+    harness.run_steps(2);
+}
+
+/// Types `path` into the Compare section's image field and presses "Compare image".
+fn compare_image(harness: &mut App, path: &str) {
+    harness.get_by_label("image").scroll_to_me();
+    harness.run_steps(3);
+    harness.get_by_label("image").click();
+    harness.step();
+    harness.get_by_label("image").type_text(path);
+    harness.step();
+    click(harness, "Compare image");
+    wait_for_comparison(harness);
+}
+
+fn label_shown(harness: &App, text: &str) -> bool {
+    harness.query_by_label_contains(text).is_some()
+}
+
+#[test]
+fn their_colour_image_is_diagnosed_flipped_and_probed() {
+    let folder = tempfile::tempdir().unwrap();
+    let mistakes = MistakeSet::of(&[Mistake::PixelCorners, Mistake::Mirrored]);
+    let (colour, _) = write_theirs(folder.path(), mistakes);
+    let mut harness = viewer(Some(scene_file()));
+    settle(&mut harness);
+    compare_image(&mut harness, &colour);
+
+    let comparison = harness.state().comparison().expect("a comparison").clone();
+    assert!(matches!(comparison.source, CompareSource::File(_)));
+    assert_eq!(comparison.diagnosis, ["pixel-corners", "mirrored"]);
+    assert!(label_shown(&harness, "diagnosis: pixel-corners, mirrored"));
+    assert!(label_shown(&harness, "match: no"));
+    // The view is held at the file's camera and their size, so the two line up.
+    let view = *harness.state().view();
+    assert_eq!((view.width_px, view.height_px), (160, 120));
+    let scene = load_scene(&scene_file()).unwrap();
+    assert_eq!(view.center_world, scene.camera.center_world);
+    let (frame, _) = harness.state().shown_frame().unwrap();
+    assert_eq!(frame.colour_image(), comparison.exact);
+    // The difference is shown first, in place of the colour image; B flips to theirs and back.
+    assert_eq!(harness.state().compare_show(), CompareShow::Difference);
+    let differing = comparison.difference.pixels_differing();
+    assert!(differing > 0);
+    assert!(label_shown(
+        &harness,
+        &format!("colour: difference, {differing} pixels")
+    ));
+    harness.key_press(Key::B);
+    harness.run_steps(2);
+    assert_eq!(harness.state().compare_show(), CompareShow::Theirs);
+    assert!(label_shown(&harness, "colour: theirs"));
+    harness.key_press(Key::B);
+    harness.run_steps(2);
+    assert_eq!(harness.state().compare_show(), CompareShow::Rendered);
+    harness.key_press_modifiers(Modifiers::SHIFT, Key::B);
+    harness.run_steps(2);
+    assert_eq!(harness.state().compare_show(), CompareShow::Difference);
+
+    // The probe over a differing pixel gives both values and the difference.
+    let (x, row) = (0..160 * 120)
+        .map(|i| (i % 160, i / 160))
+        .find(|&(x, row)| comparison.difference.per_pixel[(row * 160 + x) as usize] > 0)
+        .unwrap();
+    let image = harness.get_by_label("colour image").rect();
+    let fit = (image.width() / 160.0).min(image.height() / 120.0);
+    let at = image.min + vec2((x as f32 + 0.5) * fit, (row as f32 + 0.5) * fit);
+    harness.hover_at(at);
+    harness.run_steps(3);
+    let rgb = |image: &image::RgbImage| {
+        let [r, g, b] = image.get_pixel(x, row).0;
+        format!("{r} {g} {b}")
+    };
+    let line = format!(
+        "theirs {} · exact {} · off by {}",
+        rgb(&comparison.theirs),
+        rgb(&comparison.exact),
+        comparison.difference.per_pixel[(row * 160 + x) as usize]
+    );
+    assert!(label_shown(&harness, &line), "no probe line {line}");
+
+    // Closing frees the view: it takes the window's size again.
+    click(&mut harness, "Close comparison");
+    settle(&mut harness);
+    assert!(harness.state().comparison().is_none());
+    let view = *harness.state().view();
+    assert_ne!((view.width_px, view.height_px), (160, 120));
+}
+
+#[test]
+fn the_exact_image_matches_and_names_nothing() {
+    let folder = tempfile::tempdir().unwrap();
+    let (colour, _) = write_theirs(folder.path(), MistakeSet::NONE);
+    let mut harness = viewer(Some(scene_file()));
+    settle(&mut harness);
+    compare_image(&mut harness, &colour);
+    let comparison = harness.state().comparison().expect("a comparison");
+    assert_eq!(comparison.difference.pixels_differing(), 0);
+    assert!(comparison.diagnosis.is_empty());
+    assert!(label_shown(&harness, "match: yes"));
+    assert!(label_shown(&harness, "diagnosis: none needed"));
+}
+
+#[test]
+fn a_depth_image_follows_the_depth_range_until_it_matches() {
+    let folder = tempfile::tempdir().unwrap();
+    let (_, depth) = write_theirs(folder.path(), MistakeSet::NONE);
+    let mut harness = viewer(Some(scene_file()));
+    settle(&mut harness);
+    harness.state_mut().view_mut().depth_range = DepthRange::new(5.0, 12.0);
+    settle(&mut harness);
+    click(&mut harness, "depth");
+    compare_image(&mut harness, &depth);
+    assert!(
+        harness
+            .state()
+            .comparison()
+            .unwrap()
+            .difference
+            .pixels_differing()
+            > 0
+    );
+    assert!(label_shown(&harness, "match: no"));
+    // Tuning the depth range to theirs (6 … 10) makes the comparison again: now they match.
+    harness.state_mut().view_mut().depth_range = DepthRange::new(6.0, 10.0);
+    harness.run_steps(2);
+    wait_for_comparison(&mut harness);
+    let comparison = harness.state().comparison().unwrap();
+    assert_eq!(comparison.view.depth_range, DepthRange::new(6.0, 10.0));
+    assert!(comparison.difference.depth_matches());
+    assert!(label_shown(&harness, "match: yes"));
+}
+
+#[test]
+fn against_the_exact_render_measures_the_chosen_quality_on_this_view() {
+    let mut harness = viewer(Some(scene_file()));
+    settle(&mut harness);
+    harness.state_mut().settings_mut().quality.sampling = Some(Sampling {
+        sampler: Sampler::Uniform,
+        samples: 4,
+        filter: Filter::Box { radius: 0.5 },
+        seed: 1,
+    });
+    settle(&mut harness);
+    click(&mut harness, "Against the exact render");
+    wait_for_comparison(&mut harness);
+    let comparison = harness.state().comparison().expect("a measurement").clone();
+    let CompareSource::Quality(figures) = &comparison.source else {
+        panic!("{:?}", comparison.source)
+    };
+    // Anti-aliased edges differ from the exact one-sample picture, and less from 256 samples.
+    assert!(figures.mean_error_levels > 0.0, "{figures:?}");
+    assert!(
+        figures.share_off > 0.0 && figures.share_off < 0.2,
+        "{figures:?}"
+    );
+    let (reference_mean, _) = figures.against_reference.expect("against 256 samples");
+    assert!(reference_mean < figures.mean_error_levels, "{figures:?}");
+    assert!(figures.frame_ms > 0.0);
+    let view = *harness.state().view();
+    assert_eq!(comparison.view, view);
+    assert!(label_shown(&harness, "mean error"));
+    assert!(label_shown(&harness, "against 256 samples"));
+    assert_eq!(harness.state().compare_show(), CompareShow::Difference);
+    // The measurement is of this view: moving the camera closes it.
+    harness.state_mut().view_mut().center_world.x += 0.5;
+    harness.run_steps(2);
+    assert!(harness.state().comparison().is_none());
+}
