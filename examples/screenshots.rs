@@ -6,8 +6,10 @@
 //! cargo run --example screenshots -- OUT_FOLDER
 //! ```
 //!
-//! Writes `OUT_FOLDER/explore.png` and `OUT_FOLDER/orbit.png`, and for each a `.marks` file of
-//! `x y` lines (pixels): the spots the annotations point at, in the README's order.
+//! Writes `OUT_FOLDER/explore.png`, `OUT_FOLDER/orbit.png` and `OUT_FOLDER/compare.png` (the
+//! Compare section with an image rendered with the `pixel-corners` mistake), and for each a
+//! `.marks` file of `x y` lines (pixels): the spots the annotations point at, in the README's
+//! order.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -165,4 +167,94 @@ fn main() {
     settle(&mut harness);
     let marks = [from, to];
     save(&mut harness, &folder, "orbit", &marks);
+    compare(&folder);
+}
+
+/// The Compare section: a course scene rendered with rays through pixel corners, typed into the
+/// section, diagnosed, with the difference shown in place of the colour image and a pixel probed.
+fn compare(folder: &Path) {
+    use raytracer::compare::{Mistake, MistakeSet, render_variant};
+    let scene_path = PathBuf::from("scenes/scene1_03.txt");
+    let scene = raytracer::scene::load_scene(&scene_path).unwrap();
+    let view = raytracer::render::View::of_camera(
+        &scene.camera,
+        200,
+        200,
+        raytracer::render::depth_map::DepthRange::new(8.0, 12.0),
+    );
+    let (theirs, _) = render_variant(&scene, &view, MistakeSet::of(&[Mistake::PixelCorners]));
+    // Relative to the package, so the picture names no machine's folders.
+    let theirs_path = "target/theirs_scene1_03.tga";
+    theirs.save(theirs_path).unwrap();
+    let mut harness = Harness::builder()
+        .with_size(vec2(1280.0, 720.0))
+        .wgpu()
+        .build_eframe(move |cc| {
+            ViewerApp::new(
+                cc,
+                ViewerRequest {
+                    input: Some(scene_path),
+                    ..Default::default()
+                },
+            )
+        });
+    settle(&mut harness);
+    harness.get_by_label("image").scroll_to_me();
+    harness.run_steps(3);
+    harness.get_by_label("image").click();
+    harness.step();
+    harness.get_by_label("image").type_text(theirs_path);
+    harness.step();
+    let button = centre(&harness, "Compare image");
+    harness.hover_at(button);
+    harness.step();
+    press(&mut harness, button, PointerButton::Primary, true);
+    press(&mut harness, button, PointerButton::Primary, false);
+    let deadline = Instant::now() + Duration::from_secs(120);
+    while harness.state().comparing() || harness.state().comparison().is_none() {
+        assert!(Instant::now() < deadline, "the comparison did not finish");
+        harness.step();
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    settle(&mut harness);
+    harness.run_steps(3);
+    // Hover a pixel where the two differ: the probe gives both values.
+    let comparison = harness.state().comparison().unwrap().clone();
+    let (width, height) = comparison.theirs.dimensions();
+    let index = comparison
+        .difference
+        .per_pixel
+        .iter()
+        .enumerate()
+        .filter(|&(_, &d)| d > 0)
+        .map(|(i, _)| i)
+        .nth(40)
+        .unwrap();
+    let (x, row) = (index as u32 % width, index as u32 / width);
+    let colour = harness.get_by_label("colour image").rect();
+    let fit = (colour.width() / width as f32).min(colour.height() / height as f32);
+    let hover = colour.min + vec2((x as f32 + 0.5) * fit, (row as f32 + 0.5) * fit);
+    harness.hover_at(hover);
+    harness.run_steps(3);
+    let heat = colour.min + vec2(40.0, 40.0);
+    let diagnosis = harness
+        .query_by_label_contains("diagnosis:")
+        .unwrap()
+        .rect()
+        .left_center()
+        + vec2(30.0, 0.0);
+    let probe = harness
+        .query_by_label_contains("· off by")
+        .unwrap()
+        .rect()
+        .left_center()
+        + vec2(30.0, 0.0);
+    let marks = [
+        heat,                              // 1 the difference in place of the render
+        centre(&harness, "Compare image"), // 2 their image, typed or chosen
+        diagnosis,                         // 3 counts, match and the diagnosis
+        hover,                             // 4 a differing pixel
+        probe,                             // 5 both values at it
+    ];
+    save(&mut harness, folder, "compare", &marks);
 }

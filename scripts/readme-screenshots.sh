@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Regenerates the README's annotated pictures of exploring a scene, docs/explore.png and
-# docs/orbit.png: the real viewer driven by egui_kittest and rendered with wgpu (Mesa's lavapipe
+# docs/orbit.png, and of the Compare section, docs/compare.png: the real viewer driven by egui_kittest and rendered with wgpu (Mesa's lavapipe
 # where there is no GPU), then numbered with ImageMagick at the spots the example marks.
 # Needs mesa-vulkan-drivers, imagemagick and fonts-dejavu-core (scripts/test.sh installs them).
 set -euo pipefail
@@ -9,7 +9,7 @@ raw=$(mktemp -d)
 trap 'rm -rf "$raw"' EXIT
 cargo run --quiet --example screenshots -- "$raw"
 font=/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf
-for name in explore orbit; do
+for name in explore orbit compare; do
   draw=()
   number=1
   while read -r x y; do
