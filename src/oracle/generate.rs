@@ -51,6 +51,34 @@ pub fn random_scene(seed: u64, count: usize) -> Scene {
     }
 }
 
+/// Side of the cube [`dense_scene`] fills, world units.
+pub const DENSE_CUBE_SIDE: f64 = 100.0;
+
+/// `count` spheres of radius 0.2 to 1.0 in a cube of side [`DENSE_CUBE_SIDE`] seen whole (view
+/// size 110) through the same skewed camera as [`random_scene`]: at 100,000 spheres a 1024×1024
+/// image has every pixel covered about ten times over, at 1,000,000 about a hundred. The scene
+/// where the cost should follow the visible work, not the discs piled up behind it.
+pub fn dense_scene(seed: u64, count: usize) -> Scene {
+    let mut rng = SplitMix64::new(seed);
+    let side = DENSE_CUBE_SIDE;
+    let mut scene = random_scene(seed, 0);
+    scene.spheres = (0..count)
+        .map(|i| Sphere {
+            center_world: DVec3::new(
+                rng.uniform(-0.5, 0.5) * side,
+                rng.uniform(-0.5, 0.5) * side,
+                rng.uniform(-0.5, 0.5) * side,
+            ),
+            radius_world: rng.uniform(0.2, 1.0),
+            material: Some((i % 16) as u32),
+        })
+        .collect();
+    let direction = scene.camera.direction_world;
+    scene.camera.center_world = -2.0 * side * direction.normalize();
+    scene.camera.size_world = 110.0;
+    scene
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -14,4 +14,4 @@ pub(crate) mod generate;
 pub mod high_precision;
 pub mod ray_loop;
 
-pub use generate::random_scene;
+pub use generate::{DENSE_CUBE_SIDE, dense_scene, random_scene};

@@ -34,6 +34,12 @@ pub struct Frame {
 }
 
 impl Frame {
+    /// Sphere/disc tests the render performed (pixel–disc and sample–disc): the work a frame
+    /// cost, beside its time.
+    pub fn disc_tests(&self) -> u64 {
+        self.disc_tests
+    }
+
     /// Storage index of pixel (x, y) with y = 0 the bottom row.
     pub fn index(&self, x: u32, y_up: u32) -> usize {
         (self.height_px - 1 - y_up) as usize * self.width_px as usize + x as usize

@@ -64,11 +64,14 @@ impl Disc {
 /// Projects every sphere of `scene` into the camera space of `view` (basis from
 /// [`View::validate`]), in file order.
 pub fn project_discs(scene: &Scene, view: &View, basis: &CameraBasis) -> Vec<Disc> {
+    use rayon::prelude::*;
     scene
         .spheres
-        .iter()
-        .zip(0u32..)
-        .map(|(sphere, index)| {
+        .par_iter()
+        .enumerate()
+        .map(|(index, sphere)| {
+            // Sphere counts fit u32 (the parser's limit).
+            let index = index as u32;
             let center_camera = basis.to_camera(sphere.center_world - view.center_world);
             Disc {
                 u: center_camera.x,

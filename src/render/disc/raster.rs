@@ -112,21 +112,112 @@ impl<R: Real> Columns<R> {
     }
 }
 
-/// The band's discs gathered once, contiguous and in file order, each with its centre's column
-/// coordinate (`u / s + width/2 − ½`): the rows read them sequentially instead of chasing indices
-/// across the whole scene (cache misses dominated).
+/// A disc gathered for a band.
+#[derive(Clone, Copy)]
+struct BandDisc {
+    disc: Disc,
+    /// Its centre's column coordinate (`u / s + width/2 − ½`).
+    centre_column: f64,
+    /// The nearest t it can have anywhere: `w − r`, never above the t of any pixel it covers
+    /// (correctly rounded square root and subtraction are monotonic).
+    front_t: f64,
+}
+
+/// The band's discs gathered once, contiguous and in file order: the rows read them sequentially
+/// instead of chasing indices across the whole scene (cache misses dominated).
 fn gather_band_discs(
     discs: &[Disc],
     list: impl Iterator<Item = u32>,
     grid: &PixelGrid,
-) -> Vec<(Disc, f64)> {
+) -> Vec<BandDisc> {
     let inverse_pixel = 1.0 / grid.pixel_size_world;
     let centre_column_offset = 0.5 * f64::from(grid.width_px) - 0.5;
     list.map(|index| {
         let disc = discs[index as usize];
-        (disc, disc.u * inverse_pixel + centre_column_offset)
+        BandDisc {
+            disc,
+            centre_column: disc.u * inverse_pixel + centre_column_offset,
+            front_t: disc.w - disc.radius_sq.sqrt(),
+        }
     })
     .collect()
+}
+
+/// Columns per occlusion tile (a tile is this many columns of a band's rows).
+const TILE_COLUMNS: usize = 16;
+
+/// Below this many discs in a band, occlusion culling does not pay for its sort.
+const CULL_MIN_DISCS: usize = 64;
+
+/// The farthest t among the pixels of `tile` in a band of rows `width` long; stops at the first
+/// uncovered pixel (+∞).
+fn farthest_in_tile<R: Real>(t: &[R], width: usize, tile: usize) -> f64 {
+    let columns = tile * TILE_COLUMNS..((tile + 1) * TILE_COLUMNS).min(width);
+    let mut farthest = f64::NEG_INFINITY;
+    for row in t.chunks(width) {
+        for &t in &row[columns.clone()] {
+            let t = t.to_f64();
+            if t == f64::INFINITY {
+                return t;
+            }
+            farthest = if t > farthest { t } else { farthest };
+        }
+    }
+    farthest
+}
+
+/// Occlusion within a band: per tile of [`TILE_COLUMNS`] columns, the farthest t of its pixels (a
+/// hierarchical z of one level). Discs come front to back (by `w − r`); a disc whose nearest t is
+/// beyond the farthest t of every tile it touches cannot change a pixel and is skipped, so a frame
+/// costs what is visible, not what piles up behind it. A tile's farthest t is recomputed only when
+/// a disc was drawn over it and another asks.
+struct Occlusion {
+    farthest_t: Vec<f64>,
+    stale: Vec<bool>,
+}
+
+impl Occlusion {
+    fn new(width: usize) -> Self {
+        let tiles = width.div_ceil(TILE_COLUMNS);
+        Self {
+            farthest_t: vec![f64::INFINITY; tiles],
+            stale: vec![false; tiles],
+        }
+    }
+
+    /// Whether `disc` (columns `first..=last` of the band) may be nearer than a pixel there.
+    fn may_show<R: Real>(
+        &mut self,
+        disc: &BandDisc,
+        (first, last): (usize, usize),
+        t: &[R],
+        width: usize,
+    ) -> bool {
+        for tile in first / TILE_COLUMNS..=last / TILE_COLUMNS {
+            // A stale value still bounds the tile from above (pixels only come nearer), so it is
+            // recomputed only when it cannot hide the disc. On an equal t the disc may still win
+            // the tie (an earlier sphere in the file).
+            if disc.front_t > self.farthest_t[tile] {
+                continue;
+            }
+            if self.stale[tile] {
+                self.farthest_t[tile] = farthest_in_tile(t, width, tile);
+                self.stale[tile] = false;
+                if disc.front_t > self.farthest_t[tile] {
+                    continue;
+                }
+            }
+            return true;
+        }
+        false
+    }
+
+    /// Columns `first..=last` were drawn over: their tiles' farthest t may have come nearer.
+    fn drawn(&mut self, (first, last): (usize, usize)) {
+        for stale in &mut self.stale[first / TILE_COLUMNS..=last / TILE_COLUMNS] {
+            *stale = true;
+        }
+    }
 }
 
 /// The columns of the row at screen `v` that `disc`'s chord may cover (in f64, conservative; the
@@ -149,12 +240,112 @@ fn rasterise_band<R: Real>(
     list: impl Iterator<Item = u32>,
     grid: &PixelGrid,
     first_row: usize,
+    out: BandOut<'_, R>,
+    front_to_back: bool,
+) -> u64 {
+    let band_discs = gather_band_discs(discs, list, grid);
+    if front_to_back {
+        rasterise_band_front_to_back(&band_discs, grid, first_row, out)
+    } else {
+        rasterise_band_in_order(discs, &band_discs, grid, first_row, out)
+    }
+}
+
+/// `discs` sorted by their nearest t (`w − r`), front to back, in parallel.
+fn front_to_back(discs: &[Disc]) -> Vec<Disc> {
+    let mut keyed: Vec<(f64, Disc)> = discs
+        .par_iter()
+        .map(|disc| (disc.w - disc.radius_sq.sqrt(), *disc))
+        .collect();
+    keyed.par_sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+    keyed.into_par_iter().map(|(_, disc)| disc).collect()
+}
+
+/// [`rasterise_band`] for exact types with occlusion culling: discs front to back, each drawn on
+/// all its rows of the band unless [`Occlusion`] shows it hidden.
+fn rasterise_band_front_to_back<R: Real>(
+    band_discs: &[BandDisc],
+    grid: &PixelGrid,
+    first_row: usize,
+    BandOut { t, sphere, .. }: BandOut<'_, R>,
+) -> u64 {
+    let width = grid.width_px as usize;
+    let height = grid.height_px as usize;
+    let rows = t.len() / width;
+    let columns = Columns::<R>::of(grid);
+    let inverse_pixel = 1.0 / grid.pixel_size_world;
+    let mut occlusion = Occlusion::new(width);
+    let mut disc_tests = 0u64;
+    for band_disc in band_discs {
+        let disc = &band_disc.disc;
+        let radius_px = disc.radius_sq.sqrt() * inverse_pixel;
+        let Some(span) = column_span(grid, band_disc.centre_column, radius_px) else {
+            continue;
+        };
+        if !occlusion.may_show(band_disc, span, t, width) {
+            continue;
+        }
+        occlusion.drawn(span);
+        for row_in_band in 0..rows {
+            let y_up = (height - 1 - (first_row + row_in_band)) as f64;
+            let v = grid.v_of_row(y_up);
+            let Some(chord) = chord_on_row(grid, disc, band_disc.centre_column, v) else {
+                continue;
+            };
+            disc_tests += (chord.last - chord.first + 1) as u64;
+            let range = row_in_band * width..(row_in_band + 1) * width;
+            let mut row = RowOut {
+                t: &mut t[range.clone()],
+                sphere: &mut sphere[range],
+                t_error: &mut [],
+            };
+            cover_chord_behind(band_disc, columns, chord, &mut row);
+        }
+    }
+    disc_tests
+}
+
+/// [`cover_chord_exact`] for discs that come front to back: a pixel already nearer than the
+/// disc's nearest t is passed over without its square root.
+#[inline]
+fn cover_chord_behind<R: Real>(
+    band_disc: &BandDisc,
+    columns: Columns<R>,
+    chord: Chord,
+    row: &mut RowOut<R>,
+) {
+    let disc = &band_disc.disc;
+    let front_t = R::from_f64(band_disc.front_t);
+    let disc_in = DiscIn::<R>::of(disc);
+    let dv = R::from_f64(chord.v) - disc_in.v;
+    let dv_sq = dv * dv;
+    let t_span = &mut row.t[chord.first..=chord.last];
+    let sphere_span = &mut row.sphere[chord.first..=chord.last];
+    for ((x, t_px), sphere_px) in (chord.first..).zip(t_span).zip(sphere_span) {
+        if front_t > *t_px {
+            continue;
+        }
+        let PixelHit { distance_sq, t, .. } = pixel_hit(&disc_in, columns.u(x), dv_sq);
+        if distance_sq <= disc_in.radius_sq
+            && (t < *t_px || (t == *t_px && disc.sphere < *sphere_px))
+        {
+            *t_px = t;
+            *sphere_px = disc.sphere;
+        }
+    }
+}
+
+/// [`rasterise_band`] in file order, row by row (f32, and bands with few discs).
+fn rasterise_band_in_order<R: Real>(
+    discs: &[Disc],
+    band_discs: &[BandDisc],
+    grid: &PixelGrid,
+    first_row: usize,
     BandOut { t, sphere, t_error }: BandOut<'_, R>,
 ) -> u64 {
     let width = grid.width_px as usize;
     let height = grid.height_px as usize;
     let columns = Columns::<R>::of(grid);
-    let band_discs = gather_band_discs(discs, list, grid);
     let refine = R::ROUNDOFF > 0.0;
     let mut disc_tests = 0u64;
     let rows = t.chunks_mut(width).zip(sphere.chunks_mut(width));
@@ -167,7 +358,12 @@ fn rasterise_band<R: Real>(
         let mut row = RowOut { t, sphere, t_error };
         let y_up = (height - 1 - (first_row + row_in_band)) as f64;
         let v = grid.v_of_row(y_up);
-        for (disc, centre_column) in &band_discs {
+        for BandDisc {
+            disc,
+            centre_column,
+            ..
+        } in band_discs
+        {
             let Some(chord) = chord_on_row(grid, disc, *centre_column, v) else {
                 continue;
             };
@@ -183,7 +379,8 @@ fn rasterise_band<R: Real>(
 }
 
 /// Exact types (f64): the disc replaces the pixel's sphere where it covers the pixel and is
-/// strictly nearer. Over slices (no bounds checks), branch-free selects.
+/// nearer, or as near and earlier in the file (so the order discs come in does not matter). Over
+/// slices (no bounds checks), branch-free selects.
 #[inline]
 fn cover_chord_exact<R: Real>(disc: &Disc, columns: Columns<R>, chord: Chord, row: &mut RowOut<R>) {
     let disc_in = DiscIn::<R>::of(disc);
@@ -193,7 +390,8 @@ fn cover_chord_exact<R: Real>(disc: &Disc, columns: Columns<R>, chord: Chord, ro
     let sphere_span = &mut row.sphere[chord.first..=chord.last];
     for ((x, t_px), sphere_px) in (chord.first..).zip(t_span).zip(sphere_span) {
         let PixelHit { distance_sq, t, .. } = pixel_hit(&disc_in, columns.u(x), dv_sq);
-        let closer = distance_sq <= disc_in.radius_sq && t < *t_px;
+        let closer = distance_sq <= disc_in.radius_sq
+            && (t < *t_px || (t == *t_px && disc.sphere < *sphere_px));
         *t_px = if closer { t } else { *t_px };
         *sphere_px = if closer { disc.sphere } else { *sphere_px };
     }
@@ -294,6 +492,16 @@ pub(crate) fn rasterise_frame<R: Real>(
     discs: &[Disc],
 ) -> Frame {
     let grid = *grid;
+    // Exact types with many discs: bands list them front to back and cull what is hidden (ties
+    // still go to the first sphere in the file). f32 keeps file order: its uncertain decisions
+    // are re-made in f64 against the sphere there, by index.
+    let sorted;
+    let (discs, front_to_back_order) = if R::ROUNDOFF == 0.0 && discs.len() >= CULL_MIN_DISCS {
+        sorted = front_to_back(discs);
+        (sorted.as_slice(), true)
+    } else {
+        (discs, false)
+    };
     let bands = bin_discs(discs, &grid);
     let width = view.width_px as usize;
     let height = view.height_px as usize;
@@ -320,7 +528,7 @@ pub(crate) fn rasterise_frame<R: Real>(
                     sphere: sphere_band,
                     t_error: &mut [],
                 };
-                return rasterise_band(discs, list, &grid, first_row, out);
+                return rasterise_band(discs, list, &grid, first_row, out, front_to_back_order);
             }
             // f32: a scratch band, widened into the frame's f64 t.
             let mut scratch = vec![R::INFINITY; t_band.len()];
@@ -330,7 +538,7 @@ pub(crate) fn rasterise_frame<R: Real>(
                 sphere: sphere_band,
                 t_error: &mut t_error,
             };
-            let tests = rasterise_band(discs, list, &grid, first_row, out);
+            let tests = rasterise_band(discs, list, &grid, first_row, out, front_to_back_order);
             for (out, value) in t_band.iter_mut().zip(&scratch) {
                 *out = value.to_f64();
             }
