@@ -252,14 +252,68 @@ fn rasterise_band<R: Real>(
 }
 
 /// `discs` sorted by their nearest t (`w − r`), front to back, in parallel.
+///
+/// The order only decides how much is culled, never the picture (a hidden disc stays hidden, and
+/// ties go by file index whatever the order), so an approximate order does: a counting sort into
+/// [`DEPTH_BUCKETS`] slices of the depth range, file order within a slice. Linear in the discs.
 fn front_to_back(discs: &[Disc]) -> Vec<Disc> {
-    let mut keyed: Vec<(f64, Disc)> = discs
+    let fronts: Vec<f64> = discs
         .par_iter()
-        .map(|disc| (disc.w - disc.radius_sq.sqrt(), *disc))
+        .map(|disc| disc.w - disc.radius_sq.sqrt())
         .collect();
-    keyed.par_sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
-    keyed.into_par_iter().map(|(_, disc)| disc).collect()
+    let (nearest, farthest) = fronts
+        .par_iter()
+        .filter(|front| front.is_finite())
+        .fold(
+            || (f64::INFINITY, f64::NEG_INFINITY),
+            |(low, high), &front| (low.min(front), high.max(front)),
+        )
+        .reduce(
+            || (f64::INFINITY, f64::NEG_INFINITY),
+            |a, b| (a.0.min(b.0), a.1.max(b.1)),
+        );
+    let span = farthest - nearest;
+    if !(span > 0.0 && span.is_finite()) {
+        return discs.to_vec();
+    }
+    let scale = DEPTH_BUCKETS as f64 / span;
+    // NaN and +∞ go last, −∞ first (the saturating conversion).
+    let bucket_of = |front: f64| {
+        let slice = if front.is_nan() {
+            f64::INFINITY
+        } else {
+            (front - nearest) * scale
+        };
+        (slice as usize).min(DEPTH_BUCKETS - 1)
+    };
+    let buckets: Vec<u16> = fronts.par_iter().map(|&f| bucket_of(f) as u16).collect();
+    let mut starts = vec![0usize; DEPTH_BUCKETS + 1];
+    for &bucket in &buckets {
+        starts[usize::from(bucket) + 1] += 1;
+    }
+    for bucket in 0..DEPTH_BUCKETS {
+        starts[bucket + 1] += starts[bucket];
+    }
+    let mut sorted = vec![
+        Disc {
+            u: 0.0,
+            v: 0.0,
+            w: 0.0,
+            radius_sq: 0.0,
+            sphere: 0,
+        };
+        discs.len()
+    ];
+    for (disc, &bucket) in discs.iter().zip(&buckets) {
+        let slot = &mut starts[usize::from(bucket)];
+        sorted[*slot] = *disc;
+        *slot += 1;
+    }
+    sorted
 }
+
+/// Slices of the depth range the front-to-back order sorts discs into.
+const DEPTH_BUCKETS: usize = 4096;
 
 /// [`rasterise_band`] for exact types with occlusion culling: discs front to back, each drawn on
 /// all its rows of the band unless [`Occlusion`] shows it hidden.
