@@ -1,6 +1,6 @@
 //! Single-pass tokenizer over the bytes of a scene file: whitespace-separated words, with `{` and `}`
 //! always tokens of their own. Tokens borrow the text (no allocation per token) and carry their
-//! line and column.
+//! line; the column is counted only when asked for (an error), from the start of the line.
 
 use super::error::Location;
 
@@ -9,9 +9,39 @@ use super::error::Location;
 pub(crate) struct Token<'a> {
     /// The word as written.
     pub(crate) text: &'a str,
-    /// Where it starts.
-    pub(crate) location: Location,
+    /// Its line, from 1.
+    line: u32,
+    /// The text of its line before it.
+    before: &'a str,
 }
+
+impl Token<'_> {
+    /// Where the token starts: line, and column in characters from 1.
+    pub(crate) fn location(&self) -> Location {
+        location(self.line, self.before)
+    }
+}
+
+/// The location after `before` on line `line`: columns count characters, not bytes.
+fn location(line: u32, before: &str) -> Location {
+    let column = before.bytes().filter(|&b| (b & 0xC0) != 0x80).count();
+    Location {
+        line,
+        column: u32::try_from(column.saturating_add(1)).unwrap_or(u32::MAX),
+    }
+}
+
+/// Bytes that end a word: ASCII whitespace and the braces.
+const ENDS_A_WORD: [bool; 256] = {
+    let mut table = [false; 256];
+    let mut byte = 0;
+    while byte < 256 {
+        let b = byte as u8;
+        table[byte] = b.is_ascii_whitespace() || b == b'{' || b == b'}';
+        byte += 1;
+    }
+    table
+};
 
 /// Iterator over the tokens of a text.
 #[derive(Debug, Clone)]
@@ -19,8 +49,8 @@ pub(crate) struct Lexer<'a> {
     text: &'a str,
     offset: usize,
     line: u32,
-    /// Characters (not bytes) between the start of the current line and `offset`.
-    column_chars: usize,
+    /// Byte offset of the current line's start.
+    line_start: usize,
 }
 
 impl<'a> Lexer<'a> {
@@ -30,7 +60,7 @@ impl<'a> Lexer<'a> {
             text,
             offset: 0,
             line: 1,
-            column_chars: 0,
+            line_start: 0,
         }
     }
 
@@ -43,12 +73,23 @@ impl<'a> Lexer<'a> {
         }
     }
 
+    /// Byte offset of `token` (one of this lexer's) in the text.
+    pub(crate) fn offset_of(&self, token: &Token<'_>) -> usize {
+        token.text.as_ptr() as usize - self.text.as_ptr() as usize
+    }
+
+    /// Continues where `run` (a lexer over the text from byte `line_start`, whose first line is
+    /// line `line` here) stopped.
+    pub(crate) fn continue_after(&mut self, line_start: usize, line: u32, run: &Lexer<'_>) {
+        self.offset = line_start + run.offset;
+        self.line = line.saturating_add(run.line - 1);
+        self.line_start = line_start + run.line_start;
+    }
+
     /// The location the next character would have (used for "end of file" errors).
     pub(crate) fn here(&self) -> Location {
-        Location {
-            line: self.line,
-            column: u32::try_from(self.column_chars.saturating_add(1)).unwrap_or(u32::MAX),
-        }
+        let before = self.text.get(self.line_start..self.offset).unwrap_or("");
+        location(self.line, before)
     }
 }
 
@@ -62,10 +103,9 @@ impl<'a> Iterator for Lexer<'a> {
             if byte == b'\n' {
                 self.line = self.line.saturating_add(1);
                 self.offset += 1;
-                self.column_chars = 0;
+                self.line_start = self.offset;
             } else if byte.is_ascii_whitespace() {
                 self.offset += 1;
-                self.column_chars += 1;
             } else {
                 break;
             }
@@ -79,20 +119,18 @@ impl<'a> Iterator for Lexer<'a> {
             start
                 + rest
                     .iter()
-                    .position(|&b| b.is_ascii_whitespace() || b == b'{' || b == b'}')
+                    .position(|&b| ENDS_A_WORD[usize::from(b)])
                     .unwrap_or(rest.len())
         };
-        let location = self.here();
         self.offset = end;
-        // Columns count characters: every byte that does not continue a UTF-8 sequence. Counting
-        // as the lexer moves keeps long lines linear.
-        self.column_chars += bytes[start..end]
-            .iter()
-            .filter(|&&b| (b & 0xC0) != 0x80)
-            .count();
         // Token boundaries are ASCII bytes, so they are char boundaries too.
         let text = self.text.get(start..end)?;
-        Some(Token { text, location })
+        let before = self.text.get(self.line_start..start)?;
+        Some(Token {
+            text,
+            line: self.line,
+            before,
+        })
     }
 }
 
@@ -102,7 +140,7 @@ mod tests {
 
     fn words(text: &str) -> Vec<(&str, u32, u32)> {
         Lexer::new(text)
-            .map(|t| (t.text, t.location.line, t.location.column))
+            .map(|t| (t.text, t.location().line, t.location().column))
             .collect()
     }
 

@@ -8,6 +8,7 @@ mod model;
 mod parse;
 #[cfg(test)]
 mod parse_tests;
+mod split;
 mod writer;
 
 pub use error::{Location, ParseError, ParseErrorKind};

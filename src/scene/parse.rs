@@ -10,7 +10,10 @@ use glam::{DVec3, Vec3};
 use super::error::{Location, ParseError, ParseErrorKind};
 use super::lexer::{Lexer, Token};
 use super::model::{DEFAULT_BACKGROUND, Material, OrthographicCamera, Scene, Sphere};
+use super::split::{Ahead, SPLIT_MIN_BYTES, parse_run, split_point};
 use crate::geometry::camera::{CameraBasis, CameraError};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::channel;
 
 /// Largest magnitude of a coordinate, radius or size: squares and sums of squares of such numbers
 /// stay finite in f64, so no input can drive the arithmetic to infinity or NaN.
@@ -109,7 +112,35 @@ pub(super) const SPHERES_PER_REPORT: usize = 16_384;
 /// [`SPHERES_PER_REPORT`] spheres.
 pub fn parse_scene_with_progress(text: &str, progress: &dyn Fn(f64)) -> Result<Scene, ParseError> {
     let text = text.strip_prefix(BYTE_ORDER_MARK).unwrap_or(text);
-    Parser::new(text, progress).scene()
+    let split = (text.len() >= SPLIT_MIN_BYTES)
+        .then(|| split_point(text))
+        .flatten();
+    let Some((line_start, token_offset)) = split else {
+        return Parser::new(text, progress).scene();
+    };
+    let cancelled = AtomicBool::new(false);
+    std::thread::scope(|scope| {
+        let (sender, run) = channel();
+        let ahead_text = &text[line_start..];
+        let cancelled = &cancelled;
+        let spawned = std::thread::Builder::new()
+            .name("parse-ahead".into())
+            .spawn_scoped(scope, move || {
+                // The main parser may have finished without it; then nobody listens.
+                let _ = sender.send(parse_run(ahead_text, cancelled));
+            });
+        let mut parser = Parser::new(text, progress);
+        if spawned.is_ok() {
+            parser.ahead = Some(Ahead {
+                token_offset,
+                line_start,
+                run,
+            });
+        }
+        let scene = parser.scene();
+        cancelled.store(true, Ordering::Relaxed);
+        scene
+    })
 }
 
 /// A token as quoted in an error: escaped and shortened.
@@ -125,35 +156,86 @@ fn error<T>(location: Location, kind: ParseErrorKind) -> Result<T, ParseError> {
     Err(ParseError::new(location, kind))
 }
 
-struct Parser<'a> {
-    lexer: Lexer<'a>,
-    /// The `MaterialIndex` in effect and where it was set.
-    current_material: Option<u32>,
+pub(super) struct Parser<'a> {
+    pub(super) lexer: Lexer<'a>,
+    /// The `MaterialIndex` in effect.
+    pub(super) current_material: Option<u32>,
     /// Every `MaterialIndex` statement, checked against the materials at the end.
-    material_references: Vec<(u64, Location)>,
-    spheres: Vec<Sphere>,
+    pub(super) material_references: Vec<(u64, Location)>,
+    pub(super) spheres: Vec<Sphere>,
     /// Told the share of the text parsed, every [`SPHERES_PER_REPORT`] spheres.
     progress: &'a dyn Fn(f64),
+    /// A run of sphere statements parsed ahead on another thread ([`split`]).
+    ahead: Option<Ahead<'a>>,
 }
 
 impl<'a> Parser<'a> {
-    fn new(text: &'a str, progress: &'a dyn Fn(f64)) -> Self {
+    pub(super) fn new(text: &'a str, progress: &'a dyn Fn(f64)) -> Self {
         Self {
             lexer: Lexer::new(text),
             current_material: None,
             material_references: Vec::new(),
             spheres: Vec::new(),
             progress,
+            ahead: None,
         }
     }
 
-    fn next(&mut self, expected: &str) -> Result<Token<'a>, ParseError> {
+    /// Takes the run parsed ahead if `token` (a `Sphere` inside a group) is where it starts;
+    /// returns the spheres it added (0: parse the statement here).
+    fn take_run_at(&mut self, token: &Token<'a>) -> u64 {
+        let Some(ahead) = &self.ahead else { return 0 };
+        if self.lexer.offset_of(token) != ahead.token_offset {
+            return 0;
+        }
+        let line_start = ahead.line_start;
+        let run = ahead.run.recv();
+        self.ahead = None;
+        let Ok(run) = run else { return 0 };
+        if run.spheres.is_empty() {
+            return 0;
+        }
+        let line = token.location().line;
+        let inherited = self.current_material;
+        let added = run.spheres.len();
+        self.spheres.extend(
+            run.spheres
+                .into_iter()
+                .enumerate()
+                .map(|(i, sphere)| Sphere {
+                    material: if i < run.inheriting {
+                        inherited
+                    } else {
+                        sphere.material
+                    },
+                    ..sphere
+                }),
+        );
+        self.material_references
+            .extend(run.material_references.into_iter().map(|(index, at)| {
+                let at = Location {
+                    line: at.line.saturating_add(line - 1),
+                    column: at.column,
+                };
+                (index, at)
+            }));
+        if let Some(material) = run.material_after {
+            self.current_material = material;
+        }
+        self.lexer.continue_after(line_start, line, &run.end);
+        (self.progress)(self.lexer.share_consumed());
+        added as u64
+    }
+
+    /// The next token; `expected` says what was expected should the file end here (made only
+    /// then: no allocation per token).
+    fn next(&mut self, expected: impl FnOnce() -> String) -> Result<Token<'a>, ParseError> {
         match self.lexer.next() {
             Some(token) => Ok(token),
             None => error(
                 self.lexer.here(),
                 ParseErrorKind::UnexpectedEnd {
-                    expected: expected.to_owned(),
+                    expected: expected(),
                 },
             ),
         }
@@ -174,47 +256,46 @@ impl<'a> Parser<'a> {
                 found: quote(token.text),
             }
         };
-        error(token.location, kind)
+        error(token.location(), kind)
     }
 
     /// Consumes `keyword` or fails with "expected 'keyword', found …".
     fn expect(&mut self, keyword: &str) -> Result<Token<'a>, ParseError> {
-        let expected = format!("'{keyword}'");
-        let token = self.next(&expected)?;
+        let expected = || format!("'{keyword}'");
+        let token = self.next(expected)?;
         if token.text == keyword {
             Ok(token)
         } else {
-            Self::unexpected(token, &expected)
+            Self::unexpected(token, &expected())
         }
     }
 
     fn number(&mut self, what: &'static str) -> Result<(f64, Location), ParseError> {
-        let expected = format!("a number ({what})");
-        let token = self.next(&expected)?;
+        let token = self.next(|| format!("a number ({what})"))?;
         match token.text.parse::<f64>() {
-            Ok(value) if value.abs() <= MAX_MAGNITUDE => Ok((value, token.location)),
+            Ok(value) if value.abs() <= MAX_MAGNITUDE => Ok((value, token.location())),
             Ok(value) if value.is_finite() => error(
-                token.location,
+                token.location(),
                 ParseErrorKind::OutOfRange {
                     what,
                     found: quote(token.text),
                 },
             ),
             Ok(_) => error(
-                token.location,
+                token.location(),
                 ParseErrorKind::NotFinite {
                     what,
                     found: quote(token.text),
                 },
             ),
             Err(_) if looks_like_comment(token.text) => error(
-                token.location,
+                token.location(),
                 ParseErrorKind::Comment {
                     found: quote(token.text),
                 },
             ),
             Err(_) => error(
-                token.location,
+                token.location(),
                 ParseErrorKind::NotANumber {
                     what,
                     found: quote(token.text),
@@ -232,19 +313,18 @@ impl<'a> Parser<'a> {
 
     /// A colour channel, read as a 32-bit float as the course's own parser did.
     fn channel(&mut self, what: &'static str) -> Result<f32, ParseError> {
-        let expected = format!("a number ({what})");
-        let token = self.next(&expected)?;
+        let token = self.next(|| format!("a number ({what})"))?;
         match token.text.parse::<f32>() {
             Ok(value) if value.is_finite() => Ok(value),
             Ok(_) => error(
-                token.location,
+                token.location(),
                 ParseErrorKind::NotFinite {
                     what,
                     found: quote(token.text),
                 },
             ),
             Err(_) => error(
-                token.location,
+                token.location(),
                 ParseErrorKind::NotANumber {
                     what,
                     found: quote(token.text),
@@ -261,13 +341,12 @@ impl<'a> Parser<'a> {
         ))
     }
 
-    fn count(&mut self, what: &'static str) -> Result<(u64, Location), ParseError> {
-        let expected = format!("a count ({what})");
-        let token = self.next(&expected)?;
+    pub(super) fn count(&mut self, what: &'static str) -> Result<(u64, Location), ParseError> {
+        let token = self.next(|| format!("a count ({what})"))?;
         match token.text.parse::<u64>() {
-            Ok(value) => Ok((value, token.location)),
+            Ok(value) => Ok((value, token.location())),
             Err(_) => error(
-                token.location,
+                token.location(),
                 ParseErrorKind::NotACount {
                     what,
                     found: quote(token.text),
@@ -276,14 +355,14 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn scene(mut self) -> Result<Scene, ParseError> {
+    pub(super) fn scene(mut self) -> Result<Scene, ParseError> {
         const TOP_LEVEL: &str = "'OrthographicCamera', 'Background', 'Materials' or 'Group'";
         let mut camera = None;
         let mut background = None;
         let mut materials: Option<Vec<Material>> = None;
         let mut group_seen = false;
         while let Some(token) = self.lexer.next() {
-            let duplicate = |block| error(token.location, ParseErrorKind::Duplicate { block });
+            let duplicate = |block| error(token.location(), ParseErrorKind::Duplicate { block });
             match token.text {
                 "OrthographicCamera" if camera.is_some() => return duplicate("OrthographicCamera"),
                 "OrthographicCamera" => camera = Some(self.camera()?),
@@ -342,7 +421,7 @@ impl<'a> Parser<'a> {
                 return error(direction_at, ParseErrorKind::ZeroDirection);
             }
             Err(CameraError::UpParallel) => {
-                return error(up_token.location, ParseErrorKind::UpParallel);
+                return error(up_token.location(), ParseErrorKind::UpParallel);
             }
         }
         if size_world <= 0.0 {
@@ -377,7 +456,7 @@ impl<'a> Parser<'a> {
         let mut materials = Vec::new();
         loop {
             const EXPECTED: &str = "'PhongMaterial', 'Material' or '}'";
-            let token = self.next(EXPECTED)?;
+            let token = self.next(|| EXPECTED.to_owned())?;
             match token.text {
                 "PhongMaterial" | "Material" => materials.push(self.material()?),
                 "}" => break,
@@ -401,7 +480,7 @@ impl<'a> Parser<'a> {
     fn material(&mut self) -> Result<Material, ParseError> {
         const EXPECTED: &str = "'diffuseColor' or '}'";
         self.expect("{")?;
-        let token = self.next(EXPECTED)?;
+        let token = self.next(|| EXPECTED.to_owned())?;
         match token.text {
             "}" => Ok(Material::default()),
             "diffuseColor" => {
@@ -418,7 +497,7 @@ impl<'a> Parser<'a> {
         let open = self.expect("{")?;
         if depth > MAX_GROUP_DEPTH {
             return error(
-                open.location,
+                open.location(),
                 ParseErrorKind::TooDeep {
                     max: MAX_GROUP_DEPTH,
                 },
@@ -429,7 +508,7 @@ impl<'a> Parser<'a> {
         let mut found: u64 = 0;
         loop {
             const EXPECTED: &str = "'MaterialIndex', 'Sphere', 'Group' or '}'";
-            let token = self.next(EXPECTED)?;
+            let token = self.next(|| EXPECTED.to_owned())?;
             match token.text {
                 "MaterialIndex" => {
                     let (index, location) = self.count("MaterialIndex")?;
@@ -437,10 +516,13 @@ impl<'a> Parser<'a> {
                     // Out-of-range indices are reported at the end, once the materials are known.
                     self.current_material = Some(u32::try_from(index).unwrap_or(u32::MAX));
                 }
-                "Sphere" => {
-                    self.sphere()?;
-                    found += 1;
-                }
+                "Sphere" => match self.take_run_at(&token) {
+                    0 => {
+                        self.sphere()?;
+                        found += 1;
+                    }
+                    spheres => found += spheres,
+                },
                 "Group" => {
                     self.group(depth + 1)?;
                     found += 1;
@@ -463,7 +545,7 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
-    fn sphere(&mut self) -> Result<(), ParseError> {
+    pub(super) fn sphere(&mut self) -> Result<(), ParseError> {
         self.expect("{")?;
         self.expect("center")?;
         let (center_world, _) = self.vector("sphere center")?;

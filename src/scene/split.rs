@@ -1,0 +1,192 @@
+//! Parsing a big file on two threads. The second half's run of sphere statements (from the first
+//! line there that starts with `Sphere`, through `Sphere` and `MaterialIndex` statements, to the
+//! first other token or error) is parsed ahead on a thread of its own while the main parser reads
+//! the first half; when the main parser reaches that line inside a group it takes the run whole:
+//! the spheres (those before the run's first `MaterialIndex` get the material in effect there),
+//! the `MaterialIndex` references with their lines made absolute, and its place in the file.
+//!
+//! Nothing about the result depends on the split: the run stops before any statement it cannot
+//! parse, and the main parser reads that one itself (so errors have the same message and place),
+//! and a run the main parser never reaches is dropped.
+
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::Receiver;
+
+use super::error::Location;
+use super::lexer::Lexer;
+use super::model::Sphere;
+use super::parse::Parser;
+
+/// Below this many bytes a file is parsed on one thread.
+pub(super) const SPLIT_MIN_BYTES: usize = 4 << 20;
+
+/// The run parsed ahead.
+#[derive(Debug)]
+pub(super) struct Run<'a> {
+    /// The spheres in file order; the first `inheriting` take the material in effect before the
+    /// run.
+    pub(super) spheres: Vec<Sphere>,
+    pub(super) inheriting: usize,
+    /// The material in effect after the run, if the run set one.
+    pub(super) material_after: Option<Option<u32>>,
+    /// `MaterialIndex` references, lines counted from the run's first line (1).
+    pub(super) material_references: Vec<(u64, Location)>,
+    /// The lexer just after the run, in the run's text.
+    pub(super) end: Lexer<'a>,
+}
+
+/// Where the run starts and how to get it.
+pub(super) struct Ahead<'a> {
+    /// Byte offset of the run's first token (`Sphere`) in the whole text.
+    pub(super) token_offset: usize,
+    /// Byte offset of the start of its line.
+    pub(super) line_start: usize,
+    /// The run, once parsed.
+    pub(super) run: Receiver<Run<'a>>,
+}
+
+/// The start of the first line in the second half of `text` whose first token is `Sphere`:
+/// (line start, token offset).
+pub(super) fn split_point(text: &str) -> Option<(usize, usize)> {
+    let bytes = text.as_bytes();
+    let mut line_start =
+        bytes[text.len() / 2..].iter().position(|&b| b == b'\n')? + text.len() / 2 + 1;
+    while line_start < bytes.len() {
+        let indent = bytes[line_start..]
+            .iter()
+            .position(|&b| !(b == b' ' || b == b'\t'))
+            .unwrap_or(0);
+        let token = line_start + indent;
+        let after = bytes.get(token + 6).copied();
+        if bytes[token..].starts_with(b"Sphere")
+            && after.is_some_and(|b| b.is_ascii_whitespace() || b == b'{')
+        {
+            return Some((line_start, token));
+        }
+        line_start += bytes[line_start..].iter().position(|&b| b == b'\n')? + 1;
+    }
+    None
+}
+
+/// Parses the run of sphere statements at the start of `text` (the text from a line start).
+pub(super) fn parse_run<'a>(text: &'a str, cancelled: &AtomicBool) -> Run<'a> {
+    let mut parser = Parser::new(text, &|_| {});
+    let mut inheriting = None;
+    let mut material_after = None;
+    loop {
+        let before = parser.lexer.clone();
+        let spheres_before = parser.spheres.len();
+        let references_before = parser.material_references.len();
+        let cancel_point = parser.spheres.len().is_multiple_of(4096);
+        let parsed = match parser.lexer.next().map(|token| token.text) {
+            // The main parser stopped (an error, or the end): the run is not wanted.
+            _ if cancel_point && cancelled.load(Ordering::Relaxed) => false,
+            Some("Sphere") => parser.sphere().is_ok(),
+            Some("MaterialIndex") => match parser.count("MaterialIndex") {
+                Ok((index, location)) => {
+                    parser.material_references.push((index, location));
+                    inheriting.get_or_insert(parser.spheres.len());
+                    let material = Some(u32::try_from(index).unwrap_or(u32::MAX));
+                    parser.current_material = material;
+                    material_after = Some(material);
+                    true
+                }
+                Err(_) => false,
+            },
+            _ => false,
+        };
+        if !parsed {
+            parser.spheres.truncate(spheres_before);
+            parser.material_references.truncate(references_before);
+            return Run {
+                inheriting: inheriting.unwrap_or(parser.spheres.len()),
+                spheres: parser.spheres,
+                material_after,
+                material_references: parser.material_references,
+                end: before,
+            };
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::parse::{Parser, parse_scene};
+    use super::*;
+    use std::fmt::Write as _;
+
+    /// A scene text of `count` spheres over several megabytes: materials set every few spheres,
+    /// some spheres before any `MaterialIndex` of a line, nested groups, odd spacing.
+    fn big_text(count: usize) -> String {
+        let mut text = String::from(
+            "OrthographicCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 size 5 }\n\
+             Background { color 0 0 0 }\n\
+             Materials { numMaterials 3\n\
+             PhongMaterial { diffuseColor 1 0 0 }\n\
+             PhongMaterial { diffuseColor 0 1 0 }\n\
+             PhongMaterial { diffuseColor 0 0 1 } }\n",
+        );
+        let inner = 1000;
+        let _ = writeln!(text, "Group {{\n numObjects {}", count - inner + 1);
+        for i in 0..count {
+            if i == count / 3 {
+                let _ = writeln!(text, "  Group {{ numObjects {inner}");
+            }
+            if i % 7 == 3 {
+                let _ = writeln!(text, "  MaterialIndex {}", i % 3);
+            }
+            let _ = writeln!(
+                text,
+                "\tSphere {{ center {} {}.25 -{} radius 0.{} }}",
+                i % 101,
+                i % 13,
+                i % 17,
+                1 + i % 9
+            );
+            if i == count / 3 + inner - 1 {
+                let _ = writeln!(text, "  }}");
+            }
+        }
+        text.push_str("}\n");
+        text
+    }
+
+    fn sequential(text: &str) -> Result<crate::scene::Scene, crate::scene::ParseError> {
+        Parser::new(text, &|_| {}).scene()
+    }
+
+    #[test]
+    fn a_big_file_parses_on_two_threads_to_the_same_scene() {
+        let text = big_text(120_000);
+        assert!(text.len() > SPLIT_MIN_BYTES, "{} bytes", text.len());
+        let (line_start, _) = split_point(&text).expect("a split point");
+        assert!(line_start > text.len() / 2);
+        let split = parse_scene(&text).unwrap();
+        assert_eq!(split, sequential(&text).unwrap());
+        assert_eq!(split.spheres.len(), 120_000);
+    }
+
+    #[test]
+    fn an_error_in_the_second_half_is_the_one_a_single_thread_finds() {
+        let text = big_text(120_000);
+        let at = text.len() * 3 / 4;
+        let line = at + text[at..].find("radius 0.").unwrap();
+        for (replace, with) in [
+            ("radius 0.", "radius -0."),
+            ("radius 0.", "radius x."),
+            ("radius 0.", "}radius 0."),
+        ] {
+            let mut broken = text.clone();
+            broken.replace_range(line..line + replace.len(), with);
+            let split = parse_scene(&broken).unwrap_err();
+            assert_eq!(split, sequential(&broken).unwrap_err(), "{with}");
+            assert!(split.location.line > 80_000, "{split}");
+        }
+        // A material index out of range late in the file: reported at its own line.
+        let mut broken = text.clone();
+        let late = text.rfind("MaterialIndex 2").unwrap();
+        broken.replace_range(late..late + 15, "MaterialIndex 9");
+        let split = parse_scene(&broken).unwrap_err();
+        assert_eq!(split, sequential(&broken).unwrap_err());
+    }
+}
