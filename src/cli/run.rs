@@ -218,34 +218,46 @@ fn check_memory(request: &RenderRequest, bound: u64) -> Result<u64, RunError> {
     }
 }
 
-/// Makes each output of `request` from `frame` and stages it (one at a time, so only one
-/// output's pixels exist besides the frame), with the difference picture `diff`, then commits
-/// them all.
+/// Makes each output of `request` from `frame` and stages it, with the difference picture
+/// `diff`, then commits them all. Two streams run at once — the colour side (difference picture,
+/// colour image) and the depth side (depth image, 16-bit and raw depth) — each making and writing
+/// one output at a time, so at most two outputs' pixels exist besides the frame.
 fn write_outputs(
     request: &RenderRequest,
     frame: &Frame,
     diff: Option<&RgbImage>,
 ) -> Result<(), WriteError> {
-    let mut files = FileSet::new();
-    if let (Some(path), Some(picture)) =
-        (request.compare.as_ref().and_then(|c| c.diff.as_ref()), diff)
-    {
-        stage_image(&mut files, path, picture)?;
-    }
-    if let Some(path) = &request.colour_output {
-        stage_image(&mut files, path, &frame.colour_image())?;
-    }
-    if let Some(depth) = &request.depth_output {
-        let map = request.depth_colour_map;
-        let image = frame.depth_image_mapped(depth.range, map, DepthColourMap::FILE_NO_HIT);
-        stage_image(&mut files, &depth.path, &image)?;
-    }
-    if let Some(depth) = &request.depth16_output {
-        stage_depth_png16(&mut files, frame, depth.range, &depth.path)?;
-    }
-    if let Some(path) = &request.depth_raw_output {
-        stage_raw_depth(&mut files, frame, path)?;
-    }
+    let colour_side = || {
+        let mut files = FileSet::new();
+        if let (Some(path), Some(picture)) =
+            (request.compare.as_ref().and_then(|c| c.diff.as_ref()), diff)
+        {
+            stage_image(&mut files, path, picture)?;
+        }
+        if let Some(path) = &request.colour_output {
+            stage_image(&mut files, path, &frame.colour_image())?;
+        }
+        Ok::<_, WriteError>(files)
+    };
+    let depth_side = || {
+        let mut files = FileSet::new();
+        if let Some(depth) = &request.depth_output {
+            let map = request.depth_colour_map;
+            let image = frame.depth_image_mapped(depth.range, map, DepthColourMap::FILE_NO_HIT);
+            stage_image(&mut files, &depth.path, &image)?;
+        }
+        if let Some(depth) = &request.depth16_output {
+            stage_depth_png16(&mut files, frame, depth.range, &depth.path)?;
+        }
+        if let Some(path) = &request.depth_raw_output {
+            stage_raw_depth(&mut files, frame, path)?;
+        }
+        Ok::<_, WriteError>(files)
+    };
+    // A failed side drops the other's staged files with it: nothing is replaced.
+    let (colour, depth) = rayon::join(colour_side, depth_side);
+    let mut files = colour?;
+    files.append(depth?);
     files.commit().map(drop)
 }
 

@@ -203,6 +203,11 @@ impl FileSet {
         Ok(())
     }
 
+    /// Adds the files `other` staged after this set's.
+    pub fn append(&mut self, mut other: FileSet) {
+        self.staged.append(&mut other.staged);
+    }
+
     /// Renames every staged file over its destination, in the order staged. A replaced file's
     /// mode is kept. Returns the destinations.
     pub fn commit(self) -> Result<Vec<PathBuf>, WriteError> {

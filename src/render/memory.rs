@@ -8,7 +8,7 @@
 //!   [`SUPERSAMPLED_BYTES_PER_PIXEL`] more with supersampling (the filtered depth grey, and the
 //!   supersampled colour until it replaces the frame's);
 //! * the larger of the supersampler's working memory (a bounded tile of samples per thread) and
-//!   the output being encoded ([`OUTPUT_BYTES_PER_PIXEL`] per pixel: one output at a time).
+//!   the outputs being encoded ([`OUTPUT_BYTES_PER_PIXEL`] per pixel: two outputs at a time).
 //!
 //! Loading a scene file is bounded separately: the file's bytes and the spheres parsed from them.
 
@@ -18,9 +18,10 @@ use super::sampling::working_bytes;
 /// The program's own memory (code, libraries, thread stacks, allocator), generously.
 pub const BASELINE_BYTES: u64 = 96 << 20;
 
-/// Per sphere: the parsed sphere (40 bytes), its projected disc (40) and, generously, its entries
-/// in the band lists and the band gathers (48).
-pub const SPHERE_BYTES: u64 = 128;
+/// Per sphere: the parsed sphere (40 bytes), its projected disc (40), the front-to-back copy of the
+/// discs with its depth key and slice (50) and, generously, its entries in the band lists and the
+/// band gathers (48).
+pub const SPHERE_BYTES: u64 = 178;
 
 /// Per pixel of a frame: 8-bit colour (3), t as f64 (8), the sphere index (4), and the
 /// rasteriser's per-band scratch of the f32 mode (8, at most).
@@ -30,9 +31,9 @@ pub const FRAME_BYTES_PER_PIXEL: u64 = 23;
 /// beside the one-sample colour until it replaces it.
 pub const SUPERSAMPLED_BYTES_PER_PIXEL: u64 = 7;
 
-/// Per pixel of the output being written: an 8-bit RGB image (3) and, for lossless depth, t as
-/// f32 with its encoded copy (8); one output is made and written at a time.
-pub const OUTPUT_BYTES_PER_PIXEL: u64 = 11;
+/// Per pixel of the outputs being written: two at a time (the colour and the depth side), each an
+/// 8-bit RGB image (3) or, for lossless depth, t as f32 with its encoded copy (8).
+pub const OUTPUT_BYTES_PER_PIXEL: u64 = 14;
 
 /// The bound, in bytes, of rendering and writing a `width_px × height_px` picture of
 /// `sphere_count` spheres with `sampling` on `threads` threads.

@@ -1,6 +1,6 @@
 //! Single-pass tokenizer over the bytes of a scene file: whitespace-separated words, with `{` and `}`
 //! always tokens of their own. Tokens borrow the text (no allocation per token) and carry their
-//! line; the column is counted only when asked for (an error), from the start of the line.
+//! line and column.
 
 use super::error::Location;
 
@@ -9,26 +9,8 @@ use super::error::Location;
 pub(crate) struct Token<'a> {
     /// The word as written.
     pub(crate) text: &'a str,
-    /// Its line, from 1.
-    line: u32,
-    /// The text of its line before it.
-    before: &'a str,
-}
-
-impl Token<'_> {
-    /// Where the token starts: line, and column in characters from 1.
-    pub(crate) fn location(&self) -> Location {
-        location(self.line, self.before)
-    }
-}
-
-/// The location after `before` on line `line`: columns count characters, not bytes.
-fn location(line: u32, before: &str) -> Location {
-    let column = before.bytes().filter(|&b| (b & 0xC0) != 0x80).count();
-    Location {
-        line,
-        column: u32::try_from(column.saturating_add(1)).unwrap_or(u32::MAX),
-    }
+    /// Where it starts.
+    pub(crate) location: Location,
 }
 
 /// Bytes that end a word: ASCII whitespace and the braces.
@@ -49,8 +31,8 @@ pub(crate) struct Lexer<'a> {
     text: &'a str,
     offset: usize,
     line: u32,
-    /// Byte offset of the current line's start.
-    line_start: usize,
+    /// Characters (not bytes) between the start of the current line and `offset`.
+    column_chars: usize,
 }
 
 impl<'a> Lexer<'a> {
@@ -60,7 +42,7 @@ impl<'a> Lexer<'a> {
             text,
             offset: 0,
             line: 1,
-            line_start: 0,
+            column_chars: 0,
         }
     }
 
@@ -78,18 +60,20 @@ impl<'a> Lexer<'a> {
         token.text.as_ptr() as usize - self.text.as_ptr() as usize
     }
 
-    /// Continues where `run` (a lexer over the text from byte `line_start`, whose first line is
-    /// line `line` here) stopped.
+    /// Continues where `run` (a lexer over the text from byte `line_start`, the start of line
+    /// `line` here) stopped.
     pub(crate) fn continue_after(&mut self, line_start: usize, line: u32, run: &Lexer<'_>) {
         self.offset = line_start + run.offset;
         self.line = line.saturating_add(run.line - 1);
-        self.line_start = line_start + run.line_start;
+        self.column_chars = run.column_chars;
     }
 
     /// The location the next character would have (used for "end of file" errors).
     pub(crate) fn here(&self) -> Location {
-        let before = self.text.get(self.line_start..self.offset).unwrap_or("");
-        location(self.line, before)
+        Location {
+            line: self.line,
+            column: u32::try_from(self.column_chars.saturating_add(1)).unwrap_or(u32::MAX),
+        }
     }
 }
 
@@ -103,9 +87,10 @@ impl<'a> Iterator for Lexer<'a> {
             if byte == b'\n' {
                 self.line = self.line.saturating_add(1);
                 self.offset += 1;
-                self.line_start = self.offset;
+                self.column_chars = 0;
             } else if byte.is_ascii_whitespace() {
                 self.offset += 1;
+                self.column_chars += 1;
             } else {
                 break;
             }
@@ -122,15 +107,17 @@ impl<'a> Iterator for Lexer<'a> {
                     .position(|&b| ENDS_A_WORD[usize::from(b)])
                     .unwrap_or(rest.len())
         };
+        let location = self.here();
         self.offset = end;
+        // Columns count characters: every byte that does not continue a UTF-8 sequence. Counting
+        // as the lexer moves keeps long lines linear.
+        self.column_chars += bytes[start..end]
+            .iter()
+            .filter(|&&b| (b & 0xC0) != 0x80)
+            .count();
         // Token boundaries are ASCII bytes, so they are char boundaries too.
         let text = self.text.get(start..end)?;
-        let before = self.text.get(self.line_start..start)?;
-        Some(Token {
-            text,
-            line: self.line,
-            before,
-        })
+        Some(Token { text, location })
     }
 }
 
@@ -140,7 +127,7 @@ mod tests {
 
     fn words(text: &str) -> Vec<(&str, u32, u32)> {
         Lexer::new(text)
-            .map(|t| (t.text, t.location().line, t.location().column))
+            .map(|t| (t.text, t.location.line, t.location.column))
             .collect()
     }
 

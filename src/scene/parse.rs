@@ -195,7 +195,7 @@ impl<'a> Parser<'a> {
         if run.spheres.is_empty() {
             return 0;
         }
-        let line = token.location().line;
+        let line = token.location.line;
         let inherited = self.current_material;
         let added = run.spheres.len();
         self.spheres.extend(
@@ -256,7 +256,7 @@ impl<'a> Parser<'a> {
                 found: quote(token.text),
             }
         };
-        error(token.location(), kind)
+        error(token.location, kind)
     }
 
     /// Consumes `keyword` or fails with "expected 'keyword', found …".
@@ -273,29 +273,29 @@ impl<'a> Parser<'a> {
     fn number(&mut self, what: &'static str) -> Result<(f64, Location), ParseError> {
         let token = self.next(|| format!("a number ({what})"))?;
         match token.text.parse::<f64>() {
-            Ok(value) if value.abs() <= MAX_MAGNITUDE => Ok((value, token.location())),
+            Ok(value) if value.abs() <= MAX_MAGNITUDE => Ok((value, token.location)),
             Ok(value) if value.is_finite() => error(
-                token.location(),
+                token.location,
                 ParseErrorKind::OutOfRange {
                     what,
                     found: quote(token.text),
                 },
             ),
             Ok(_) => error(
-                token.location(),
+                token.location,
                 ParseErrorKind::NotFinite {
                     what,
                     found: quote(token.text),
                 },
             ),
             Err(_) if looks_like_comment(token.text) => error(
-                token.location(),
+                token.location,
                 ParseErrorKind::Comment {
                     found: quote(token.text),
                 },
             ),
             Err(_) => error(
-                token.location(),
+                token.location,
                 ParseErrorKind::NotANumber {
                     what,
                     found: quote(token.text),
@@ -317,14 +317,14 @@ impl<'a> Parser<'a> {
         match token.text.parse::<f32>() {
             Ok(value) if value.is_finite() => Ok(value),
             Ok(_) => error(
-                token.location(),
+                token.location,
                 ParseErrorKind::NotFinite {
                     what,
                     found: quote(token.text),
                 },
             ),
             Err(_) => error(
-                token.location(),
+                token.location,
                 ParseErrorKind::NotANumber {
                     what,
                     found: quote(token.text),
@@ -344,9 +344,9 @@ impl<'a> Parser<'a> {
     pub(super) fn count(&mut self, what: &'static str) -> Result<(u64, Location), ParseError> {
         let token = self.next(|| format!("a count ({what})"))?;
         match token.text.parse::<u64>() {
-            Ok(value) => Ok((value, token.location())),
+            Ok(value) => Ok((value, token.location)),
             Err(_) => error(
-                token.location(),
+                token.location,
                 ParseErrorKind::NotACount {
                     what,
                     found: quote(token.text),
@@ -362,7 +362,7 @@ impl<'a> Parser<'a> {
         let mut materials: Option<Vec<Material>> = None;
         let mut group_seen = false;
         while let Some(token) = self.lexer.next() {
-            let duplicate = |block| error(token.location(), ParseErrorKind::Duplicate { block });
+            let duplicate = |block| error(token.location, ParseErrorKind::Duplicate { block });
             match token.text {
                 "OrthographicCamera" if camera.is_some() => return duplicate("OrthographicCamera"),
                 "OrthographicCamera" => camera = Some(self.camera()?),
@@ -421,7 +421,7 @@ impl<'a> Parser<'a> {
                 return error(direction_at, ParseErrorKind::ZeroDirection);
             }
             Err(CameraError::UpParallel) => {
-                return error(up_token.location(), ParseErrorKind::UpParallel);
+                return error(up_token.location, ParseErrorKind::UpParallel);
             }
         }
         if size_world <= 0.0 {
@@ -497,7 +497,7 @@ impl<'a> Parser<'a> {
         let open = self.expect("{")?;
         if depth > MAX_GROUP_DEPTH {
             return error(
-                open.location(),
+                open.location,
                 ParseErrorKind::TooDeep {
                     max: MAX_GROUP_DEPTH,
                 },
