@@ -40,6 +40,9 @@ pub(super) struct Requests {
     pub(crate) last_wanted: Option<Wanted>,
     /// When the view, scene or quality last changed.
     pub(crate) last_change: Instant,
+    /// The last jobs submitted and when what they show was first wanted (the frame log's
+    /// latency).
+    pub(crate) changed_at: std::collections::VecDeque<(Wanted, Instant)>,
 }
 
 impl Default for Requests {
@@ -48,6 +51,7 @@ impl Default for Requests {
             submitted: None,
             last_wanted: None,
             last_change: Instant::now(),
+            changed_at: std::collections::VecDeque::new(),
         }
     }
 }
@@ -116,6 +120,12 @@ impl ViewerApp {
                 depth_style: style,
             });
             requests.submitted = Some(wanted);
+            if requests.changed_at.len() == 8 {
+                requests.changed_at.pop_front();
+            }
+            requests
+                .changed_at
+                .push_back((wanted, requests.last_change));
         }
     }
 
@@ -142,6 +152,17 @@ impl ViewerApp {
             }
         };
         let render_ms = render_time.as_secs_f64() * 1e3;
+        if let Some(log) = &mut self.frame_log {
+            let wanted = (job.view, job.scene_epoch, job.quality, job.depth_style);
+            let changed_at = self
+                .requests
+                .changed_at
+                .iter()
+                .find(|(submitted, _)| *submitted == wanted)
+                .map(|&(_, at)| at);
+            let size = [job.view.width_px, job.view.height_px];
+            log.frame(render_ms, changed_at, size);
+        }
         if let Some(shown) = &mut self.shown {
             shown.colour.set(prepared.colour, TextureOptions::NEAREST);
             shown.depth.set(prepared.depth, TextureOptions::NEAREST);

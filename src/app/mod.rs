@@ -5,6 +5,7 @@
 //! [`ViewerApp`] coordinates; each concern lives in a module of its own:
 //! * [`state`]: the loaded scene, the persisted settings
 //! * [`job`]: the render worker's job (render + texture pixels off the UI thread)
+//! * [`frame_log`]: per-frame figures for scripts that measure the real window
 //! * [`frames`]: asking the worker for frames (progressive refinement) and taking them in
 //! * [`scene_loading`]: opening and reloading scene files in the background
 //! * [`actions`]: what the user can ask for ([`actions::Action`]), exports, dialogs
@@ -25,6 +26,7 @@ pub(crate) mod actions;
 pub mod compare;
 pub(crate) mod confirm;
 pub(crate) mod dialogs;
+pub mod frame_log;
 pub(crate) mod frames;
 pub(crate) mod input;
 pub(crate) mod inspect;
@@ -120,6 +122,8 @@ pub struct ViewerApp {
     pending_replace: Option<confirm::PendingReplace>,
     /// The Compare section: their image or the chosen quality against the exact render.
     compare: compare::CompareState,
+    /// Per-frame figures, when the environment asks for them.
+    frame_log: Option<frame_log::FrameLog>,
     ctx: egui::Context,
 }
 
@@ -180,6 +184,7 @@ impl ViewerApp {
             saving_open_scene: false,
             pending_replace: None,
             compare: compare::CompareState::default(),
+            frame_log: frame_log::FrameLog::from_environment(),
             ctx: cc.egui_ctx.clone(),
         };
         let ctx = cc.egui_ctx.clone();
@@ -204,8 +209,11 @@ impl ViewerApp {
 }
 
 impl eframe::App for ViewerApp {
-    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
+        if let Some(log) = &mut self.frame_log {
+            log.ui(frame.info().cpu_usage);
+        }
         if crate::cli::process::stop_requested().is_some() {
             // A termination signal: close (eframe saves the settings on the way out).
             ctx.send_viewport_cmd(egui::ViewportCommand::Close);

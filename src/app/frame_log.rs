@@ -1,0 +1,51 @@
+//! The frame log: with `RAYTRACER_FRAME_LOG=FILE` in the environment the viewer appends a line
+//! per frame it draws, so a script driving the real window can measure what the user sees
+//! (`scripts/window-frame-times.sh`):
+//!
+//! * `ui MS`: the UI thread's time for the previous frame (egui's layout, tessellation and paint,
+//!   as eframe measures it);
+//! * `frame RENDER_MS LATENCY_MS WIDTH HEIGHT`: a new frame from the worker — its render time
+//!   (what the status bar shows), and the time from the UI frame that changed the view to the
+//!   one that takes the picture of it in.
+
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::time::Instant;
+
+/// The environment variable naming the log file.
+pub const FRAME_LOG_VARIABLE: &str = "RAYTRACER_FRAME_LOG";
+
+/// An open frame log.
+pub(crate) struct FrameLog {
+    out: BufWriter<File>,
+}
+
+impl FrameLog {
+    /// The log the environment asks for, if any (a file that cannot be created: none).
+    pub(crate) fn from_environment() -> Option<Self> {
+        let path = std::env::var_os(FRAME_LOG_VARIABLE)?;
+        let file = File::create(path).ok()?;
+        Some(Self {
+            out: BufWriter::new(file),
+        })
+    }
+
+    /// The UI thread's seconds for the previous frame.
+    pub(crate) fn ui(&mut self, seconds: Option<f32>) {
+        if let Some(seconds) = seconds {
+            let _ = writeln!(self.out, "ui {:.3}", f64::from(seconds) * 1e3);
+        }
+    }
+
+    /// A new frame from the worker, of a view that changed at `changed_at`.
+    pub(crate) fn frame(&mut self, render_ms: f64, changed_at: Option<Instant>, size_px: [u32; 2]) {
+        let latency_ms = changed_at.map_or(f64::NAN, |at| at.elapsed().as_secs_f64() * 1e3);
+        let _ = writeln!(
+            self.out,
+            "frame {render_ms:.3} {latency_ms:.3} {} {}",
+            size_px[0], size_px[1]
+        );
+        // Written as it goes: the script stops the viewer with a signal.
+        let _ = self.out.flush();
+    }
+}
