@@ -255,6 +255,7 @@ fn report(results: &[(String, Vec<Measured>)]) -> String {
         "* **front** — on the Pareto front (no other setting is both faster and more accurate).\n"
     );
     let _ = writeln!(md, "![time against error](tradeoff.svg)\n");
+    highlights(&mut md, results);
     for (name, measured) in results {
         let _ = writeln!(md, "## {name}\n");
         let _ = writeln!(
@@ -355,4 +356,46 @@ fn write_plot(
     }
     root.present()?;
     Ok(())
+}
+
+/// The settings the README quotes, for the first course scene and the random scene: ms, mean
+/// error and the share of wrong pixels.
+fn highlights(md: &mut String, results: &[(String, Vec<Measured>)]) {
+    const SETTINGS: [&str; 6] = [
+        "1 sample, f64",
+        "preview 1/2 resolution",
+        "4 uniform, box 0.5",
+        "16 uniform, box 0.5",
+        "64 uniform, box 0.5",
+        "256 uniform, box 0.5",
+    ];
+    let scenes: Vec<&(String, Vec<Measured>)> = results
+        .iter()
+        .filter(|(name, _)| name == "scene1_02" || name.starts_with("random"))
+        .collect();
+    let _ = writeln!(md, "## Highlights\n");
+    let mut header = "| setting |".to_owned();
+    for (name, _) in &scenes {
+        let _ = write!(header, " {name} ms | mean error | wrong |");
+    }
+    let _ = writeln!(md, "{header}\n|---|{}", "---|---|---|".repeat(scenes.len()));
+    for setting in SETTINGS {
+        let mut row = format!("| {setting} |");
+        for (_, measured) in &scenes {
+            match measured.iter().find(|m| m.setting.name == setting) {
+                Some(m) => {
+                    let _ = write!(
+                        row,
+                        " {:.2} | {:.3} | {:.2}% |",
+                        m.time_ms,
+                        m.mean_error,
+                        100.0 * m.wrong_fraction
+                    );
+                }
+                None => row.push_str(" — | — | — |"),
+            }
+        }
+        let _ = writeln!(md, "{row}");
+    }
+    let _ = writeln!(md);
 }
