@@ -54,7 +54,7 @@ durability=$(cargo run --release --quiet --example write_cost -- "$rounds")
   printf '| raytracer | %.1f |\n' "$mine"
   printf '| **speed-up** | **%.1f×** |\n' "$(echo "$cpp / $mine" | bc -l)"
   echo
-  printf 'Of the raytracer'"'"'s time (its own \`-stats\`, medians): render %.1f ms (a cold first frame in a\n' "$render"
+  printf 'Of the raytracer'"'"'s time (its own `-stats`, medians): render %.1f ms (a cold first frame in a\n' "$render"
   printf 'new process), write %.1f ms (encode both images and write them, each to a temporary file that\n' "$write"
   echo "is synced to disk and then renamed; the two written at once)."
   echo
