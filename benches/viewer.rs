@@ -47,6 +47,12 @@ fn viewer_frame_1024x1024(c: &mut Criterion) {
             b.iter(|| prepare_frame(black_box(&job)));
         });
     }
+    for count in [100_000usize, 1_000_000] {
+        let job = job_1024x1024(raytracer::oracle::dense_scene(7, count));
+        group.bench_function(format!("dense_{count}"), |b| {
+            b.iter(|| prepare_frame(black_box(&job)));
+        });
+    }
     group.finish();
 }
 

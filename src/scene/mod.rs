@@ -2,12 +2,14 @@
 //! ([`parse_scene`], [`load_scene`]) and its typed errors, and the writer back to text
 //! ([`scene_to_text`]).
 
+mod ahead;
 mod error;
 mod lexer;
 mod model;
 mod parse;
 #[cfg(test)]
 mod parse_tests;
+mod read;
 mod split;
 mod writer;
 
@@ -15,9 +17,9 @@ pub use error::{Location, ParseError, ParseErrorKind};
 pub use model::{
     Bounds, DEFAULT_BACKGROUND, DEFAULT_DIFFUSE, Material, OrthographicCamera, Scene, Sphere,
 };
-pub use parse::{
-    MAX_GROUP_DEPTH, MAX_MAGNITUDE, MIN_VIEW_SIZE, parse_scene, parse_scene_bytes,
-    parse_scene_bytes_with_progress, parse_scene_with_progress,
+pub use parse::{MAX_GROUP_DEPTH, MAX_MAGNITUDE, MIN_VIEW_SIZE};
+pub use read::{
+    parse_scene, parse_scene_bytes, parse_scene_bytes_with_progress, parse_scene_with_progress,
 };
 pub use writer::scene_to_text;
 

@@ -7,13 +7,11 @@
 
 use glam::{DVec3, Vec3};
 
+use super::ahead::Ahead;
 use super::error::{Location, ParseError, ParseErrorKind};
 use super::lexer::{Lexer, Token};
 use super::model::{DEFAULT_BACKGROUND, Material, OrthographicCamera, Scene, Sphere};
-use super::split::{Ahead, SPLIT_MIN_BYTES, parse_run, split_point};
 use crate::geometry::camera::{CameraBasis, CameraError};
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc::channel;
 
 /// Largest magnitude of a coordinate, radius or size: squares and sums of squares of such numbers
 /// stay finite in f64, so no input can drive the arithmetic to infinity or NaN.
@@ -24,7 +22,7 @@ pub const MAX_MAGNITUDE: f64 = 1e150;
 pub const MIN_VIEW_SIZE: f64 = 1e-150;
 
 /// The UTF-8 byte-order mark some editors put at the start of a file; it is skipped.
-const BYTE_ORDER_MARK: char = '\u{feff}';
+pub(super) const BYTE_ORDER_MARK: char = '\u{feff}';
 
 /// Whether a token looks like the start of a comment (the format has none).
 fn looks_like_comment(text: &str) -> bool {
@@ -69,79 +67,8 @@ const UNSUPPORTED_KEYWORDS: &[&str] = &[
 /// Longest excerpt of a token quoted in an error message, in characters.
 const MAX_QUOTED_CHARS: usize = 40;
 
-/// Parses scene bytes; text that is not UTF-8 gets [`ParseErrorKind::NotText`] at the bad byte.
-pub fn parse_scene_bytes(bytes: &[u8]) -> Result<Scene, ParseError> {
-    parse_scene_bytes_with_progress(bytes, &|_| {})
-}
-
-/// [`parse_scene_bytes`], telling `progress` the share of the text parsed so far (0 to 1) every
-/// few thousand spheres.
-pub fn parse_scene_bytes_with_progress(
-    bytes: &[u8],
-    progress: &dyn Fn(f64),
-) -> Result<Scene, ParseError> {
-    match std::str::from_utf8(bytes) {
-        Ok(text) => parse_scene_with_progress(text, progress),
-        Err(error) => {
-            // The location of the first byte that is not UTF-8.
-            let valid = &bytes[..error.valid_up_to()];
-            let line = 1 + valid.iter().filter(|&&b| b == b'\n').count();
-            let line_start = valid.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
-            let column = 1 + valid[line_start..]
-                .iter()
-                .filter(|&&b| (b & 0xC0) != 0x80)
-                .count();
-            let location = Location {
-                line: u32::try_from(line).unwrap_or(u32::MAX),
-                column: u32::try_from(column).unwrap_or(u32::MAX),
-            };
-            Err(ParseError::new(location, ParseErrorKind::NotText))
-        }
-    }
-}
-
-/// Parses the text of a scene file into a validated [`Scene`].
-pub fn parse_scene(text: &str) -> Result<Scene, ParseError> {
-    parse_scene_with_progress(text, &|_| {})
-}
-
 /// Spheres parsed between two progress reports.
 pub(super) const SPHERES_PER_REPORT: usize = 16_384;
-
-/// [`parse_scene`], telling `progress` the share of the text parsed so far (0 to 1) every
-/// [`SPHERES_PER_REPORT`] spheres.
-pub fn parse_scene_with_progress(text: &str, progress: &dyn Fn(f64)) -> Result<Scene, ParseError> {
-    let text = text.strip_prefix(BYTE_ORDER_MARK).unwrap_or(text);
-    let split = (text.len() >= SPLIT_MIN_BYTES)
-        .then(|| split_point(text))
-        .flatten();
-    let Some((line_start, token_offset)) = split else {
-        return Parser::new(text, progress).scene();
-    };
-    let cancelled = AtomicBool::new(false);
-    std::thread::scope(|scope| {
-        let (sender, run) = channel();
-        let ahead_text = &text[line_start..];
-        let cancelled = &cancelled;
-        let spawned = std::thread::Builder::new()
-            .name("parse-ahead".into())
-            .spawn_scoped(scope, move || {
-                // The main parser may have finished without it; then nobody listens.
-                let _ = sender.send(parse_run(ahead_text, cancelled));
-            });
-        let mut parser = Parser::new(text, progress);
-        if spawned.is_ok() {
-            parser.ahead = Some(Ahead {
-                token_offset,
-                line_start,
-                run,
-            });
-        }
-        let scene = parser.scene();
-        cancelled.store(true, Ordering::Relaxed);
-        scene
-    })
-}
 
 /// A token as quoted in an error: escaped and shortened.
 fn quote(text: &str) -> String {
@@ -164,9 +91,9 @@ pub(super) struct Parser<'a> {
     pub(super) material_references: Vec<(u64, Location)>,
     pub(super) spheres: Vec<Sphere>,
     /// Told the share of the text parsed, every [`SPHERES_PER_REPORT`] spheres.
-    progress: &'a dyn Fn(f64),
+    pub(super) progress: &'a dyn Fn(f64),
     /// A run of sphere statements parsed ahead on another thread ([`split`]).
-    ahead: Option<Ahead<'a>>,
+    pub(super) ahead: Option<Ahead<'a>>,
 }
 
 impl<'a> Parser<'a> {
@@ -179,52 +106,6 @@ impl<'a> Parser<'a> {
             progress,
             ahead: None,
         }
-    }
-
-    /// Takes the run parsed ahead if `token` (a `Sphere` inside a group) is where it starts;
-    /// returns the spheres it added (0: parse the statement here).
-    fn take_run_at(&mut self, token: &Token<'a>) -> u64 {
-        let Some(ahead) = &self.ahead else { return 0 };
-        if self.lexer.offset_of(token) != ahead.token_offset {
-            return 0;
-        }
-        let line_start = ahead.line_start;
-        let run = ahead.run.recv();
-        self.ahead = None;
-        let Ok(run) = run else { return 0 };
-        if run.spheres.is_empty() {
-            return 0;
-        }
-        let line = token.location.line;
-        let inherited = self.current_material;
-        let added = run.spheres.len();
-        self.spheres.extend(
-            run.spheres
-                .into_iter()
-                .enumerate()
-                .map(|(i, sphere)| Sphere {
-                    material: if i < run.inheriting {
-                        inherited
-                    } else {
-                        sphere.material
-                    },
-                    ..sphere
-                }),
-        );
-        self.material_references
-            .extend(run.material_references.into_iter().map(|(index, at)| {
-                let at = Location {
-                    line: at.line.saturating_add(line - 1),
-                    column: at.column,
-                };
-                (index, at)
-            }));
-        if let Some(material) = run.material_after {
-            self.current_material = material;
-        }
-        self.lexer.continue_after(line_start, line, &run.end);
-        (self.progress)(self.lexer.share_consumed());
-        added as u64
     }
 
     /// The next token; `expected` says what was expected should the file end here (made only

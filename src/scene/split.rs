@@ -10,39 +10,97 @@
 //! and a run the main parser never reaches is dropped.
 
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc::Receiver;
+use std::sync::mpsc::channel;
 
-use super::error::Location;
-use super::lexer::Lexer;
-use super::model::Sphere;
+use super::ahead::{Ahead, Run};
+use super::error::{Location, ParseError};
+use super::lexer::Token;
+use super::model::{Scene, Sphere};
 use super::parse::Parser;
 
 /// Below this many bytes a file is parsed on one thread.
 pub(super) const SPLIT_MIN_BYTES: usize = 4 << 20;
 
-/// The run parsed ahead.
-#[derive(Debug)]
-pub(super) struct Run<'a> {
-    /// The spheres in file order; the first `inheriting` take the material in effect before the
-    /// run.
-    pub(super) spheres: Vec<Sphere>,
-    pub(super) inheriting: usize,
-    /// The material in effect after the run, if the run set one.
-    pub(super) material_after: Option<Option<u32>>,
-    /// `MaterialIndex` references, lines counted from the run's first line (1).
-    pub(super) material_references: Vec<(u64, Location)>,
-    /// The lexer just after the run, in the run's text.
-    pub(super) end: Lexer<'a>,
+/// Parses `text` with the second half's run of sphere statements parsed ahead on a thread of its
+/// own (files of [`SPLIT_MIN_BYTES`] or more that have such a run; others on this thread).
+pub(super) fn parse_text(text: &str, progress: &dyn Fn(f64)) -> Result<Scene, ParseError> {
+    let split = (text.len() >= SPLIT_MIN_BYTES)
+        .then(|| split_point(text))
+        .flatten();
+    let Some((line_start, token_offset)) = split else {
+        return Parser::new(text, progress).scene();
+    };
+    let cancelled = AtomicBool::new(false);
+    std::thread::scope(|scope| {
+        let (sender, run) = channel();
+        let ahead_text = &text[line_start..];
+        let cancelled = &cancelled;
+        let spawned = std::thread::Builder::new()
+            .name("parse-ahead".into())
+            .spawn_scoped(scope, move || {
+                // The main parser may have finished without it; then nobody listens.
+                let _ = sender.send(parse_run(ahead_text, cancelled));
+            });
+        let mut parser = Parser::new(text, progress);
+        if spawned.is_ok() {
+            parser.ahead = Some(Ahead {
+                token_offset,
+                line_start,
+                run,
+            });
+        }
+        let scene = parser.scene();
+        cancelled.store(true, Ordering::Relaxed);
+        scene
+    })
 }
 
-/// Where the run starts and how to get it.
-pub(super) struct Ahead<'a> {
-    /// Byte offset of the run's first token (`Sphere`) in the whole text.
-    pub(super) token_offset: usize,
-    /// Byte offset of the start of its line.
-    pub(super) line_start: usize,
-    /// The run, once parsed.
-    pub(super) run: Receiver<Run<'a>>,
+impl<'a> Parser<'a> {
+    /// Takes the run parsed ahead if `token` (a `Sphere` inside a group) is where it starts;
+    /// returns the spheres it added (0: parse the statement here).
+    pub(super) fn take_run_at(&mut self, token: &Token<'a>) -> u64 {
+        let Some(ahead) = &self.ahead else { return 0 };
+        if self.lexer.offset_of(token) != ahead.token_offset {
+            return 0;
+        }
+        let line_start = ahead.line_start;
+        let run = ahead.run.recv();
+        self.ahead = None;
+        let Ok(run) = run else { return 0 };
+        if run.spheres.is_empty() {
+            return 0;
+        }
+        let line = token.location.line;
+        let inherited = self.current_material;
+        let added = run.spheres.len();
+        self.spheres.extend(
+            run.spheres
+                .into_iter()
+                .enumerate()
+                .map(|(i, sphere)| Sphere {
+                    material: if i < run.inheriting {
+                        inherited
+                    } else {
+                        sphere.material
+                    },
+                    ..sphere
+                }),
+        );
+        self.material_references
+            .extend(run.material_references.into_iter().map(|(index, at)| {
+                let at = Location {
+                    line: at.line.saturating_add(line - 1),
+                    column: at.column,
+                };
+                (index, at)
+            }));
+        if let Some(material) = run.material_after {
+            self.current_material = material;
+        }
+        self.lexer.continue_after(line_start, line, &run.end);
+        (self.progress)(self.lexer.share_consumed());
+        added as u64
+    }
 }
 
 /// The start of the first line in the second half of `text` whose first token is `Sphere`:
@@ -69,7 +127,7 @@ pub(super) fn split_point(text: &str) -> Option<(usize, usize)> {
 }
 
 /// Parses the run of sphere statements at the start of `text` (the text from a line start).
-pub(super) fn parse_run<'a>(text: &'a str, cancelled: &AtomicBool) -> Run<'a> {
+fn parse_run<'a>(text: &'a str, cancelled: &AtomicBool) -> Run<'a> {
     let mut parser = Parser::new(text, &|_| {});
     let mut inheriting = None;
     let mut material_after = None;
@@ -111,7 +169,8 @@ pub(super) fn parse_run<'a>(text: &'a str, cancelled: &AtomicBool) -> Run<'a> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::parse::{Parser, parse_scene};
+    use super::super::parse::Parser;
+    use super::super::read::parse_scene;
     use super::*;
     use std::fmt::Write as _;
 

@@ -18,10 +18,14 @@
 //! * this module: the projected [`Disc`] and the projection ([`project_discs`])
 //! * [`bins`]: listing each disc in the bands of rows it touches; row and column spans
 //! * [`real`]: the per-pixel number type
+//! * [`chord`]: the per-pixel primitives (a disc's test at a pixel, its chord on a row)
+//! * [`occlusion`]: dense scenes drawn front to back, hidden discs skipped
 //! * [`raster`]: filling a band's pixels, and a whole frame
 //! * [`shade`]: colours from the visible spheres
 
 mod bins;
+mod chord;
+mod occlusion;
 mod raster;
 mod real;
 mod shade;

@@ -1,0 +1,142 @@
+//! The per-pixel primitives the rasterisers share: a disc in the per-pixel type, the disc test at
+//! a pixel, where a disc's chord lies on a row, and a band's discs gathered once.
+
+use super::Disc;
+use super::bins::column_span;
+use super::real::Real;
+use crate::geometry::camera::PixelGrid;
+
+/// A disc in the per-pixel type.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct DiscIn<R> {
+    pub(super) u: R,
+    pub(super) v: R,
+    pub(super) w: R,
+    pub(super) radius_sq: R,
+}
+
+impl<R: Real> DiscIn<R> {
+    pub(super) fn of(disc: &Disc) -> Self {
+        Self {
+            u: R::from_f64(disc.u),
+            v: R::from_f64(disc.v),
+            w: R::from_f64(disc.w),
+            radius_sq: R::from_f64(disc.radius_sq),
+        }
+    }
+}
+
+/// The disc test at one pixel, in the per-pixel type.
+pub(super) struct PixelHit<R> {
+    /// Squared screen distance from the disc's centre.
+    pub(super) distance_sq: R,
+    /// r² − distance²: ≥ 0 inside the disc.
+    pub(super) rest: R,
+    /// √max(rest, 0).
+    pub(super) root: R,
+    /// t of the front surface (meaningful inside the disc).
+    pub(super) t: R,
+}
+
+/// Tests pixel column `u` (screen) against `disc` on a row `dv_sq` = (v − c_v)² away.
+#[inline(always)]
+pub(super) fn pixel_hit<R: Real>(disc: &DiscIn<R>, u: R, dv_sq: R) -> PixelHit<R> {
+    let du = u - disc.u;
+    let distance_sq = du * du + dv_sq;
+    let rest = disc.radius_sq - distance_sq;
+    let root = (if rest > R::ZERO { rest } else { R::ZERO }).sqrt();
+    PixelHit {
+        distance_sq,
+        rest,
+        root,
+        t: disc.w - root,
+    }
+}
+
+/// One row's outputs.
+pub(super) struct RowOut<'a, R> {
+    pub(super) t: &'a mut [R],
+    pub(super) sphere: &'a mut [u32],
+    /// Empty for exact types.
+    pub(super) t_error: &'a mut [R],
+}
+
+/// Where a disc's chord lies on one row: the columns to test and the row's screen v.
+#[derive(Clone, Copy)]
+pub(super) struct Chord {
+    pub(super) first: usize,
+    pub(super) last: usize,
+    pub(super) v: f64,
+}
+
+/// Pixel-to-screen constants of a grid in the per-pixel type.
+#[derive(Clone, Copy)]
+pub(super) struct Columns<R> {
+    pub(super) pixel_size: R,
+    /// Added to a column index before scaling: `½ − width/2`.
+    pub(super) offset: R,
+}
+
+impl<R: Real> Columns<R> {
+    pub(super) fn of(grid: &PixelGrid) -> Self {
+        Self {
+            pixel_size: R::from_f64(grid.pixel_size_world),
+            offset: R::from_f64(0.5 - 0.5 * f64::from(grid.width_px)),
+        }
+    }
+
+    /// Screen u of column `x`'s centre.
+    #[inline(always)]
+    pub(super) fn u(&self, x: usize) -> R {
+        (R::from_f64(x as f64) + self.offset) * self.pixel_size
+    }
+}
+
+/// A disc gathered for a band.
+#[derive(Clone, Copy)]
+pub(super) struct BandDisc {
+    pub(super) disc: Disc,
+    /// Its centre's column coordinate (`u / s + width/2 − ½`).
+    pub(super) centre_column: f64,
+    /// The nearest t it can have anywhere: `w − r`, never above the t of any pixel it covers
+    /// (correctly rounded square root and subtraction are monotonic).
+    pub(super) front_t: f64,
+}
+
+/// The band's discs gathered once, contiguous and in file order: the rows read them sequentially
+/// instead of chasing indices across the whole scene (cache misses dominated).
+pub(super) fn gather_band_discs(
+    discs: &[Disc],
+    list: impl Iterator<Item = u32>,
+    grid: &PixelGrid,
+) -> Vec<BandDisc> {
+    let inverse_pixel = 1.0 / grid.pixel_size_world;
+    let centre_column_offset = 0.5 * f64::from(grid.width_px) - 0.5;
+    list.map(|index| {
+        let disc = discs[index as usize];
+        BandDisc {
+            disc,
+            centre_column: disc.u * inverse_pixel + centre_column_offset,
+            front_t: disc.w - disc.radius_sq.sqrt(),
+        }
+    })
+    .collect()
+}
+
+/// The columns of the row at screen `v` that `disc`'s chord may cover (in f64, conservative; the
+/// per-pixel test decides).
+pub(super) fn chord_on_row(
+    grid: &PixelGrid,
+    disc: &Disc,
+    centre_column: f64,
+    v: f64,
+) -> Option<Chord> {
+    let dv = v - disc.v;
+    let chord_sq = disc.radius_sq - dv * dv;
+    if chord_sq.is_nan() || chord_sq < -disc.radius_sq * 1e-6 {
+        return None;
+    }
+    let half_chord_px = chord_sq.max(0.0).sqrt() * (1.0 / grid.pixel_size_world);
+    let (first, last) = column_span(grid, centre_column, half_chord_px)?;
+    Some(Chord { first, last, v })
+}
