@@ -65,14 +65,9 @@ fn save(harness: &mut App, folder: &Path, name: &str, marks: &[Pos2]) {
     println!("wrote {}", folder.join(format!("{name}.png")).display());
 }
 
-fn main() {
-    let folder =
-        std::path::absolute(std::env::args().nth(1).unwrap_or_else(|| "target".into())).unwrap();
-    std::fs::create_dir_all(&folder).unwrap();
-    // A path relative to the package, so the pictures show no machine's folders.
-    std::env::set_current_dir(env!("CARGO_MANIFEST_DIR")).unwrap();
-    let scene = PathBuf::from("scenes/showcase_torus_knot.txt");
-    let mut harness = Harness::builder()
+/// The viewer at 1280×720 on `scene`, rendered with wgpu.
+fn viewer(scene: PathBuf) -> App {
+    Harness::builder()
         .with_size(vec2(1280.0, 720.0))
         .wgpu()
         .build_eframe(move |cc| {
@@ -83,7 +78,16 @@ fn main() {
                     ..Default::default()
                 },
             )
-        });
+        })
+}
+
+fn main() {
+    let folder =
+        std::path::absolute(std::env::args().nth(1).unwrap_or_else(|| "target".into())).unwrap();
+    std::fs::create_dir_all(&folder).unwrap();
+    // A path relative to the package, so the pictures show no machine's folders.
+    std::env::set_current_dir(env!("CARGO_MANIFEST_DIR")).unwrap();
+    let mut harness = viewer(PathBuf::from("scenes/showcase_torus_knot.txt"));
     {
         let settings = harness.state_mut().settings_mut();
         settings.depth.colour_map = DepthColourMap::Turbo;
@@ -186,18 +190,7 @@ fn compare(folder: &Path) {
     // Relative to the package, so the picture names no machine's folders.
     let theirs_path = "target/theirs_scene1_03.tga";
     theirs.save(theirs_path).unwrap();
-    let mut harness = Harness::builder()
-        .with_size(vec2(1280.0, 720.0))
-        .wgpu()
-        .build_eframe(move |cc| {
-            ViewerApp::new(
-                cc,
-                ViewerRequest {
-                    input: Some(scene_path),
-                    ..Default::default()
-                },
-            )
-        });
+    let mut harness = viewer(scene_path);
     settle(&mut harness);
     harness.get_by_label("image").scroll_to_me();
     harness.run_steps(3);

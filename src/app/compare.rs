@@ -266,15 +266,9 @@ pub fn compare_quality(
 
 /// A quality in words: precision and sampling.
 pub(crate) fn describe_quality(quality: &Quality) -> String {
-    let sampling = match &quality.sampling {
-        Some(sampling) => format!(
-            "{} {} samples, {}",
-            sampling.samples,
-            sampling.sampler.name(),
-            sampling.filter
-        ),
-        None => "1 sample".to_owned(),
-    };
+    let sampling = quality
+        .sampling
+        .map_or_else(|| "1 sample".to_owned(), |sampling| sampling.describe());
     format!("{:?}, {sampling}", quality.precision)
 }
 

@@ -149,12 +149,7 @@ impl ViewerApp {
             precision: shown.map(|s| s.frame.precision),
             stage: shown.map(|s| match s.quality.sampling {
                 _ if self.showing_preview() => "preview (1 sample)".to_owned(),
-                Some(sampling) => format!(
-                    "{} {} samples, {}",
-                    sampling.samples,
-                    sampling.sampler.name(),
-                    sampling.filter
-                ),
+                Some(sampling) => sampling.describe(),
                 None => "1 sample".to_owned(),
             }),
             magnification: self.magnifier.zoom,

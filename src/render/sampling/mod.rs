@@ -193,6 +193,17 @@ fn exact_square_root(count: u32) -> Option<u32> {
 }
 
 impl Sampling {
+    /// The settings in words, as the status bar and the Compare section show them:
+    /// "4 uniform samples, box 0.5".
+    pub fn describe(&self) -> String {
+        format!(
+            "{} {} samples, {}",
+            self.samples,
+            self.sampler.name(),
+            self.filter
+        )
+    }
+
     /// Checks the settings.
     pub(crate) fn validate(&self) -> Result<(), SamplingError> {
         if !(1..=MAX_SAMPLES).contains(&self.samples) {
