@@ -16,7 +16,12 @@ start=$(date +%s.%N)
 cargo build --release --quiet
 build=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
 start=$(date +%s.%N)
-bash scripts/test.sh --quiet >"$work/test.log" 2>&1
+if ! bash scripts/test.sh --quiet >"$work/test.log" 2>&1; then
+  # Say what failed: the clone and its log go with the temporary folder.
+  echo "scripts/test.sh failed on the fresh clone; the end of its log:" >&2
+  tail -n 60 "$work/test.log" >&2
+  exit 1
+fi
 tests=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
 passed=$(grep -o '[0-9]* passed' "$work/test.log" | awk '{ n += $1 } END { print n }')
 {
