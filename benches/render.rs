@@ -6,8 +6,8 @@
 //! * `generated_1024x1024/<binned|brute_force>/<spheres>`: seeded scenes of
 //!   [`raytracer::oracle::random_scene`] with 10 to 1,000,000 spheres (brute force only up to
 //!   1,000: beyond, one frame takes minutes);
-//! * `dense_1024x1024/<f64|f32>/<spheres>`: [`raytracer::oracle::dense_scene`] with 100,000 and
-//!   1,000,000 spheres (every pixel covered about 10 and 100 times over) in each precision;
+//! * `dense_1024x1024/render/<spheres>`: [`raytracer::oracle::dense_scene`] with 100,000 and
+//!   1,000,000 spheres (every pixel covered about 10 and 100 times over);
 //! * `parse/<spheres>`: the scene text of those scenes, in bytes per second.
 
 use std::hint::black_box;
@@ -21,7 +21,7 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 use raytracer::explore::initial_depth_range;
 use raytracer::oracle::ray_loop::render_reference;
 use raytracer::render::depth_map::DepthRange;
-use raytracer::render::{Precision, Quality, View, render, render_with};
+use raytracer::render::{View, render};
 use raytracer::scene::{Scene, load_scene, parse_scene};
 use raytracer::{oracle::random_scene, scene::scene_to_text};
 
@@ -79,16 +79,10 @@ fn dense_1024x1024(c: &mut Criterion) {
     for count in [100_000usize, 1_000_000] {
         let scene = raytracer::oracle::dense_scene(7, count);
         let view = view_of(&scene, 1024);
-        for precision in [Precision::F64, Precision::F32] {
-            let quality = Quality {
-                precision,
-                sampling: None,
-            };
-            let id = BenchmarkId::new(precision.name(), count);
-            group.bench_with_input(id, &count, |b, _| {
-                b.iter(|| render_with(black_box(&scene), black_box(&view), &quality));
-            });
-        }
+        let id = BenchmarkId::new("render", count);
+        group.bench_with_input(id, &count, |b, _| {
+            b.iter(|| render(black_box(&scene), black_box(&view)));
+        });
     }
     group.finish();
 }

@@ -4,25 +4,23 @@
 //! cargo run --release --example accuracy
 //! ```
 //!
-//! For each precision mode (f64, f32, auto, and the textbook world-space `b² − 4ac` in f32 as the
-//! baseline) and three sweeps — distance/radius from 1e1 to 1e10, world coordinates up to 1e9, the
-//! view shrinking to 1e-9 of the scene's scale — it renders a small image and compares every
-//! pixel with the double-double reference of `render::high_precision`: hit/miss (which sphere, if
-//! any) and depth (grey levels over the visible depth range). Then it times exact against fast mode
-//! on larger frames (median of several runs, all in this one run).
+//! For the program's renderer (f64, camera-relative discs) and the textbook world-space `b² − 4ac`
+//! in f32 (the baseline a first ray caster is written as), and three sweeps — distance/radius from
+//! 1e1 to 1e10, world coordinates up to 1e9, the view shrinking to 1e-9 of the scene's scale — it
+//! renders a small image and compares every pixel with the double-double reference of
+//! `oracle::high_precision`: hit/miss (which sphere, if any) and depth (grey levels over the
+//! visible depth range).
 
 use std::fmt::Write as _;
 use std::path::Path;
-use std::time::Instant;
 
 use glam::{DVec3, Vec3};
 use plotters::prelude::*;
 use raytracer::explore::initial_depth_range;
 use raytracer::oracle::high_precision::HighPrecision;
-use raytracer::oracle::random_scene;
 use raytracer::oracle::ray_loop::render_textbook_f32;
 use raytracer::render::depth_map::DepthRange;
-use raytracer::render::{Frame, Precision, Quality, View, render_with};
+use raytracer::render::{Frame, View, render};
 use raytracer::scene::{Material, OrthographicCamera, Scene, Sphere, load_scene};
 
 /// Image side of each study render, pixels.
@@ -34,20 +32,18 @@ const AMBIGUOUS: f64 = 1e-12;
 
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
 enum Mode {
+    /// The program's renderer.
     F64,
-    F32,
-    Auto,
+    /// The textbook baseline (not a mode of the program).
     Textbook,
 }
 
 impl Mode {
-    const ALL: [Mode; 4] = [Mode::F64, Mode::F32, Mode::Auto, Mode::Textbook];
+    const ALL: [Mode; 2] = [Mode::F64, Mode::Textbook];
 
     fn name(self) -> &'static str {
         match self {
-            Mode::F64 => "f64 (exact)",
-            Mode::F32 => "f32 (fast)",
-            Mode::Auto => "auto",
+            Mode::F64 => "raytracer (f64 discs)",
             Mode::Textbook => "textbook f32 b²−4ac",
         }
     }
@@ -55,21 +51,13 @@ impl Mode {
     fn colour(self) -> RGBColor {
         match self {
             Mode::F64 => RGBColor(30, 110, 220),
-            Mode::F32 => RGBColor(230, 120, 20),
-            Mode::Auto => RGBColor(40, 170, 80),
             Mode::Textbook => RGBColor(200, 40, 40),
         }
     }
 
     fn render(self, scene: &Scene, view: &View) -> Frame {
-        let quality = |precision| Quality {
-            precision,
-            ..Default::default()
-        };
         match self {
-            Mode::F64 => render_with(scene, view, &quality(Precision::F64)),
-            Mode::F32 => render_with(scene, view, &quality(Precision::F32)),
-            Mode::Auto => render_with(scene, view, &quality(Precision::Auto)),
+            Mode::F64 => render(scene, view),
             Mode::Textbook => render_textbook_f32(scene, view),
         }
         .expect("study views are valid")
@@ -84,8 +72,6 @@ struct Errors {
     max_grey_error: f64,
     /// Fraction of pixels whose 8-bit depth differs by more than one level from the reference.
     wrong_depth: f64,
-    /// Which precision the frame used (auto resolves to one of them).
-    precision: Option<Precision>,
 }
 
 fn measure(mode: Mode, scene: &Scene, view: &View) -> Errors {
@@ -124,7 +110,6 @@ fn measure(mode: Mode, scene: &Scene, view: &View) -> Errors {
         wrong_hit: wrong_hit as f64 / counted,
         max_grey_error,
         wrong_depth: wrong_depth as f64 / counted,
-        precision: Some(frame.precision),
     }
 }
 
@@ -250,9 +235,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         results.push(per_value);
     }
 
-    let timings = time_modes()?;
     write_plot(&sweeps, &results, Path::new("docs/accuracy.svg"))?;
-    let mut report = write_report(&sweeps, &results, &timings);
+    let mut report = write_report(&sweeps, &results);
     report.push_str(&reference_images_report()?);
     std::fs::write("docs/accuracy.md", report)?;
     eprintln!("wrote docs/accuracy.md and docs/accuracy.svg");
@@ -290,7 +274,7 @@ fn reference_images_report() -> Result<String, Box<dyn std::error::Error>> {
     for (number, &(low, high)) in (1..).zip(&COURSE_DEPTH_RANGES) {
         let scene = load_scene(Path::new(&format!("scenes/scene1_0{number}.txt")))?;
         let view = View::of_camera(&scene.camera, 200, 200, DepthRange::new(low, high));
-        let frame = render_with(&scene, &view, &Quality::default())?;
+        let frame = render(&scene, &view)?;
         let reference = |kind: &str| -> Result<image::RgbImage, Box<dyn std::error::Error>> {
             let path = format!("tests/reference/{kind}1_0{number}.png");
             Ok(image::open(path)?.to_rgb8())
@@ -338,85 +322,12 @@ fn format_value(value: f64) -> String {
     }
 }
 
-struct Timing {
-    scene: String,
-    size_px: u32,
-    f64_ms: f64,
-    f32_ms: f64,
-    auto_ms: f64,
-    auto_choice: Precision,
-}
-
-fn median_ms(mut run: impl FnMut()) -> f64 {
-    run(); // warm-up
-    let mut times: Vec<f64> = (0..11)
-        .map(|_| {
-            let started = Instant::now();
-            run();
-            started.elapsed().as_secs_f64() * 1e3
-        })
-        .collect();
-    times.sort_by(f64::total_cmp);
-    times[times.len() / 2]
-}
-
-fn time_modes() -> Result<Vec<Timing>, Box<dyn std::error::Error>> {
-    let mut cases: Vec<(String, Scene)> = vec![
-        (
-            "scene1_02 (5 spheres)".into(),
-            load_scene(Path::new("scenes/scene1_02.txt"))?,
-        ),
-        (
-            "torus knot (400 spheres)".into(),
-            load_scene(Path::new("scenes/showcase_torus_knot.txt"))?,
-        ),
-    ];
-    cases.push((
-        "random, seed 1 (100,000 spheres)".into(),
-        random_scene(1, 100_000),
-    ));
-    cases.push((
-        "dense, seed 7 (100,000 spheres)".into(),
-        raytracer::oracle::dense_scene(7, 100_000),
-    ));
-    let mut timings = Vec::new();
-    for (name, scene) in cases {
-        let size_px = 2000;
-        let mut view = View::of_camera(&scene.camera, size_px, size_px, DepthRange::new(0.0, 1.0));
-        view.depth_range = initial_depth_range(&scene, &view);
-        let time = |precision| {
-            let quality = Quality {
-                precision,
-                ..Default::default()
-            };
-            median_ms(|| {
-                std::hint::black_box(render_with(&scene, &view, &quality).ok());
-            })
-        };
-        let auto_choice = render_with(
-            &scene,
-            &view,
-            &Quality {
-                precision: Precision::Auto,
-                ..Default::default()
-            },
-        )?
-        .precision;
-        timings.push(Timing {
-            scene: name,
-            size_px,
-            f64_ms: time(Precision::F64),
-            f32_ms: time(Precision::F32),
-            auto_ms: time(Precision::Auto),
-            auto_choice,
-        });
-    }
-    Ok(timings)
-}
-
-fn write_report(sweeps: &[Sweep], results: &[Vec<Vec<Errors>>], timings: &[Timing]) -> String {
+fn write_report(sweeps: &[Sweep], results: &[Vec<Vec<Errors>>]) -> String {
     let mut md = String::new();
-    let _ = writeln!(md, "# Accuracy: where each precision mode stays exact\n");
+    let _ = writeln!(
+        md,
+        "# Accuracy: where the renderer stays exact, and where a textbook one does not\n"
+    );
     let _ = writeln!(
         md,
         "Generated by `cargo run --release --example accuracy` (do not edit by hand). Every pixel of a \
@@ -444,9 +355,9 @@ fn write_report(sweeps: &[Sweep], results: &[Vec<Vec<Errors>>], timings: &[Timin
     let _ = writeln!(md, "## Safe ranges (measured)\n");
     let _ = writeln!(
         md,
-        "The hardest value up to which a mode is exact (no wrong hit, depth error below one grey level) on every value of the sweep:\n"
+        "The hardest value up to which each is exact (no wrong hit, depth error below one grey level) on every value of the sweep:\n"
     );
-    let _ = write!(md, "| mode |");
+    let _ = write!(md, "| renderer |");
     for sweep in sweeps {
         let _ = write!(md, " {} |", sweep.title);
     }
@@ -473,16 +384,6 @@ fn write_report(sweeps: &[Sweep], results: &[Vec<Vec<Errors>>], timings: &[Timin
         }
         let _ = writeln!(md);
     }
-    let _ = writeln!(
-        md,
-        "\nf32 mode computes every pixel in f32 but re-decides in f64 the pixels it cannot decide with \
-         certainty (within its error bound of a silhouette or of a tie between two spheres), so its \
-         coverage — which sphere each pixel shows — is exact; its limit is depth. `auto` renders a frame \
-         in f32 only when f32's t error, ≈ ε₃₂·(|w| + r) with a factor 4 of headroom, stays below 1/16 \
-         grey level of the depth range and every magnitude fits f32 comfortably (`src/render/precision.rs`); \
-         otherwise f64. The table shows it exact on every sweep.\n"
-    );
-
     for (sweep, per_value) in sweeps.iter().zip(results) {
         let _ = writeln!(md, "## {}\n", sweep.title);
         let _ = write!(md, "| {} |", sweep.parameter);
@@ -494,11 +395,7 @@ fn write_report(sweeps: &[Sweep], results: &[Vec<Vec<Errors>>], timings: &[Timin
                 mode.name()
             );
         }
-        let _ = writeln!(
-            md,
-            " auto used |\n|---|{}---|",
-            "---|---|".repeat(Mode::ALL.len())
-        );
+        let _ = writeln!(md, "\n|---|{}", "---|---|".repeat(Mode::ALL.len()));
         for (value, row) in sweep.values.iter().zip(per_value) {
             let _ = write!(md, "| {} |", format_value(*value));
             for errors in row {
@@ -509,54 +406,24 @@ fn write_report(sweeps: &[Sweep], results: &[Vec<Vec<Errors>>], timings: &[Timin
                     errors.max_grey_error
                 );
             }
-            let auto = row[2].precision.map_or("-", Precision::name);
-            let _ = writeln!(md, " {auto} |");
+            let _ = writeln!(md);
         }
         let _ = writeln!(md);
     }
 
-    let _ = writeln!(md, "## The cost of exactness\n");
+    let _ = writeln!(md, "## No f32 mode\n");
     let _ = writeln!(
         md,
-        "Median of 11 renders (after one warm-up) of the scene's own view at 2000×2000, all cores, measured in the same run as the study above:\n"
+        "The program renders in f64 only. Up to commit 9a70382 it also had an f32 mode (every \
+         pixel in f32, uncertain ones re-decided in f64) and `auto` (f32 where its depth error \
+         stayed below 1/16 grey level). This study, as committed at 73915a3, timed them at \
+         2000×2000: f32 ran at 0.66× the speed of f64 on scene1_02, 0.76× on the torus knot, \
+         0.80× on 100,000 random spheres and 0.35× on the dense 100,000-sphere scene (f64 skips \
+         hidden discs; f32 could not without its error bounds). A mode both slower and less exact \
+         is no trade, so it was removed; `git checkout 9a70382 && cargo run --release --example \
+         accuracy` measures it again. What 32-bit arithmetic costs a ray caster is the textbook \
+         row above."
     );
-    let _ = writeln!(
-        md,
-        "| scene | f64 (exact) ms | f32 (fast) ms | f64 / f32 | auto ms | auto chose |\n|---|---|---|---|---|---|"
-    );
-    for timing in timings {
-        let _ = writeln!(
-            md,
-            "| {} | {:.1} | {:.1} | {:.2} | {:.1} | {} |",
-            timing.scene,
-            timing.f64_ms,
-            timing.f32_ms,
-            timing.f64_ms / timing.f32_ms,
-            timing.auto_ms,
-            timing.auto_choice
-        );
-    }
-    let _ = writeln!(
-        md,
-        "\nImage size for the timings: {} px square.",
-        timings.first().map_or(0, |t| t.size_px)
-    );
-    let fastest_gain = timings
-        .iter()
-        .map(|t| t.f64_ms / t.f32_ms)
-        .fold(0.0, f64::max);
-    if fastest_gain < 1.5 {
-        let _ = writeln!(
-            md,
-            "\n**f32 is not a speed mode.** Its best gain over f64 here is {fastest_gain:.2}× (below 1: \
-             slower). The per-pixel arithmetic is not what a frame costs — projection, binning and \
-             memory are, and f32 adds the checks that keep its coverage exact and the f64 \
-             re-decisions; on dense scenes f64 also skips hidden discs, which f32 does not. Keep \
-             f64 (the default) for speed and exactness; f32 stays only as the study above of where \
-             32-bit arithmetic is exact, and `auto` picks f32 where it is safe, not where it is \
-             faster."
-        );
-    }
     md
 }
 

@@ -22,7 +22,7 @@ use raytracer::explore::initial_depth_range;
 use raytracer::oracle::ray_loop::render_reference;
 use raytracer::output::{ImageFormat, encode};
 use raytracer::render::depth_map::DepthRange;
-use raytracer::render::{Precision, Quality, View, render, render_with};
+use raytracer::render::{View, render};
 use raytracer::scene::{Scene, parse_scene};
 use raytracer::{oracle::random_scene, scene::scene_to_text};
 
@@ -107,7 +107,6 @@ struct Dense {
     /// Pixel–disc tests the f64 render made per pixel.
     tests_per_pixel: f64,
     render_ms: f64,
-    render_f32_ms: f64,
     viewer_ms: f64,
 }
 
@@ -123,20 +122,13 @@ fn dense(count: usize) -> Dense {
         .sum::<f64>()
         / (1024.0 * 1024.0);
     let runs = if count >= 1_000_000 { 5 } else { 11 };
-    let with = |precision| Quality {
-        precision,
-        sampling: None,
-    };
     let tests = render(&scene, &view).map_or(0, |frame| frame.disc_tests());
     Dense {
         count,
         depth_complexity,
         tests_per_pixel: tests as f64 / (1024.0 * 1024.0),
         render_ms: median_ms(runs, || {
-            std::hint::black_box(render_with(&scene, &view, &with(Precision::F64)).ok());
-        }),
-        render_f32_ms: median_ms(runs, || {
-            std::hint::black_box(render_with(&scene, &view, &with(Precision::F32)).ok());
+            std::hint::black_box(render(&scene, &view).ok());
         }),
         viewer_ms: viewer_frame_ms(&scene, runs),
     }
@@ -274,11 +266,7 @@ fn report(course: &[Course], generated: &[Generated], dense: &[Dense], peak_mb: 
             .find(|d| d.count == count)
             .map_or(f64::NAN, |d| d.viewer_ms)
     };
-    let least_f32_gain = dense
-        .iter()
-        .map(|d| d.render_ms / d.render_f32_ms)
-        .fold(f64::INFINITY, f64::min);
-    let rows: [(&str, f64, &str, bool); 9] = [
+    let rows: [(&str, f64, &str, bool); 8] = [
         (
             "1,000,000 spheres: parse ≤ 250 ms",
             million.map_or(f64::NAN, |g| g.parse_ms),
@@ -296,12 +284,6 @@ fn report(course: &[Course], generated: &[Generated], dense: &[Dense], peak_mb: 
             dense_viewer(1_000_000),
             "ms",
             dense_viewer(1_000_000) <= 50.0,
-        ),
-        (
-            "dense scenes: f32 ≥ 1.5× as fast as f64 (least gain)",
-            least_f32_gain,
-            "×",
-            least_f32_gain >= 1.5,
         ),
         (
             "1,000,000 spheres: render 1024×1024 ≤ 50 ms",
@@ -372,19 +354,13 @@ fn report(course: &[Course], generated: &[Generated], dense: &[Dense], peak_mb: 
     );
     let _ = writeln!(
         md,
-        "| spheres | discs per pixel | tests per pixel | render f64 ms | render f32 ms | f32 gain | viewer frame ms |\n|---|---|---|---|---|---|---|"
+        "| spheres | discs per pixel | tests per pixel | render ms | viewer frame ms |\n|---|---|---|---|---|"
     );
     for d in dense {
         let _ = writeln!(
             md,
-            "| {} | {:.1} | {:.1} | {:.1} | {:.1} | {:.2}× | {:.1} |",
-            d.count,
-            d.depth_complexity,
-            d.tests_per_pixel,
-            d.render_ms,
-            d.render_f32_ms,
-            d.render_ms / d.render_f32_ms,
-            d.viewer_ms
+            "| {} | {:.1} | {:.1} | {:.1} | {:.1} |",
+            d.count, d.depth_complexity, d.tests_per_pixel, d.render_ms, d.viewer_ms
         );
     }
     let _ = writeln!(

@@ -4,8 +4,8 @@
 //! cargo run --release --example tradeoff
 //! ```
 //!
-//! Renders a few scenes at every setting — samples 1…256, each sampler and filter, each
-//! precision, and reduced-resolution previews — measures the time (median of several runs, all in
+//! Renders a few scenes at every setting — samples 1…256, each sampler and filter,
+//! and reduced-resolution previews — measures the time (median of several runs, all in
 //! this one run) and the error against the area-average oracle (`raytracer::oracle::area`: 32×32
 //! rays a pixel through the careful ray–sphere routine, sharing no code with the supersampler),
 //! and marks the Pareto front.
@@ -19,7 +19,7 @@ use raytracer::explore::initial_depth_range;
 use raytracer::oracle::area::{AreaAverage, area_average};
 use raytracer::oracle::random_scene;
 use raytracer::render::depth_map::DepthRange;
-use raytracer::render::{Filter, Frame, Precision, Quality, Sampler, Sampling, View, render_with};
+use raytracer::render::{Filter, Frame, Quality, Sampler, Sampling, View, render_with};
 use raytracer::scene::{Scene, load_scene};
 
 /// Side of the study images, pixels.
@@ -38,21 +38,17 @@ struct Setting {
 
 fn settings() -> Vec<Setting> {
     let mut all = Vec::new();
-    let plain = |name: &str, precision| Setting {
+    let plain = |name: &str| Setting {
         name: name.into(),
-        quality: Quality {
-            precision,
-            sampling: None,
-        },
+        quality: Quality { sampling: None },
         preview_scale: 1,
     };
-    all.push(plain("1 sample, f64", Precision::F64));
-    all.push(plain("1 sample, f32", Precision::F32));
+    all.push(plain("1 sample (exact)"));
     for scale in [2, 4] {
         all.push(Setting {
             name: format!("preview 1/{scale} resolution"),
             preview_scale: scale,
-            ..plain("", Precision::F64)
+            ..plain("")
         });
     }
     let filters = [
@@ -66,7 +62,6 @@ fn settings() -> Vec<Setting> {
                 all.push(Setting {
                     name: format!("{samples} {}, {filter}", sampler.name()),
                     quality: Quality {
-                        precision: Precision::F64,
                         sampling: Some(Sampling {
                             sampler,
                             samples,
@@ -362,7 +357,7 @@ fn write_plot(
 /// error and the share of wrong pixels.
 fn highlights(md: &mut String, results: &[(String, Vec<Measured>)]) {
     const SETTINGS: [&str; 6] = [
-        "1 sample, f64",
+        "1 sample (exact)",
         "preview 1/2 resolution",
         "4 uniform, box 0.5",
         "16 uniform, box 0.5",

@@ -17,7 +17,7 @@
 //! Layers, from the bottom; each imports only from the layers above it in this list:
 //! * [`geometry`]: camera basis and pixel grid, the careful ray–sphere routine
 //! * [`scene`]: model, lexer, parser (typed errors with line and column), writer
-//! * [`render`]: view, frame, the disc rasteriser, precision, sampling, depth mapping, worker
+//! * [`render`]: view, frame, the disc rasteriser, sampling, depth mapping, worker
 //! * [`oracle`] (feature `oracle`): the straightforward loop and the double-double reference,
 //!   for tests and studies only
 //! * [`explore`]: navigation, slider and depth ranges, probe, depth statistics

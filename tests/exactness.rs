@@ -15,7 +15,6 @@
 //!   extreme below keeps that under a quarter of a grey level on at least 80% of its hit pixels
 //!   (the rest lie at silhouettes), so its 8-bit depth image can differ from the reference only
 //!   where the exact grey value sits on a rounding boundary;
-//! * auto mode: the same hit/miss, and grey values within 1/16 level (its rule for choosing f32).
 
 use glam::{DVec3, Vec3};
 use raytracer::explore::initial_depth_range;
@@ -25,7 +24,7 @@ use raytracer::oracle::ray_loop::render_reference;
 use raytracer::render::depth_map::DepthRange;
 use raytracer::render::disc::{nearest_hit, project_discs};
 use raytracer::render::rng::SplitMix64;
-use raytracer::render::{Frame, NO_HIT, Precision, Quality, View, render, render_with};
+use raytracer::render::{Frame, NO_HIT, View, render};
 use raytracer::scene::{Material, OrthographicCamera, Scene, Sphere};
 
 const EPSILON: f64 = f64::EPSILON / 2.0;
@@ -123,7 +122,6 @@ fn compare_with_reference(
 /// (most pixels compared, some hit, some missed).
 fn assert_exact(name: &str, scene: &Scene, view: &View) {
     let frame = render(scene, view).unwrap();
-    assert_eq!(frame.precision, Precision::F64);
     let (compared, hits) = compare_with_reference(scene, view, &frame, 0.0);
     let total = frame.pixel_count();
     assert!(
@@ -135,17 +133,6 @@ fn assert_exact(name: &str, scene: &Scene, view: &View) {
         hits < compared,
         "{name}: every pixel hit; the silhouette is not in view"
     );
-    // Auto mode must be exact too (it falls back to f64 where f32 is unsafe).
-    let auto = render_with(
-        scene,
-        view,
-        &Quality {
-            precision: Precision::Auto,
-            ..Default::default()
-        },
-    )
-    .unwrap();
-    compare_with_reference(scene, view, &auto, 1.0 / 16.0);
 }
 
 /// A camera looking along a skewed direction at `target` from `distance`, with the screen centre
@@ -277,32 +264,6 @@ fn extreme_narrow_depth_range_far_away() {
     let mut view = view_of(&scene, 48, 48);
     view.depth_range = DepthRange::new(99_999.996, 100_000.001_5);
     assert_exact("narrow far range", &scene, &view);
-    // f32 cannot resolve it: its grey levels are wrong somewhere.
-    let fast = render_with(
-        &scene,
-        &view,
-        &Quality {
-            precision: Precision::F32,
-            ..Default::default()
-        },
-    )
-    .unwrap();
-    let exact = render(&scene, &view).unwrap();
-    assert_ne!(
-        fast.depth_image(view.depth_range),
-        exact.depth_image(view.depth_range),
-        "f32 should not resolve a 0.0055-wide range at 1e5"
-    );
-    let auto = render_with(
-        &scene,
-        &view,
-        &Quality {
-            precision: Precision::Auto,
-            ..Default::default()
-        },
-    )
-    .unwrap();
-    assert_eq!(auto.precision, Precision::F64, "auto must choose f64 here");
 }
 
 /// A random scene with magnitudes drawn log-uniformly from 1e-8..1e8: a sphere, a camera at some
@@ -383,21 +344,6 @@ fn seeded_cases_agree_with_the_reference_and_have_no_nan() {
         compared += case_compared;
         hits += case_hits;
         pixels += frame.pixel_count();
-        let fast = render_with(
-            &scene,
-            &view,
-            &Quality {
-                precision: Precision::F32,
-                ..Default::default()
-            },
-        )
-        .unwrap();
-        assert!(fast.t.iter().all(|t| !t.is_nan()), "case {case}: f32 NaN");
-        // f32 re-decides every uncertain pixel in f64: its coverage is f64's, sphere for sphere.
-        assert!(
-            fast.sphere == frame.sphere,
-            "case {case}: f32 coverage differs"
-        );
     }
     // Pixels within rounding of a silhouette or a tie are skipped; nearly all others count, and
     // many of them are hits.
@@ -622,75 +568,6 @@ fn degenerate_cases_are_defined() {
 }
 
 #[test]
-fn f32_coverage_equals_f64_coverage_at_the_silhouette() {
-    // Each case puts one pixel centre within a relative 1e-13..1e-8 of a disc's edge, inside or
-    // outside at random: f64 decides it, f32's rounding (6e-8) cannot. The f32 mode must re-decide
-    // such pixels in f64, so its frame covers exactly what the f64 frame covers.
-    let mut rng = SplitMix64::new(0x5EED_0032);
-    let side = 48u32;
-    let (mut inside, mut outside) = (0, 0);
-    for case in 0..400 {
-        let size = rng.uniform(3.0, 7.0);
-        let pixel = size / f64::from(side);
-        let (x, y_up) = ((rng.unit() * 48.0) as u32, (rng.unit() * 48.0) as u32);
-        let point_u = (f64::from(x) + 0.5 - 24.0) * pixel;
-        let point_v = (f64::from(y_up) + 0.5 - 24.0) * pixel;
-        let angle = rng.uniform(0.0, std::f64::consts::TAU);
-        let distance = pixel * rng.uniform(3.0, 20.0);
-        let (center_u, center_v) = (
-            point_u + distance * angle.cos(),
-            point_v + distance * angle.sin(),
-        );
-        let exact_distance = ((point_u - center_u).powi(2) + (point_v - center_v).powi(2)).sqrt();
-        let nudge = rng.log_uniform(1e-13, 1e-8);
-        let is_inside = rng.unit() < 0.5;
-        let radius = exact_distance * if is_inside { 1.0 + nudge } else { 1.0 - nudge };
-        let scene = Scene {
-            camera: OrthographicCamera {
-                center_world: DVec3::new(0.0, 0.0, 10.0),
-                direction_world: DVec3::NEG_Z,
-                up_world: DVec3::Y,
-                size_world: size,
-            },
-            background: Vec3::ZERO,
-            materials: vec![Material {
-                diffuse_colour: Vec3::ONE,
-            }],
-            spheres: vec![Sphere {
-                center_world: DVec3::new(center_u, center_v, 0.0),
-                radius_world: radius,
-                material: Some(0),
-            }],
-        };
-        let view = View::of_camera(&scene.camera, side, side, DepthRange::new(8.0, 12.0));
-        let exact = render(&scene, &view).unwrap();
-        let fast = render_with(
-            &scene,
-            &view,
-            &Quality {
-                precision: Precision::F32,
-                ..Default::default()
-            },
-        )
-        .unwrap();
-        let index = exact.index(x, y_up);
-        if exact.sphere[index] == NO_HIT {
-            outside += 1;
-        } else {
-            inside += 1;
-        }
-        assert!(
-            fast.sphere == exact.sphere,
-            "case {case}: f32 coverage differs"
-        );
-    }
-    assert!(
-        inside > 100 && outside > 100,
-        "{inside} inside, {outside} outside"
-    );
-}
-
-#[test]
 fn the_double_double_reference_is_exact_on_integer_geometry() {
     // Integer coordinates, an axis-aligned camera and unit pixels: every quantity is a
     // half-integer, so exact integer arithmetic (i128) gives the true hit and t. The discs are huge
@@ -763,9 +640,9 @@ fn the_double_double_reference_is_exact_on_integer_geometry() {
 }
 
 #[test]
-fn f32_mode_where_f32_cannot_hold_the_numbers_renders_in_f64() {
-    // Found by the `scene` fuzz target: a camera 3e73 away; f32 overflows on the depth (its
-    // largest number is 3.4e38), and every sphere used to vanish from the f32 frame.
+fn a_camera_3e73_away_still_shows_its_spheres() {
+    // Found by the `scene` fuzz target (when an f32 mode existed, every sphere vanished from its
+    // frame: the depth overflowed f32). The f64 path must keep the spheres and finite depths.
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/regressions/fuzz-scene-f32-overflow.txt");
     let scene = raytracer::scene::load_scene(&path).unwrap();
@@ -775,22 +652,7 @@ fn f32_mode_where_f32_cannot_hold_the_numbers_renders_in_f64() {
         exact.sphere.iter().any(|&s| s != NO_HIT),
         "the spheres are in view"
     );
-    for precision in [Precision::F32, Precision::Auto] {
-        let frame = render_with(
-            &scene,
-            &view,
-            &Quality {
-                precision,
-                ..Default::default()
-            },
-        )
-        .unwrap();
-        assert!(frame.sphere == exact.sphere, "{precision}: coverage");
-        assert!(frame.t == exact.t, "{precision}: t");
-        assert_eq!(
-            frame.precision,
-            Precision::F64,
-            "{precision} fell back to f64"
-        );
+    for (&t, &sphere) in exact.t.iter().zip(&exact.sphere) {
+        assert_eq!(t.is_finite(), sphere != NO_HIT, "t finite iff hit");
     }
 }

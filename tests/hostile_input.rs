@@ -1,7 +1,7 @@
 //! Hostile input in the normal test suite (the fuzz targets in `fuzz/` go further): arbitrary
 //! bytes and word salad (property tests with proptest: shrunk and persisted when they fail) and
-//! seeded mutations of the course scenes go through the parser and, when they parse, the renderer
-//! in every precision mode. Nothing may panic, every error is one line with a position, and no
+//! seeded mutations of the course scenes go through the parser and, when they parse, the renderer.
+//! Nothing may panic, every error is one line with a position, and no
 //! case hangs.
 
 use std::path::Path;
@@ -10,10 +10,10 @@ use std::time::{Duration, Instant};
 use proptest::prelude::*;
 use raytracer::render::depth_map::DepthRange;
 use raytracer::render::rng::SplitMix64;
-use raytracer::render::{Precision, Quality, View, render_with};
+use raytracer::render::{View, render};
 use raytracer::scene::parse_scene_bytes;
 
-/// A hang guard, not a speed claim: no case (parse + three small renders) may take this long.
+/// A hang guard, not a speed claim: no case (parse + a small render) may take this long.
 const CASE_LIMIT: Duration = Duration::from_secs(30);
 
 fn course_scenes() -> Vec<String> {
@@ -26,25 +26,16 @@ fn course_scenes() -> Vec<String> {
         .collect()
 }
 
-/// Parses and, if that succeeds, renders a small view in each precision; returns whether it parsed.
+/// Parses and, if that succeeds, renders a small view; returns whether it parsed.
 fn exercise(bytes: &[u8]) -> bool {
     let started = Instant::now();
     let parsed = match parse_scene_bytes(bytes) {
         Ok(scene) => {
             let mut view = View::of_camera(&scene.camera, 24, 16, DepthRange::new(0.0, 1.0));
             view.depth_range = raytracer::explore::initial_depth_range(&scene, &view);
-            for precision in Precision::ALL {
-                if let Ok(frame) = render_with(
-                    &scene,
-                    &view,
-                    &Quality {
-                        precision,
-                        ..Default::default()
-                    },
-                ) {
-                    assert!(frame.t.iter().all(|t| !t.is_nan()), "NaN t");
-                    let _ = frame.depth_image(view.depth_range);
-                }
+            if let Ok(frame) = render(&scene, &view) {
+                assert!(frame.t.iter().all(|t| !t.is_nan()), "NaN t");
+                let _ = frame.depth_image(view.depth_range);
             }
             true
         }

@@ -501,11 +501,16 @@ fn without_threads_the_render_still_runs_on_one() {
     let scene = folder.path().join("scene.txt");
     std::fs::copy(scene_path("scene1_02.txt"), &scene).unwrap();
     std::fs::set_permissions(&scene, std::fs::Permissions::from_mode(0o644)).unwrap();
+    // The unprivileged user may not reach the build folder (a checkout in a private folder): it
+    // runs a copy of the binary from the open one.
+    let program = folder.path().join("raytracer");
+    std::fs::copy(binary(), &program).unwrap();
+    std::fs::set_permissions(&program, std::fs::Permissions::from_mode(0o755)).unwrap();
     // As an unprivileged user limited to one process: no thread can be started.
     let output = Command::new("setpriv")
         .args(["--reuid=65534", "--regid=65534", "--clear-groups"])
         .args(["prlimit", "--nproc=1:1"])
-        .arg(binary())
+        .arg(&program)
         .current_dir(folder.path())
         .args(["-input", "scene.txt", "-output", "c.png", "-stats"])
         .output()

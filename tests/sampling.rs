@@ -39,7 +39,6 @@ fn supersampled(
             filter,
             seed: 11,
         }),
-        ..Default::default()
     };
     render_with(scene, view, &quality).unwrap()
 }

@@ -341,7 +341,6 @@ fn supersampling_shows_a_preview_while_moving_then_refines() {
             filter: raytracer::render::Filter::Tent { radius: 1.0 },
             seed: 0,
         }),
-        ..Default::default()
     };
     harness.state_mut().settings_mut().quality = quality;
     settle(&mut harness);

@@ -7,8 +7,8 @@
 //!   open the view is held at the file's camera and the image's size, so the live render and their
 //!   image line up pixel for pixel; the compared image shows the render, theirs (the A/B flip, `B`)
 //!   or the difference (`Shift+B`), and the probe gives both values at the hovered pixel.
-//! * **Against the exact render**: the current view at the chosen quality (anti-aliasing or f32)
-//!   against the exact one-sample f64 render, and for anti-aliasing against a high-sample
+//! * **Against the exact render**: the current view at the chosen quality (anti-aliasing)
+//!   against the exact one-sample render, and for anti-aliasing against a high-sample
 //!   reference: the mean error, the share of pixels off by more than 8 levels, the frame time.
 
 use std::path::{Path, PathBuf};
@@ -238,7 +238,6 @@ pub fn compare_quality(
                     samples: REFERENCE_SAMPLES,
                     ..sampling
                 }),
-                ..Quality::default()
             };
             let (reference, _) = timed(&reference_quality)?;
             Some(figures(&Difference::of(&theirs, &reference)))
@@ -264,12 +263,11 @@ pub fn compare_quality(
     })
 }
 
-/// A quality in words: precision and sampling.
+/// A quality in words: its sampling.
 pub(crate) fn describe_quality(quality: &Quality) -> String {
-    let sampling = quality
+    quality
         .sampling
-        .map_or_else(|| "1 sample".to_owned(), |sampling| sampling.describe());
-    format!("{:?}, {sampling}", quality.precision)
+        .map_or_else(|| "1 sample".to_owned(), |sampling| sampling.describe())
 }
 
 /// An RGB image as an egui image.

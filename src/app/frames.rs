@@ -102,10 +102,7 @@ impl ViewerApp {
         } else {
             self.ctx
                 .request_repaint_after(REFINE_DELAY.saturating_sub(still_for));
-            Quality {
-                sampling: None,
-                ..self.settings.quality
-            }
+            Quality { sampling: None }
         };
         let wanted = (self.view, self.scene_epoch, quality, style);
         if requests.submitted == Some(wanted) {

@@ -22,7 +22,7 @@ pub struct ViewerJob {
     pub view: View,
     /// Which scene load this job belongs to (the viewer counts loads).
     pub scene_epoch: u64,
-    /// Precision and other quality knobs.
+    /// Quality: samples per pixel.
     pub quality: Quality,
     /// How the depth texture is coloured.
     pub depth_style: DepthStyle,

@@ -146,7 +146,6 @@ impl ViewerApp {
         StatusLine {
             render_ms: shown.map(|s| s.render_ms),
             size_px: shown.map(|s| [s.frame.width_px, s.frame.height_px]),
-            precision: shown.map(|s| s.frame.precision),
             stage: shown.map(|s| match s.quality.sampling {
                 _ if self.showing_preview() => "preview (1 sample)".to_owned(),
                 Some(sampling) => sampling.describe(),

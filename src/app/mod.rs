@@ -139,9 +139,6 @@ impl ViewerApp {
             settings.export.displayed_size = false;
             settings.export.size_px = [width, height];
         }
-        if let Some(precision) = request.precision {
-            settings.quality.precision = precision;
-        }
         // Ctrl+plus and Ctrl+minus zoom the camera; the interface keeps its size.
         cc.egui_ctx
             .options_mut(|options| options.zoom_with_keyboard = false);

@@ -67,7 +67,7 @@ pub struct Settings {
     pub(crate) show_controls: bool,
     /// Export options.
     pub export: ExportSettings,
-    /// Rendering quality (precision).
+    /// Rendering quality (samples per pixel).
     pub quality: crate::render::Quality,
     /// How the depth image is drawn.
     pub depth: DepthDisplay,

@@ -94,9 +94,6 @@ pub enum UsageError {
     /// `-diff` without an image to compare.
     #[error("{diff} needs {output} or {depth}", diff = Flag::Diff, output = Flag::CompareOutput.synopsis(), depth = Flag::CompareDepth.synopsis())]
     DiffWithoutComparison,
-    /// A precision that is not f64, f32 or auto.
-    #[error("{flag}: expected f64, f32 or auto, found '{0}'", flag = Flag::Precision)]
-    BadPrecision(String),
     /// Two flags that exclude each other.
     #[error("{0} and {1} exclude each other: give one")]
     Conflicting(Flag, Flag),

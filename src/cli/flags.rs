@@ -22,8 +22,6 @@ pub enum Flag {
     Depth16,
     /// Lossless depth (PFM, EXR).
     DepthRaw,
-    /// Per-pixel arithmetic.
-    Precision,
     /// Uniform supersampling.
     UniformSamples,
     /// Jittered supersampling.
@@ -71,7 +69,6 @@ pub(crate) const FLAGS: &[FlagSpec] = &[
     FlagSpec { flag: Flag::DepthColourMap, name: "-depth_colormap", aliases: &[], values: &["MAP"], help: "depth image colours: grey (default), turbo or viridis" },
     FlagSpec { flag: Flag::Depth16, name: "-depth16", aliases: &[], values: &["DMIN", "DMAX", "FILE"], help: "write the depth as a 16-bit grey PNG over DMIN … DMAX" },
     FlagSpec { flag: Flag::DepthRaw, name: "-depth_raw", aliases: &[], values: &["FILE"], help: "write raw t as 32-bit floats (.pfm or .exr), +inf = no hit" },
-    FlagSpec { flag: Flag::Precision, name: "-precision", aliases: &[], values: &["f64|f32|auto"], help: "per-pixel arithmetic (default f64: exact)" },
     FlagSpec { flag: Flag::UniformSamples, name: "-uniform_samples", aliases: &[], values: &["N"], help: "supersample on an n×n grid (N = n²)" },
     FlagSpec { flag: Flag::JitteredSamples, name: "-jittered_samples", aliases: &[], values: &["N"], help: "one random sample in each cell of an n×n grid (N = n²)" },
     FlagSpec { flag: Flag::RandomSamples, name: "-random_samples", aliases: &[], values: &["N"], help: "N random samples per pixel" },
@@ -169,7 +166,7 @@ pub fn usage() -> String {
 mod tests {
     use super::*;
 
-    const ALL: [Flag; 19] = [
+    const ALL: [Flag; 18] = [
         Flag::Input,
         Flag::Size,
         Flag::Output,
@@ -177,7 +174,6 @@ mod tests {
         Flag::DepthColourMap,
         Flag::Depth16,
         Flag::DepthRaw,
-        Flag::Precision,
         Flag::UniformSamples,
         Flag::JitteredSamples,
         Flag::RandomSamples,

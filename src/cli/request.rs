@@ -10,7 +10,7 @@ use super::flags::Flag;
 use super::raw_args::RawArgs;
 use crate::output::{ImageFormat, RawDepthFormat};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
-use crate::render::{Filter, Precision, Quality, Sampler, Sampling, check_image_size};
+use crate::render::{Filter, Quality, Sampler, Sampling, check_image_size};
 
 /// Image size used when `-size` is not given: the course's 200 × 200.
 pub const DEFAULT_SIZE_PX: (u32, u32) = (200, 200);
@@ -77,7 +77,7 @@ pub struct RenderRequest {
     pub(crate) depth16_output: Option<DepthOutput>,
     /// Raw t destination (`-depth_raw`, `.pfm` or `.exr`).
     pub(crate) depth_raw_output: Option<PathBuf>,
-    /// Precision and other quality knobs.
+    /// Quality: samples per pixel.
     pub(crate) quality: Quality,
     /// Print timings and counts after rendering.
     pub stats: bool,
@@ -90,8 +90,6 @@ pub struct ViewerRequest {
     pub input: Option<PathBuf>,
     /// `-size W H`, if given: the export size the viewer starts with.
     pub size_px: Option<(u32, u32)>,
-    /// `-precision`, if given: the viewer's precision mode.
-    pub precision: Option<Precision>,
     /// The `raytracer` binary itself (absolute), which export scripts run; set by the binary,
     /// not by a flag.
     pub program: Option<PathBuf>,
@@ -159,20 +157,10 @@ impl RawArgs {
         } else {
             DepthColourMap::Grey
         };
-        let precision = if self.has(Flag::Precision) {
-            let text = self.text(Flag::Precision, 0)?;
-            Some(
-                text.parse::<Precision>()
-                    .map_err(|_| UsageError::BadPrecision(text.to_owned()))?,
-            )
-        } else {
-            None
-        };
         if outputs.is_empty() && compare.is_none() {
             return Ok(Command::View(ViewerRequest {
                 input,
                 size_px,
-                precision,
                 program: None,
             }));
         }
@@ -190,7 +178,6 @@ impl RawArgs {
             depth16_output,
             depth_raw_output,
             quality: Quality {
-                precision: precision.unwrap_or_default(),
                 sampling: self.sampling()?,
             },
             stats: self.has(Flag::Stats),
@@ -389,9 +376,6 @@ impl RenderRequest {
         }
         if let Some(path) = &self.depth_raw_output {
             push(Flag::DepthRaw, vec![path.clone().into()]);
-        }
-        if self.quality.precision != Precision::default() {
-            push(Flag::Precision, vec![self.quality.precision.name().into()]);
         }
         if let Some(sampling) = &self.quality.sampling {
             let sampler_flag = SAMPLER_FLAGS

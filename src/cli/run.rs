@@ -90,8 +90,6 @@ pub struct RunReport {
     pub(crate) threads: usize,
     /// Sphere/disc tests performed.
     pub(crate) disc_tests: u64,
-    /// The precision used.
-    pub(crate) precision: crate::render::Precision,
     /// The memory bound of this run (loading or rendering, whichever is larger), bytes
     /// ([`crate::render::memory`]).
     pub(crate) memory_bound: u64,
@@ -114,7 +112,6 @@ impl RunReport {
             ("samples_per_pixel", self.samples_per_pixel.to_string()),
             ("threads", self.threads.to_string()),
             ("disc_tests", self.disc_tests.to_string()),
-            ("precision", self.precision.to_string()),
             ("memory_bound_mb", mb(self.memory_bound)),
             (
                 "peak_memory_mb",
@@ -345,7 +342,6 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
         samples_per_pixel: request.quality.sampling.map_or(1, |s| s.samples),
         threads: rayon::current_num_threads(),
         disc_tests: frame.disc_tests,
-        precision: frame.precision,
         memory_bound,
         compare: compare_report,
     })

@@ -2,7 +2,7 @@
 
 use super::*;
 use crate::render::depth_map::{DepthColourMap, DepthRange};
-use crate::render::{Filter, Precision, Quality, Sampler, Sampling};
+use crate::render::{Filter, Quality, Sampler, Sampling};
 
 fn parse(line: &str) -> Result<Command, UsageError> {
     parse_command(line.split_whitespace())
@@ -47,15 +47,6 @@ fn negative_depth_values_are_values_not_flags() {
 }
 
 #[test]
-fn precision_flag_selects_the_mode() {
-    let Command::Render(request) = parse("-input a.txt -output x.png -precision auto").unwrap()
-    else {
-        panic!("expected a render request");
-    };
-    assert_eq!(request.quality.precision, Precision::Auto);
-}
-
-#[test]
 fn course_sampling_flags_give_a_sampling() {
     let Command::Render(request) =
         parse("-input a.txt -output x.png -jittered_samples 16 -gaussian_filter 0.8 -stats")
@@ -85,7 +76,6 @@ fn without_outputs_the_viewer_opens() {
         Command::View(ViewerRequest {
             input: Some("a.txt".into()),
             size_px: Some((640, 480)),
-            precision: None,
             program: None,
         })
     );
@@ -138,8 +128,8 @@ fn mistakes_are_usage_errors() {
         ("-input a.txt -output x.tga -depth 1 2 x.tga", "same file"),
         ("-output x.tga", "need -input"),
         (
-            "-input a.txt -output x.tga -precision f16",
-            "expected f64, f32 or auto, found 'f16'",
+            "-input a.txt -output x.tga -precision f32",
+            "unknown flag '-precision'",
         ),
     ];
     for (line, message) in cases {
@@ -195,7 +185,6 @@ fn requests_with_every_setting() -> Vec<RenderRequest> {
         }),
         depth_raw_output: Some("out/t.exr".into()),
         quality: Quality {
-            precision: Precision::Auto,
             sampling: Some(Sampling {
                 sampler: Sampler::Jittered,
                 samples: 16,

@@ -139,7 +139,7 @@ impl DepthHistogram {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::{NO_HIT, Precision};
+    use crate::render::NO_HIT;
 
     fn frame_of(t: Vec<f64>) -> Frame {
         let n = t.len();
@@ -152,7 +152,6 @@ mod tests {
                 .map(|t| if t.is_finite() { 0 } else { NO_HIT })
                 .collect(),
             t,
-            precision: Precision::F64,
             depth_grey: None,
             disc_tests: 0,
         }

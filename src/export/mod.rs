@@ -10,7 +10,7 @@
 //!   numbers written exactly, so the export does not depend on the original file staying as it
 //!   was ("save view as scene" writes the same text);
 //! * `name_command.sh`: the `raytracer` command line that renders `name_scene.txt` into the same
-//!   colour and depth files, byte for byte (same size, depth range, colour map, precision and
+//!   colour and depth files, byte for byte (same size, depth range, colour map and
 //!   supersampling flags). It `cd`s to its own folder, so it runs from anywhere.
 
 mod command;
@@ -241,7 +241,7 @@ mod tests {
     use super::command::shell_quote;
     use super::*;
     use crate::render::depth_map::DepthRange;
-    use crate::render::{Filter, Precision, Sampler, Sampling, render_with};
+    use crate::render::{Filter, Sampler, Sampling, render_with};
     use crate::scene::{load_scene, parse_scene};
 
     #[test]
@@ -302,7 +302,6 @@ mod tests {
         let scene = parse_scene(include_str!("../../scenes/scene1_01.txt")).unwrap();
         let view = View::of_camera(&scene.camera, 64, 48, DepthRange::new(9.0, 10.5));
         let quality = Quality {
-            precision: Precision::Auto,
             sampling: Some(Sampling {
                 sampler: Sampler::Jittered,
                 samples: 16,
@@ -320,7 +319,6 @@ mod tests {
             "-depth 9 10.5 my view_depth.png",
             "-depth_colormap turbo",
             "-depth_raw my view_depth.exr",
-            "-precision auto",
             "-jittered_samples 16",
             "-tent_filter 1.5",
         ] {

@@ -4,7 +4,7 @@
 
 use crate::geometry::ray_sphere::{Ray, ray_sphere_nearest_t, textbook_nearest_t_f32};
 use crate::render::disc::frame_from_hits;
-use crate::render::{Frame, NO_HIT, Precision, View, ViewError};
+use crate::render::{Frame, NO_HIT, View, ViewError};
 use crate::scene::Scene;
 
 /// Renders `scene` through `view` ray by ray (see the module docs).
@@ -35,7 +35,7 @@ pub fn render_reference(scene: &Scene, view: &View) -> Result<Frame, ViewError> 
             sphere.push(best.1);
         }
     }
-    Ok(frame_from_hits(scene, view, t, sphere, Precision::F64))
+    Ok(frame_from_hits(scene, view, t, sphere))
 }
 
 /// The error study's baseline: world-space rays in f32 through the textbook `b² − 4ac`
@@ -77,5 +77,5 @@ pub fn render_textbook_f32(scene: &Scene, view: &View) -> Result<Frame, ViewErro
             sphere.push(best.1);
         }
     }
-    Ok(frame_from_hits(scene, view, t, sphere, Precision::F32))
+    Ok(frame_from_hits(scene, view, t, sphere))
 }

@@ -313,7 +313,7 @@ pub(crate) fn stage_depth_png16(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::{NO_HIT, Precision};
+    use crate::render::NO_HIT;
 
     fn write_raw_depth(frame: &Frame, path: &Path) -> Result<(), WriteError> {
         let mut set = FileSet::new();
@@ -339,7 +339,6 @@ mod tests {
                 .map(|t: &f64| if t.is_finite() { 0 } else { NO_HIT })
                 .collect(),
             t,
-            precision: Precision::F64,
             depth_grey: None,
             disc_tests: 0,
         }

@@ -24,8 +24,6 @@ pub struct Frame {
     pub t: Vec<f64>,
     /// Index (file order) of the visible sphere per pixel, [`NO_HIT`] where none.
     pub sphere: Vec<u32>,
-    /// The per-pixel precision used (`F64` or `F32`; `Auto` is resolved before rendering).
-    pub precision: super::Precision,
     /// Supersampled frames: the filtered depth grey per pixel (in [0, 1], top row first) and the
     /// range it was mapped with. The raw `t` stays one centre sample per pixel.
     pub depth_grey: Option<(DepthRange, Vec<f32>)>,

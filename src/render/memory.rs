@@ -23,9 +23,8 @@ pub const BASELINE_BYTES: u64 = 96 << 20;
 /// band gathers (48).
 pub const SPHERE_BYTES: u64 = 178;
 
-/// Per pixel of a frame: 8-bit colour (3), t as f64 (8), the sphere index (4), and the
-/// rasteriser's per-band scratch of the f32 mode (8, at most).
-pub const FRAME_BYTES_PER_PIXEL: u64 = 23;
+/// Per pixel of a frame: 8-bit colour (3), t as f64 (8) and the sphere index (4).
+pub const FRAME_BYTES_PER_PIXEL: u64 = 15;
 
 /// Per pixel more when supersampling: the filtered grey (4) and the supersampled colour (3)
 /// beside the one-sample colour until it replaces it.

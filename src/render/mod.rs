@@ -1,11 +1,10 @@
 //! Rendering: [`render`] turns a [`Scene`] seen through a [`View`] into a [`Frame`];
-//! [`render_with`] takes a [`Quality`] (precision mode).
+//! [`render_with`] takes a [`Quality`] (supersampling).
 //!
 //! * [`disc`]: the fast path. Orthographic rays are parallel, so each sphere is projected once per
 //!   frame (in f64, relative to the camera centre) to a disc on the screen; a pixel hits it iff its
 //!   screen point lies in the disc, and t follows from the disc's depth. Bands of rows run in
 //!   parallel.
-//! * [`precision`]: f64 / f32 / auto, and when f32 is safe.
 //! * [`sampling`]: supersampling with the course's samplers and filters.
 //! * [`depth_map`]: t → grey and colour maps, 8- and 16-bit quantisation.
 //! * [`rng`]: the seeded generator behind random sample positions.
@@ -15,38 +14,34 @@ pub mod depth_map;
 pub mod disc;
 mod frame;
 pub mod memory;
-pub(crate) mod precision;
 pub mod rng;
 pub(crate) mod sampling;
 mod view;
 pub(crate) mod worker;
 
 pub use frame::{Frame, NO_HIT};
-pub use precision::Precision;
 pub use sampling::{Filter, Sampler, Sampling, SamplingError};
 pub use view::{MAX_PIXELS, MAX_SIDE_PX, View, ViewError, check_image_size};
 
 use crate::scene::Scene;
 
-/// How to render: the knobs that trade speed for accuracy.
+/// How to render: the knob that trades speed for accuracy. The per-pixel arithmetic is always
+/// f64 (exact); an f32 mode was slower as well as less exact, and was removed.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 #[cfg_attr(feature = "gui", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "gui", serde(default))]
 pub struct Quality {
-    /// Per-pixel arithmetic precision.
-    pub precision: Precision,
     /// Supersampling; `None` is one sample at each pixel centre (course-exact).
     pub sampling: Option<Sampling>,
 }
 
-/// Renders `scene` through `view` in exact (f64) precision: colour, t and sphere per pixel.
+/// Renders `scene` through `view`, one sample at each pixel centre: colour, t and sphere per pixel.
 /// Deterministic: the same input gives the same frame, whatever the thread count.
 pub fn render(scene: &Scene, view: &View) -> Result<Frame, ViewError> {
     render_with(scene, view, &Quality::default())
 }
 
-/// Renders with the given quality. `Precision::Auto` resolves per frame
-/// ([`precision::f32_is_safe`]); the frame records the precision used. With sampling, the colour
+/// Renders with the given quality. With sampling, the colour
 /// and the depth greys are supersampled ([`sampling`]) and t stays the centre sample.
 pub fn render_with(scene: &Scene, view: &View, quality: &Quality) -> Result<Frame, ViewError> {
     render_with_progress(scene, view, quality, &|_| {})
@@ -66,16 +61,7 @@ pub(crate) fn render_with_progress(
     let basis = view.validate()?;
     let grid = view.grid();
     let discs = disc::project_discs(scene, view, &basis);
-    let use_f32 = match quality.precision {
-        Precision::F64 => false,
-        Precision::F32 => precision::f32_fits(&discs, &grid),
-        Precision::Auto => precision::f32_is_safe(&discs, &grid, view.depth_range),
-    };
-    let mut frame = if use_f32 {
-        disc::rasterise_frame::<f32>(scene, view, &grid, &discs)
-    } else {
-        disc::rasterise_frame::<f64>(scene, view, &grid, &discs)
-    };
+    let mut frame = disc::rasterise_frame(scene, view, &grid, &discs);
     if let Some(sampling) = &quality.sampling {
         let supersampled =
             sampling::supersample(scene, &discs, &grid, view.depth_range, sampling, progress);

@@ -54,7 +54,9 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
              against {REFERENCE_SAMPLES} samples): mean error, pixels off by more than \
              {OFF_LEVELS} levels, frame time"
         ))
-        .on_disabled_hover_text("choose anti-aliasing or f32 first: the exact quality is exact")
+        .on_disabled_hover_text(
+            "choose more samples per pixel first: one sample is the exact render",
+        )
         .clicked()
     {
         actions.push(Action::CompareQuality);

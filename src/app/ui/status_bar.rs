@@ -1,4 +1,4 @@
-//! The status bar (the last message first, then render time, size, precision, what is on screen,
+//! The status bar (the last message first, then render time, size, what is on screen,
 //! the magnification, the scene, load progress) on one line whatever the window's width: the
 //! message and the scene's name are shortened with "…" and shown whole on hover. And the error of
 //! a scene that failed to load, floating over the images so that it moves nothing.
@@ -6,7 +6,6 @@
 use egui::{Label, RichText, Ui};
 
 use crate::app::status::Status;
-use crate::render::Precision;
 
 /// What the status bar shows.
 pub(crate) struct StatusLine<'a> {
@@ -18,8 +17,6 @@ pub(crate) struct StatusLine<'a> {
     pub(crate) sphere_count: usize,
     /// The scene's path or name.
     pub(crate) scene_name: String,
-    /// Precision the frame on screen was rendered in.
-    pub(crate) precision: Option<Precision>,
     /// What is on screen: "preview" or the refined quality.
     pub(crate) stage: Option<String>,
     /// The magnifier's zoom (1: not magnified).
@@ -53,9 +50,6 @@ pub(crate) fn status_bar_ui(ui: &mut Ui, status: &StatusLine<'_>) {
         .on_hover_text("time to render the frame on screen and prepare its textures");
         if let Some([w, h]) = status.size_px {
             ui.label(format!("{w}×{h}"));
-        }
-        if let Some(precision) = status.precision {
-            ui.label(precision.name());
         }
         if let Some(stage) = &status.stage {
             ui.label(stage);

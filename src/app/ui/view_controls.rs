@@ -5,7 +5,7 @@ use egui::Ui;
 
 use crate::explore::SliderRanges;
 use crate::render::sampling::MAX_FILTER_SIZE;
-use crate::render::{Filter, Precision, Quality, Sampler, Sampling, View};
+use crate::render::{Filter, Quality, Sampler, Sampling, View};
 
 fn widened(range: &std::ops::RangeInclusive<f64>, value: f64) -> std::ops::RangeInclusive<f64> {
     if value.is_finite() {
@@ -195,22 +195,9 @@ pub(crate) fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) -
     }
 }
 
-/// The quality section: precision mode.
+/// The quality section: samples per pixel (and their sampler and filter).
 pub(crate) fn quality_ui(ui: &mut Ui, quality: &mut Quality) {
     ui.heading("Quality");
-    ui.horizontal(|ui| {
-        ui.label("precision");
-        for precision in Precision::ALL {
-            ui.radio_value(&mut quality.precision, precision, precision.name())
-                .on_hover_text(match precision {
-                    Precision::F64 => "64-bit: exact at every extreme",
-                    Precision::F32 => {
-                        "32-bit arithmetic; exact coverage, depth exact only inside its safe range"
-                    }
-                    Precision::Auto => "f32 where it is safe for the frame, else f64",
-                });
-        }
-    });
     let mut samples = quality.sampling.map_or(1, |s| s.samples);
     ui.horizontal(|ui| {
         let label = ui.label("samples per pixel");

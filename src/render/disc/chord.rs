@@ -1,64 +1,35 @@
-//! The per-pixel primitives the rasterisers share: a disc in the per-pixel type, the disc test at
-//! a pixel, where a disc's chord lies on a row, and a band's discs gathered once.
+//! The per-pixel primitives the rasterisers share: the disc test at a pixel, where a disc's chord
+//! lies on a row, and a band's discs gathered once. All in f64.
 
 use super::Disc;
 use super::bins::column_span;
-use super::real::Real;
 use crate::geometry::camera::PixelGrid;
 
-/// A disc in the per-pixel type.
-#[derive(Debug, Clone, Copy)]
-pub(super) struct DiscIn<R> {
-    pub(super) u: R,
-    pub(super) v: R,
-    pub(super) w: R,
-    pub(super) radius_sq: R,
-}
-
-impl<R: Real> DiscIn<R> {
-    pub(super) fn of(disc: &Disc) -> Self {
-        Self {
-            u: R::from_f64(disc.u),
-            v: R::from_f64(disc.v),
-            w: R::from_f64(disc.w),
-            radius_sq: R::from_f64(disc.radius_sq),
-        }
-    }
-}
-
-/// The disc test at one pixel, in the per-pixel type.
-pub(super) struct PixelHit<R> {
+/// The disc test at one pixel.
+pub(super) struct PixelHit {
     /// Squared screen distance from the disc's centre.
-    pub(super) distance_sq: R,
-    /// r² − distance²: ≥ 0 inside the disc.
-    pub(super) rest: R,
-    /// √max(rest, 0).
-    pub(super) root: R,
+    pub(super) distance_sq: f64,
     /// t of the front surface (meaningful inside the disc).
-    pub(super) t: R,
+    pub(super) t: f64,
 }
 
 /// Tests pixel column `u` (screen) against `disc` on a row `dv_sq` = (v − c_v)² away.
 #[inline(always)]
-pub(super) fn pixel_hit<R: Real>(disc: &DiscIn<R>, u: R, dv_sq: R) -> PixelHit<R> {
+pub(super) fn pixel_hit(disc: &Disc, u: f64, dv_sq: f64) -> PixelHit {
     let du = u - disc.u;
     let distance_sq = du * du + dv_sq;
     let rest = disc.radius_sq - distance_sq;
-    let root = (if rest > R::ZERO { rest } else { R::ZERO }).sqrt();
+    let root = (if rest > 0.0 { rest } else { 0.0 }).sqrt();
     PixelHit {
         distance_sq,
-        rest,
-        root,
         t: disc.w - root,
     }
 }
 
 /// One row's outputs.
-pub(super) struct RowOut<'a, R> {
-    pub(super) t: &'a mut [R],
+pub(super) struct RowOut<'a> {
+    pub(super) t: &'a mut [f64],
     pub(super) sphere: &'a mut [u32],
-    /// Empty for exact types.
-    pub(super) t_error: &'a mut [R],
 }
 
 /// Where a disc's chord lies on one row: the columns to test and the row's screen v.
@@ -69,26 +40,26 @@ pub(super) struct Chord {
     pub(super) v: f64,
 }
 
-/// Pixel-to-screen constants of a grid in the per-pixel type.
+/// Pixel-to-screen constants of a grid.
 #[derive(Clone, Copy)]
-pub(super) struct Columns<R> {
-    pub(super) pixel_size: R,
+pub(super) struct Columns {
+    pub(super) pixel_size: f64,
     /// Added to a column index before scaling: `½ − width/2`.
-    pub(super) offset: R,
+    pub(super) offset: f64,
 }
 
-impl<R: Real> Columns<R> {
+impl Columns {
     pub(super) fn of(grid: &PixelGrid) -> Self {
         Self {
-            pixel_size: R::from_f64(grid.pixel_size_world),
-            offset: R::from_f64(0.5 - 0.5 * f64::from(grid.width_px)),
+            pixel_size: grid.pixel_size_world,
+            offset: 0.5 - 0.5 * f64::from(grid.width_px),
         }
     }
 
     /// Screen u of column `x`'s centre.
     #[inline(always)]
-    pub(super) fn u(&self, x: usize) -> R {
-        (R::from_f64(x as f64) + self.offset) * self.pixel_size
+    pub(super) fn u(&self, x: usize) -> f64 {
+        (x as f64 + self.offset) * self.pixel_size
     }
 }
 

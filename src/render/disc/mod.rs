@@ -12,12 +12,11 @@
 //! pixels × spheres. Ties keep the sphere that comes first in the file (bands list discs in file
 //! order and a hit replaces the current one only when strictly nearer).
 //!
-//! The per-pixel arithmetic is generic over [`Real`]: f64 (exact mode) or f32 (fast mode); the
-//! projection and the column spans are always f64.
+//! Everything is f64: an f32 mode was measured slower than f64 and less exact, and removed
+//! (`docs/accuracy.md`).
 //!
 //! * this module: the projected [`Disc`] and the projection ([`project_discs`])
 //! * [`bins`]: listing each disc in the bands of rows it touches; row and column spans
-//! * [`real`]: the per-pixel number type
 //! * [`chord`]: the per-pixel primitives (a disc's test at a pixel, its chord on a row)
 //! * [`occlusion`]: dense scenes drawn front to back, hidden discs skipped
 //! * [`raster`]: filling a band's pixels, and a whole frame
@@ -27,7 +26,6 @@ mod bins;
 mod chord;
 mod occlusion;
 mod raster;
-mod real;
 mod shade;
 
 pub(crate) use bins::pixel_span;

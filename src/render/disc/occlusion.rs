@@ -5,8 +5,7 @@ use rayon::prelude::*;
 
 use super::Disc;
 use super::bins::column_span;
-use super::chord::{BandDisc, Chord, Columns, DiscIn, PixelHit, RowOut, chord_on_row, pixel_hit};
-use super::real::Real;
+use super::chord::{BandDisc, Chord, Columns, PixelHit, RowOut, chord_on_row, pixel_hit};
 use crate::geometry::camera::PixelGrid;
 
 /// Columns per occlusion tile (a tile is this many columns of a band's rows).
@@ -17,12 +16,11 @@ pub(super) const CULL_MIN_DISCS: usize = 64;
 
 /// The farthest t among the pixels of `tile` in a band of rows `width` long; stops at the first
 /// uncovered pixel (+∞).
-fn farthest_in_tile<R: Real>(t: &[R], width: usize, tile: usize) -> f64 {
+fn farthest_in_tile(t: &[f64], width: usize, tile: usize) -> f64 {
     let columns = tile * TILE_COLUMNS..((tile + 1) * TILE_COLUMNS).min(width);
     let mut farthest = f64::NEG_INFINITY;
     for row in t.chunks(width) {
         for &t in &row[columns.clone()] {
-            let t = t.to_f64();
             if t == f64::INFINITY {
                 return t;
             }
@@ -52,11 +50,11 @@ impl Occlusion {
     }
 
     /// Whether `disc` (columns `first..=last` of the band) may be nearer than a pixel there.
-    fn may_show<R: Real>(
+    fn may_show(
         &mut self,
         disc: &BandDisc,
         (first, last): (usize, usize),
-        t: &[R],
+        t: &[f64],
         width: usize,
     ) -> bool {
         for tile in first / TILE_COLUMNS..=last / TILE_COLUMNS {
@@ -167,20 +165,19 @@ pub(super) fn discs_per_pixel(discs: &[Disc], grid: &PixelGrid) -> f64 {
 /// Slices of the depth range the front-to-back order sorts discs into.
 const DEPTH_BUCKETS: usize = 4096;
 
-/// A band (rows from `first_row`, its t and sphere per pixel) for exact types with occlusion
-/// culling: discs front to back, each drawn on
-/// all its rows of the band unless [`Occlusion`] shows it hidden.
-pub(super) fn rasterise_band_front_to_back<R: Real>(
+/// A band (rows from `first_row`, its t and sphere per pixel) with occlusion culling: discs front
+/// to back, each drawn on all its rows of the band unless [`Occlusion`] shows it hidden.
+pub(super) fn rasterise_band_front_to_back(
     band_discs: &[BandDisc],
     grid: &PixelGrid,
     first_row: usize,
-    t: &mut [R],
+    t: &mut [f64],
     sphere: &mut [u32],
 ) -> u64 {
     let width = grid.width_px as usize;
     let height = grid.height_px as usize;
     let rows = t.len() / width;
-    let columns = Columns::<R>::of(grid);
+    let columns = Columns::of(grid);
     let inverse_pixel = 1.0 / grid.pixel_size_world;
     let mut occlusion = Occlusion::new(width);
     let mut disc_tests = 0u64;
@@ -205,7 +202,6 @@ pub(super) fn rasterise_band_front_to_back<R: Real>(
             let mut row = RowOut {
                 t: &mut t[range.clone()],
                 sphere: &mut sphere[range],
-                t_error: &mut [],
             };
             cover_chord_behind(band_disc, columns, chord, &mut row);
         }
@@ -216,16 +212,10 @@ pub(super) fn rasterise_band_front_to_back<R: Real>(
 /// A chord for discs that come front to back: a pixel already nearer than the
 /// disc's nearest t is passed over without its square root.
 #[inline]
-fn cover_chord_behind<R: Real>(
-    band_disc: &BandDisc,
-    columns: Columns<R>,
-    chord: Chord,
-    row: &mut RowOut<R>,
-) {
+fn cover_chord_behind(band_disc: &BandDisc, columns: Columns, chord: Chord, row: &mut RowOut) {
     let disc = &band_disc.disc;
-    let front_t = R::from_f64(band_disc.front_t);
-    let disc_in = DiscIn::<R>::of(disc);
-    let dv = R::from_f64(chord.v) - disc_in.v;
+    let front_t = band_disc.front_t;
+    let dv = chord.v - disc.v;
     let dv_sq = dv * dv;
     let t_span = &mut row.t[chord.first..=chord.last];
     let sphere_span = &mut row.sphere[chord.first..=chord.last];
@@ -233,9 +223,8 @@ fn cover_chord_behind<R: Real>(
         if front_t > *t_px {
             continue;
         }
-        let PixelHit { distance_sq, t, .. } = pixel_hit(&disc_in, columns.u(x), dv_sq);
-        if distance_sq <= disc_in.radius_sq
-            && (t < *t_px || (t == *t_px && disc.sphere < *sphere_px))
+        let PixelHit { distance_sq, t } = pixel_hit(disc, columns.u(x), dv_sq);
+        if distance_sq <= disc.radius_sq && (t < *t_px || (t == *t_px && disc.sphere < *sphere_px))
         {
             *t_px = t;
             *sphere_px = disc.sphere;

@@ -4,18 +4,12 @@
 use rayon::prelude::*;
 
 use crate::render::depth_map::quantize_f32;
-use crate::render::{Frame, Precision, View};
+use crate::render::{Frame, View};
 use crate::scene::Scene;
 
 /// Completes a frame from per-pixel t and sphere indices: colour from the sphere's material or
 /// the background, quantised to 8 bits.
-pub(crate) fn frame_from_hits(
-    scene: &Scene,
-    view: &View,
-    t: Vec<f64>,
-    sphere: Vec<u32>,
-    precision: Precision,
-) -> Frame {
+pub(crate) fn frame_from_hits(scene: &Scene, view: &View, t: Vec<f64>, sphere: Vec<u32>) -> Frame {
     // Colours per material (few), looked up per pixel: the cost follows the pixels, not the
     // sphere count.
     let material_rgb: Vec<[u8; 3]> = scene
@@ -41,7 +35,6 @@ pub(crate) fn frame_from_hits(
         colour,
         t,
         sphere,
-        precision,
         depth_grey: None,
         disc_tests: 0,
     }
