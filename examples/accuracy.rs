@@ -384,6 +384,8 @@ fn write_report(sweeps: &[Sweep], results: &[Vec<Vec<Errors>>]) -> String {
         }
         let _ = writeln!(md);
     }
+    let _ = writeln!(md);
+
     for (sweep, per_value) in sweeps.iter().zip(results) {
         let _ = writeln!(md, "## {}\n", sweep.title);
         let _ = write!(md, "| {} |", sweep.parameter);
