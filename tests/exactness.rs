@@ -64,14 +64,9 @@ fn view_of(scene: &Scene, width_px: u32, height_px: u32) -> View {
     view
 }
 
-/// Compares `frame` with the reference on every pixel, allowing `extra_levels` of grey error on top
-/// of the f64 bound; returns (pixels compared, pixels hit).
-fn compare_with_reference(
-    scene: &Scene,
-    view: &View,
-    frame: &Frame,
-    extra_levels: f64,
-) -> (usize, usize) {
+/// Compares `frame` with the reference on every pixel, within the f64 bounds; returns (pixels
+/// compared, pixels hit).
+fn compare_with_reference(scene: &Scene, view: &View, frame: &Frame) -> (usize, usize) {
     let reference = HighPrecision::new(scene, view).unwrap();
     let range = view.depth_range;
     let (mut compared, mut hits, mut depth_checked) = (0, 0, 0);
@@ -103,7 +98,7 @@ fn compare_with_reference(
                 }
                 let grey_error = (range.grey(frame.t[index]) - range.grey(t)).abs() * 255.0;
                 assert!(
-                    grey_error <= level_bound + extra_levels,
+                    grey_error <= level_bound,
                     "pixel ({x}, {y_up}): grey off by {grey_error} levels (bound {level_bound}), \
                      t {} vs {t}",
                     frame.t[index]
@@ -122,7 +117,7 @@ fn compare_with_reference(
 /// (most pixels compared, some hit, some missed).
 fn assert_exact(name: &str, scene: &Scene, view: &View) {
     let frame = render(scene, view).unwrap();
-    let (compared, hits) = compare_with_reference(scene, view, &frame, 0.0);
+    let (compared, hits) = compare_with_reference(scene, view, &frame);
     let total = frame.pixel_count();
     assert!(
         compared * 10 >= total * 9,
@@ -340,7 +335,7 @@ fn seeded_cases_agree_with_the_reference_and_have_no_nan() {
                 "case {case}: t finite iff hit"
             );
         }
-        let (case_compared, case_hits) = compare_with_reference(&scene, &view, &frame, 0.0);
+        let (case_compared, case_hits) = compare_with_reference(&scene, &view, &frame);
         compared += case_compared;
         hits += case_hits;
         pixels += frame.pixel_count();
