@@ -261,8 +261,8 @@ fn reference_images_report() -> Result<String, Box<dyn std::error::Error>> {
     let _ = writeln!(md, "\n## Against the course's reference images\n");
     let _ = writeln!(
         md,
-        "Each course scene rendered at 200×200 with its command line's depth range (exact mode) \
-         and compared with the course's published images in `tests/reference/`, pixel by pixel \
+        "Each course scene rendered at 200×200 with its command line's depth range (one sample \
+         per pixel) and compared with the course's published images in `tests/reference/`, pixel by pixel \
          (40,000 pixels). SPEC.md allows no colour difference and at most 0.1% (40) depth pixels \
          off by one grey level; `tests/reference_images.rs` asserts that through the binary.\n"
     );

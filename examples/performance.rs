@@ -104,7 +104,7 @@ struct Dense {
     count: usize,
     /// Discs over a pixel on average (their areas in pixels, summed, over the pixels).
     depth_complexity: f64,
-    /// Pixel–disc tests the f64 render made per pixel.
+    /// Pixel–disc tests the render made per pixel.
     tests_per_pixel: f64,
     render_ms: f64,
     viewer_ms: f64,

@@ -39,9 +39,12 @@ requests=(
     echo "| $name: \`${arguments//$work\//}\` | $bound | $peak | $within |"
   done
   echo
-  echo "The bound (src/render/memory.rs): 96 MB for the program, 128 B per sphere, 23 B per pixel"
-  echo "for the frame, plus the larger of 11 B per pixel for the output being written and, when"
-  echo "supersampling, 7 B per pixel and one tile of samples per thread (at most 32 MB, or about"
+  # The constants as the source states them (the prose once fell behind them).
+  constant() { sed -n "s/^pub const $1: u64 = \([0-9]*\);/\1/p" src/render/memory.rs; }
+  echo "The bound (src/render/memory.rs): 96 MB for the program, $(constant SPHERE_BYTES) B per sphere,"
+  echo "$(constant FRAME_BYTES_PER_PIXEL) B per pixel for the frame and, supersampling, $(constant SUPERSAMPLED_BYTES_PER_PIXEL) B per pixel more,"
+  echo "plus the larger of $(constant OUTPUT_BYTES_PER_PIXEL) B per pixel for the outputs being written and, when"
+  echo "supersampling, one tile of samples per thread (at most 32 MB, or about"
   echo "57 MB at 1024 samples with the widest filter); loading a file takes its bytes plus the"
   echo "spheres parsed from them."
 } > docs/memory.md

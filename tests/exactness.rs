@@ -1,6 +1,6 @@
 //! Exactness at the extremes. Seeded random cases over magnitudes 1e-8..1e8 check invariants of
-//! the f64 (exact) path against the double-double reference of `render::high_precision`, and one
-//! test per extreme compares exact mode with the reference pixel by pixel.
+//! the renderer (f64) against the double-double reference of `oracle::high_precision`, and one
+//! test per extreme compares the renderer with the reference pixel by pixel.
 //!
 //! Stated bounds:
 //! * a hit point lies on its sphere within `8·ε₆₄·(|w| + r + size)` (w: the centre's distance along
@@ -113,7 +113,7 @@ fn compare_with_reference(scene: &Scene, view: &View, frame: &Frame) -> (usize, 
     (compared, hits)
 }
 
-/// Renders in exact mode and checks it against the reference, requiring a meaningful picture
+/// Renders one sample per pixel and checks it against the reference, requiring a meaningful picture
 /// (most pixels compared, some hit, some missed).
 fn assert_exact(name: &str, scene: &Scene, view: &View) {
     let frame = render(scene, view).unwrap();

@@ -47,10 +47,11 @@ pub fn render_bound_bytes(
     let spheres = sphere_count as u64 * SPHERE_BYTES;
     let frame = pixels * FRAME_BYTES_PER_PIXEL;
     let output = pixels * OUTPUT_BYTES_PER_PIXEL;
-    let supersampling = sampling.map_or(0, |sampling| {
-        pixels * SUPERSAMPLED_BYTES_PER_PIXEL + working_bytes(sampling, threads) as u64
-    });
-    BASELINE_BYTES + spheres + frame + supersampling.max(output)
+    // The supersampled grey and colour stay while the outputs are encoded; the samples' working
+    // memory is gone by then.
+    let supersampled = sampling.map_or(0, |_| pixels * SUPERSAMPLED_BYTES_PER_PIXEL);
+    let working = sampling.map_or(0, |sampling| working_bytes(sampling, threads) as u64);
+    BASELINE_BYTES + spheres + frame + supersampled + working.max(output)
 }
 
 /// The bound, in bytes, of loading a scene file of `file_bytes` bytes: the bytes, and the

@@ -36,7 +36,8 @@ fn rasterise_band(
     }
 }
 
-/// [`rasterise_band`] in file order, row by row (bands with few discs).
+/// [`rasterise_band`] in file order, row by row (frames with few discs, or fewer than six over a
+/// pixel on average).
 fn rasterise_band_in_order(
     band_discs: &[BandDisc],
     grid: &PixelGrid,
