@@ -246,7 +246,7 @@ pub fn compare_quality(
     };
     Ok(ComparisonPixels {
         source: CompareSource::Quality(QualityFigures {
-            quality: describe_quality(quality),
+            quality: quality.describe(),
             frame_ms,
             exact_ms,
             mean_error_levels,
@@ -261,13 +261,6 @@ pub fn compare_quality(
         diagnosis: Vec::new(),
         ambiguous: false,
     })
-}
-
-/// A quality in words: its sampling.
-pub(crate) fn describe_quality(quality: &Quality) -> String {
-    quality
-        .sampling
-        .map_or_else(|| "1 sample".to_owned(), |sampling| sampling.describe())
 }
 
 /// An RGB image as an egui image.

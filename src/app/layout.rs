@@ -146,10 +146,12 @@ impl ViewerApp {
         StatusLine {
             render_ms: shown.map(|s| s.render_ms),
             size_px: shown.map(|s| [s.frame.width_px, s.frame.height_px]),
-            stage: shown.map(|s| match s.quality.sampling {
-                _ if self.showing_preview() => "preview (1 sample)".to_owned(),
-                Some(sampling) => sampling.describe(),
-                None => "1 sample".to_owned(),
+            stage: shown.map(|s| {
+                if self.showing_preview() {
+                    "preview (1 sample)".to_owned()
+                } else {
+                    s.quality.describe()
+                }
             }),
             magnification: self.magnifier.zoom,
             sphere_count: self.loaded.scene.spheres.len(),

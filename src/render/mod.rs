@@ -35,6 +35,15 @@ pub struct Quality {
     pub sampling: Option<Sampling>,
 }
 
+impl Quality {
+    /// In words, for the status bar and the Compare section: "1 sample" or the sampling's own
+    /// description.
+    pub fn describe(&self) -> String {
+        self.sampling
+            .map_or_else(|| "1 sample".to_owned(), |sampling| sampling.describe())
+    }
+}
+
 /// Renders `scene` through `view`, one sample at each pixel centre: colour, t and sphere per pixel.
 /// Deterministic: the same input gives the same frame, whatever the thread count.
 pub fn render(scene: &Scene, view: &View) -> Result<Frame, ViewError> {
