@@ -390,3 +390,36 @@ fn culled_front_to_back_path_matches_brute_force_and_keeps_ties_in_file_order() 
     // Every pixel is covered (the comparison compared something).
     assert!(fast.sphere.iter().all(|&s| s != NO_HIT));
 }
+
+#[test]
+fn a_far_sphere_seen_only_beside_a_covered_half_is_drawn() {
+    // Dense frames are drawn in passes, front to back, and a later pass drops discs hidden behind
+    // what the earlier ones drew. Here, one pixel per world unit: a wall of near spheres (the
+    // first pass), over seven deep, covers one half of the image exactly, up to the middle column
+    // but one; a far sphere (a later pass) sits on the middle, behind the wall on one side and in
+    // the open on the other. Only that half of it can show, and it must.
+    let mut spheres = Vec::new();
+    for column in 0..30 {
+        for row in 0..64 {
+            let x = -4.6 - 2.0 * f64::from(column);
+            let y = -63.0 + 2.0 * f64::from(row);
+            spheres.push(([x, y, 0.0], 4.5, 0));
+        }
+    }
+    let far = spheres.len();
+    spheres.push(([0.0, 0.0, -50.0], 10.0, 1));
+    let mut scene = one_sphere_scene([0.0, 0.0, 10.0], &spheres);
+    scene.camera.size_world = 128.0;
+    let view = view_of(&scene, 128, 128);
+    let fast = render(&scene, &view).unwrap();
+    let oracle = render_reference(&scene, &view).unwrap();
+    let far_pixels = |frame: &Frame| frame.sphere.iter().filter(|&&s| s as usize == far).count();
+    // About half the far disc's π·10² pixels.
+    assert!(
+        (140..=175).contains(&far_pixels(&oracle)),
+        "{}",
+        far_pixels(&oracle)
+    );
+    assert_eq!(far_pixels(&fast), far_pixels(&oracle));
+    assert_frames_agree(&scene, &view, &fast, &oracle);
+}

@@ -134,7 +134,8 @@ pub(crate) const NO_HIT_MARK: [u8; 3] = [24, 36, 96];
 /// 16-bit quantisation by truncation, `clamp(floor(c·65535), 0, 65535)`, for 16-bit depth PNGs.
 /// NaN maps to 0.
 pub(crate) fn quantize_u16(c: f64) -> u16 {
-    let scaled = (c * 65535.0).floor();
+    // Truncation is floor for the values kept (≥ 0), without a library call per pixel.
+    let scaled = c * 65535.0;
     if scaled >= 65535.0 {
         u16::MAX
     } else if scaled >= 0.0 {
@@ -147,7 +148,8 @@ pub(crate) fn quantize_u16(c: f64) -> u16 {
 /// 8-bit quantisation by truncation, `clamp(floor(c·255), 0, 255)`, for colour channels (f32, as the
 /// course computed them). NaN maps to 0.
 pub(crate) fn quantize_f32(c: f32) -> u8 {
-    let scaled = (c * 255.0).floor();
+    // Truncation is floor for the values kept (≥ 0), without a library call per pixel.
+    let scaled = c * 255.0;
     if scaled >= 255.0 {
         255
     } else if scaled >= 0.0 {
@@ -159,7 +161,8 @@ pub(crate) fn quantize_f32(c: f32) -> u8 {
 
 /// 8-bit quantisation by truncation of an f64 value in [0, 1]. NaN maps to 0.
 pub(crate) fn quantize_f64(c: f64) -> u8 {
-    let scaled = (c * 255.0).floor();
+    // Truncation is floor for the values kept (≥ 0), without a library call per pixel.
+    let scaled = c * 255.0;
     if scaled >= 255.0 {
         255
     } else if scaled >= 0.0 {

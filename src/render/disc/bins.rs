@@ -46,7 +46,7 @@ impl Bands {
 
 /// Image rows (top row first) `[first, last]` whose centres a disc may cover; conservative by
 /// one row.
-fn row_span(grid: &PixelGrid, disc: &Disc) -> Option<(usize, usize)> {
+pub(super) fn row_span(grid: &PixelGrid, disc: &Disc) -> Option<(usize, usize)> {
     let radius = disc.radius_sq.sqrt();
     let inverse_pixel = 1.0 / grid.pixel_size_world;
     // y_up (from the bottom) of a screen v: v = (y_up + ½ − height/2)·s.

@@ -18,12 +18,16 @@
 //! * this module: the projected [`Disc`] and the projection ([`project_discs`])
 //! * [`bins`]: listing each disc in the bands of rows it touches; row and column spans
 //! * [`chord`]: the per-pixel primitives (a disc's test at a pixel, its chord on a row)
-//! * [`occlusion`]: dense scenes drawn front to back, hidden discs skipped
+//! * [`depth_order`]: discs sorted front to back, and the nearest ones that cover the image
+//! * [`coarse_depth`]: discs behind what the nearest ones drew, culled frame-wide
+//! * [`occlusion`]: dense scenes drawn front to back, hidden discs skipped per band
 //! * [`raster`]: filling a band's pixels, and a whole frame
 //! * [`shade`]: colours from the visible spheres
 
 mod bins;
 mod chord;
+mod coarse_depth;
+mod depth_order;
 mod occlusion;
 mod raster;
 mod shade;
@@ -66,7 +70,23 @@ impl Disc {
 /// Projects every sphere of `scene` into the camera space of `view` (basis from
 /// [`View::validate`]), in file order.
 pub fn project_discs(scene: &Scene, view: &View, basis: &CameraBasis) -> Vec<Disc> {
+    let mut discs = Vec::new();
+    project_discs_into(scene, view, basis, &mut discs);
+    discs
+}
+
+/// [`project_discs`] into `discs`, reusing its memory (released when it holds more than twice
+/// what the scene needs).
+pub(crate) fn project_discs_into(
+    scene: &Scene,
+    view: &View,
+    basis: &CameraBasis,
+    discs: &mut Vec<Disc>,
+) {
     use rayon::prelude::*;
+    if discs.capacity() > 2 * scene.spheres.len() {
+        *discs = Vec::new();
+    }
     scene
         .spheres
         .par_iter()
@@ -83,7 +103,7 @@ pub fn project_discs(scene: &Scene, view: &View, basis: &CameraBasis) -> Vec<Dis
                 sphere: index,
             }
         })
-        .collect()
+        .collect_into_vec(discs);
 }
 
 /// The visible hit at screen (u, v) among `discs`: (t, sphere), smallest t, first in file order

@@ -1,18 +1,12 @@
 //! Occlusion culling for dense scenes: discs drawn front to back, and a disc hidden behind what
 //! is already drawn in a band skipped (one level of hierarchical z per band).
 
-use rayon::prelude::*;
-
-use super::Disc;
 use super::bins::column_span;
 use super::chord::{BandDisc, Chord, Columns, PixelHit, RowOut, chord_on_row, pixel_hit};
 use crate::geometry::camera::PixelGrid;
 
 /// Columns per occlusion tile (a tile is this many columns of a band's rows).
 const TILE_COLUMNS: usize = 16;
-
-/// Below this many discs in a band, occlusion culling does not pay for its sort.
-pub(super) const CULL_MIN_DISCS: usize = 64;
 
 /// The farthest t among the pixels of `tile` in a band of rows `width` long; stops at the first
 /// uncovered pixel (+∞).
@@ -34,7 +28,8 @@ fn farthest_in_tile(t: &[f64], width: usize, tile: usize) -> f64 {
 /// hierarchical z of one level). Discs come front to back (by `w − r`); a disc whose nearest t is
 /// beyond the farthest t of every tile it touches cannot change a pixel and is skipped, so a frame
 /// costs what is visible, not what piles up behind it. A tile's farthest t is recomputed only when
-/// a disc was drawn over it and another asks.
+/// a disc was drawn over it and another asks (and at first: the band may already hold discs
+/// drawn in an earlier pass).
 struct Occlusion {
     farthest_t: Vec<f64>,
     stale: Vec<bool>,
@@ -45,7 +40,7 @@ impl Occlusion {
         let tiles = width.div_ceil(TILE_COLUMNS);
         Self {
             farthest_t: vec![f64::INFINITY; tiles],
-            stale: vec![false; tiles],
+            stale: vec![true; tiles],
         }
     }
 
@@ -83,87 +78,6 @@ impl Occlusion {
         }
     }
 }
-
-/// `discs` sorted by their nearest t (`w − r`), front to back, in parallel.
-///
-/// The order only decides how much is culled, never the picture (a hidden disc stays hidden, and
-/// ties go by file index whatever the order), so an approximate order does: a counting sort into
-/// [`DEPTH_BUCKETS`] slices of the depth range, file order within a slice. Linear in the discs.
-pub(super) fn front_to_back(discs: &[Disc]) -> Vec<Disc> {
-    let fronts: Vec<f64> = discs
-        .par_iter()
-        .map(|disc| disc.w - disc.radius_sq.sqrt())
-        .collect();
-    let (nearest, farthest) = fronts
-        .par_iter()
-        .filter(|front| front.is_finite())
-        .fold(
-            || (f64::INFINITY, f64::NEG_INFINITY),
-            |(low, high), &front| (low.min(front), high.max(front)),
-        )
-        .reduce(
-            || (f64::INFINITY, f64::NEG_INFINITY),
-            |a, b| (a.0.min(b.0), a.1.max(b.1)),
-        );
-    let span = farthest - nearest;
-    if !(span > 0.0 && span.is_finite()) {
-        return discs.to_vec();
-    }
-    let scale = DEPTH_BUCKETS as f64 / span;
-    // NaN and +∞ go last, −∞ first (the saturating conversion).
-    let bucket_of = |front: f64| {
-        let slice = if front.is_nan() {
-            f64::INFINITY
-        } else {
-            (front - nearest) * scale
-        };
-        (slice as usize).min(DEPTH_BUCKETS - 1)
-    };
-    let buckets: Vec<u16> = fronts.par_iter().map(|&f| bucket_of(f) as u16).collect();
-    let mut starts = vec![0usize; DEPTH_BUCKETS + 1];
-    for &bucket in &buckets {
-        starts[usize::from(bucket) + 1] += 1;
-    }
-    for bucket in 0..DEPTH_BUCKETS {
-        starts[bucket + 1] += starts[bucket];
-    }
-    let mut sorted = vec![
-        Disc {
-            u: 0.0,
-            v: 0.0,
-            w: 0.0,
-            radius_sq: 0.0,
-            sphere: 0,
-        };
-        discs.len()
-    ];
-    for (disc, &bucket) in discs.iter().zip(&buckets) {
-        let slot = &mut starts[usize::from(bucket)];
-        sorted[*slot] = *disc;
-        *slot += 1;
-    }
-    sorted
-}
-
-/// Below this many discs over a pixel on average, sorting costs more than culling saves (measured
-/// with `examples/performance.rs`: the random scenes of 100,000 and 1,000,000 spheres lie about
-/// three deep and were slower culled; the dense ones lie 10 and 100 deep and were 3 to 4× faster).
-pub(super) const CULL_MIN_DISCS_PER_PIXEL: f64 = 6.0;
-
-/// How many discs lie over a pixel on average: their areas (each at most the image's) summed,
-/// over the image's area.
-pub(super) fn discs_per_pixel(discs: &[Disc], grid: &PixelGrid) -> f64 {
-    let pixels = f64::from(grid.width_px) * f64::from(grid.height_px);
-    let pixel_area = grid.pixel_size_world * grid.pixel_size_world;
-    let covered: f64 = discs
-        .par_iter()
-        .map(|disc| (std::f64::consts::PI * disc.radius_sq / pixel_area).min(pixels))
-        .sum();
-    covered / pixels
-}
-
-/// Slices of the depth range the front-to-back order sorts discs into.
-const DEPTH_BUCKETS: usize = 4096;
 
 /// A band (rows from `first_row`, its t and sphere per pixel) with occlusion culling: discs front
 /// to back, each drawn on all its rows of the band unless [`Occlusion`] shows it hidden.

@@ -9,10 +9,9 @@ use super::bins::{BAND_ROWS, bin_discs};
 use super::chord::{
     BandDisc, Chord, Columns, PixelHit, RowOut, chord_on_row, gather_band_discs, pixel_hit,
 };
-use super::occlusion::{
-    CULL_MIN_DISCS, CULL_MIN_DISCS_PER_PIXEL, discs_per_pixel, front_to_back,
-    rasterise_band_front_to_back,
-};
+use super::coarse_depth::CoarseDepth;
+use super::depth_order::{CULL_MIN_DISCS, CULL_MIN_DISCS_PER_PIXEL, Passes, discs_per_pixel};
+use super::occlusion::rasterise_band_front_to_back;
 use super::shade::frame_from_hits;
 use crate::geometry::camera::PixelGrid;
 use crate::render::{Frame, NO_HIT, View};
@@ -87,7 +86,18 @@ fn cover_chord_exact(disc: &Disc, columns: Columns, chord: Chord, row: &mut RowO
     }
 }
 
+/// How many times over the first pass's discs (the nearest) cover the image; each later pass
+/// covers twice as many times as the one before.
+const FIRST_PASS_LAYERS: f64 = 4.0;
+
 /// Renders one centre sample per pixel from projected `discs`.
+///
+/// Dense frames (many discs, [`CULL_MIN_DISCS_PER_PIXEL`] or more over a pixel on average) go in
+/// passes of depth slices, front to back: the first draws the nearest discs that cover the image
+/// [`FIRST_PASS_LAYERS`] times; each later one draws the next slices, twice as many layers, but
+/// only the discs that the coarse depth of what is drawn so far does not hide ([`CoarseDepth`]).
+/// Within a pass, bands cull again, finer. Ties still go to the first sphere in the file
+/// whatever the order.
 pub(crate) fn rasterise_frame(
     scene: &Scene,
     view: &View,
@@ -95,18 +105,6 @@ pub(crate) fn rasterise_frame(
     discs: &[Disc],
 ) -> Frame {
     let grid = *grid;
-    // Many discs: bands list them front to back and cull what is hidden (ties still go to the
-    // first sphere in the file).
-    let sorted;
-    let (discs, front_to_back_order) = if discs.len() >= CULL_MIN_DISCS
-        && discs_per_pixel(discs, &grid) >= CULL_MIN_DISCS_PER_PIXEL
-    {
-        sorted = front_to_back(discs);
-        (sorted.as_slice(), true)
-    } else {
-        (discs, false)
-    };
-    let bands = bin_discs(discs, &grid);
     let width = view.width_px as usize;
     let height = view.height_px as usize;
     // "No hit" everywhere, written in parallel (a `vec![…; n]` fills serially).
@@ -118,23 +116,49 @@ pub(crate) fn rasterise_frame(
         .into_par_iter()
         .map(|_| NO_HIT)
         .collect();
-    let disc_tests = t
-        .par_chunks_mut(width * BAND_ROWS)
+    let mut out = (t.as_mut_slice(), sphere.as_mut_slice());
+    let dense =
+        discs.len() >= CULL_MIN_DISCS && discs_per_pixel(discs, &grid) >= CULL_MIN_DISCS_PER_PIXEL;
+    let passes = dense
+        .then(|| Passes::of(discs, &grid, FIRST_PASS_LAYERS))
+        .flatten();
+    let disc_tests = match passes {
+        None => rasterise_discs(discs, &grid, dense, &mut out),
+        Some(mut passes) => {
+            let mut disc_tests = 0;
+            for pass in 0..passes.count() {
+                let discs = if pass == 0 {
+                    passes.take(pass, |_| true)
+                } else {
+                    let coarse = CoarseDepth::of(out.0, &grid);
+                    passes.take(pass, |disc| coarse.may_show(disc))
+                };
+                disc_tests += rasterise_discs(&discs, &grid, true, &mut out);
+            }
+            disc_tests
+        }
+    };
+    let mut frame = frame_from_hits(scene, view, t, sphere);
+    frame.disc_tests = disc_tests;
+    frame
+}
+
+/// Draws `discs` into `t` and `sphere` (kept where already nearer), band by band in parallel;
+/// `front_to_back` when they come in that order, to cull per band. Returns the pixel–disc tests.
+fn rasterise_discs(
+    discs: &[Disc],
+    grid: &PixelGrid,
+    front_to_back: bool,
+    (t, sphere): &mut (&mut [f64], &mut [u32]),
+) -> u64 {
+    let width = grid.width_px as usize;
+    let bands = bin_discs(discs, grid);
+    t.par_chunks_mut(width * BAND_ROWS)
         .zip(sphere.par_chunks_mut(width * BAND_ROWS))
         .enumerate()
         .map(|(band, out)| {
             let first_row = band * BAND_ROWS;
-            rasterise_band(
-                discs,
-                bands.band(band),
-                &grid,
-                first_row,
-                out,
-                front_to_back_order,
-            )
+            rasterise_band(discs, bands.band(band), grid, first_row, out, front_to_back)
         })
-        .sum::<u64>();
-    let mut frame = frame_from_hits(scene, view, t, sphere);
-    frame.disc_tests = disc_tests;
-    frame
+        .sum()
 }
