@@ -396,8 +396,10 @@ fn a_far_sphere_seen_only_beside_a_covered_half_is_drawn() {
     // Dense frames are drawn in passes, front to back, and a later pass drops discs hidden behind
     // what the earlier ones drew. Here, one pixel per world unit: a wall of near spheres (the
     // first pass), over seven deep, covers one half of the image exactly, up to the middle column
-    // but one; a far sphere (a later pass) sits on the middle, behind the wall on one side and in
-    // the open on the other. Only that half of it can show, and it must.
+    // but one; a far sphere (a later pass) straddles the middle, behind the wall on one side and in
+    // the open on the other. Only that side of it can show, and it must. Its centre lies behind
+    // the wall, so everything drawn around the centre is nearer: only its size says it reaches
+    // the open side.
     let mut spheres = Vec::new();
     for column in 0..30 {
         for row in 0..64 {
@@ -407,19 +409,59 @@ fn a_far_sphere_seen_only_beside_a_covered_half_is_drawn() {
         }
     }
     let far = spheres.len();
-    spheres.push(([0.0, 0.0, -50.0], 10.0, 1));
+    spheres.push(([-20.0, 0.0, -50.0], 40.0, 1));
     let mut scene = one_sphere_scene([0.0, 0.0, 10.0], &spheres);
     scene.camera.size_world = 128.0;
     let view = view_of(&scene, 128, 128);
     let fast = render(&scene, &view).unwrap();
     let oracle = render_reference(&scene, &view).unwrap();
     let far_pixels = |frame: &Frame| frame.sphere.iter().filter(|&&s| s as usize == far).count();
-    // About half the far disc's π·10² pixels.
+    // The segment of the far disc (radius 40) beyond a chord 20 from its centre: about 983
+    // pixels.
     assert!(
-        (140..=175).contains(&far_pixels(&oracle)),
+        (900..=1000).contains(&far_pixels(&oracle)),
         "{}",
         far_pixels(&oracle)
     );
     assert_eq!(far_pixels(&fast), far_pixels(&oracle));
+    assert_frames_agree(&scene, &view, &fast, &oracle);
+}
+
+#[test]
+fn a_later_pass_shows_where_the_earlier_one_curves_away() {
+    // Culling compares a disc's nearest t with the farthest t drawn around it, not the nearest:
+    // four big spheres (each four times over, so the frame is dense) cover the whole image and
+    // are drawn first; small spheres behind their fronts come in a later pass, and those in the
+    // middle, where the big ones curve away, are nearer than them there and must show.
+    let mut spheres = Vec::new();
+    for _copy in 0..4 {
+        for (x, y) in [(-32.0, -32.0), (32.0, -32.0), (-32.0, 32.0), (32.0, 32.0)] {
+            spheres.push(([x, y, 0.0], 48.0, 0));
+        }
+    }
+    let first_small = spheres.len();
+    for row in 0..9 {
+        for column in 0..9 {
+            let (x, y) = (
+                -64.0 + 16.0 * f64::from(column),
+                -64.0 + 16.0 * f64::from(row),
+            );
+            spheres.push(([x, y, 20.0], 3.0, 1));
+        }
+    }
+    let mut scene = one_sphere_scene([0.0, 0.0, 200.0], &spheres);
+    scene.camera.size_world = 128.0;
+    let view = view_of(&scene, 128, 128);
+    let fast = render(&scene, &view).unwrap();
+    let oracle = render_reference(&scene, &view).unwrap();
+    let small_pixels = |frame: &Frame| {
+        frame
+            .sphere
+            .iter()
+            .filter(|&&s| s != NO_HIT && s as usize >= first_small)
+            .count()
+    };
+    assert!(small_pixels(&oracle) >= 64, "{}", small_pixels(&oracle));
+    assert_eq!(small_pixels(&fast), small_pixels(&oracle));
     assert_frames_agree(&scene, &view, &fast, &oracle);
 }

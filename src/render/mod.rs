@@ -70,8 +70,8 @@ pub(crate) fn render_with_progress(
     let basis = view.validate()?;
     let grid = view.grid();
     let mut discs = PROJECTED.take();
-    disc::project_discs_into(scene, view, &basis, &mut discs);
-    let mut frame = disc::rasterise_frame(scene, view, &grid, &discs);
+    let depths = disc::project_discs_into(scene, view, &basis, &mut discs);
+    let mut frame = disc::rasterise_frame(scene, view, &grid, &discs, &depths);
     if let Some(sampling) = &quality.sampling {
         let supersampled =
             sampling::supersample(scene, &discs, &grid, view.depth_range, sampling, progress);

@@ -14,6 +14,56 @@ const TILE_PX: usize = 8;
 /// Tiles per side of a block.
 const BLOCK_TILES: usize = 8;
 
+/// Cells across the longer side of the image: discs are grouped by the cell of their centre, and
+/// a group wholly behind what is drawn around its cell is dropped without a look at its discs.
+const CELLS: usize = 16;
+
+/// Square cells of the screen that group discs by their centre.
+#[derive(Clone, Copy)]
+pub(super) struct Cells {
+    /// Pixels per side, a whole number of tiles.
+    pub(super) px: usize,
+    pub(super) across: usize,
+    pub(super) down: usize,
+    /// Column coordinate of screen u = 0: `width/2 − ½`.
+    centre_column: f64,
+    /// Row coordinate (top row 0) of screen v = 0: `height/2 − ½`.
+    centre_row: f64,
+    inverse_pixel: f64,
+    /// The largest r² for which a disc centred in a cell reaches no further than the cells
+    /// around it (its radius and a pixel of margin within a cell's side).
+    pub(super) reaching_neighbours_radius_sq: f64,
+}
+
+impl Cells {
+    pub(super) fn of(grid: &PixelGrid) -> Self {
+        let (width, height) = (grid.width_px as usize, grid.height_px as usize);
+        let px = width.max(height).div_ceil(CELLS).next_multiple_of(TILE_PX);
+        let reach_world = (px as f64 - 1.0) * grid.pixel_size_world;
+        Self {
+            px,
+            across: width.div_ceil(px),
+            down: height.div_ceil(px),
+            centre_column: 0.5 * f64::from(grid.width_px) - 0.5,
+            centre_row: 0.5 * f64::from(grid.height_px) - 0.5,
+            inverse_pixel: 1.0 / grid.pixel_size_world,
+            reaching_neighbours_radius_sq: reach_world * reach_world,
+        }
+    }
+
+    /// The cell of `disc`'s centre, clamped to the image's cells (NaN: the first).
+    pub(super) fn of_disc(&self, disc: &Disc) -> usize {
+        let column = disc.u * self.inverse_pixel + self.centre_column;
+        let row = self.centre_row - disc.v * self.inverse_pixel;
+        let side = self.px as f64;
+        let cell = |at: f64, count: usize| {
+            let cell = if at > 0.0 { (at / side) as usize } else { 0 };
+            cell.min(count - 1)
+        };
+        cell(row, self.down) * self.across + cell(column, self.across)
+    }
+}
+
 /// The farthest t per tile of [`TILE_PX`]² pixels and per block of [`BLOCK_TILES`]² tiles (+∞
 /// where a pixel is still uncovered).
 pub(super) struct CoarseDepth {
@@ -70,6 +120,35 @@ impl CoarseDepth {
             centre_row: 0.5 * f64::from(grid.height_px) - 0.5,
             inverse_pixel: 1.0 / grid.pixel_size_world,
         }
+    }
+
+    /// Per cell of `cells`: the farthest t over the cell and the cells around it (what a disc
+    /// centred in the cell, no larger than a cell, can reach).
+    pub(super) fn farthest_around_cells(&self, cells: &Cells) -> Vec<f64> {
+        let tiles_per_cell = cells.px / TILE_PX;
+        let mut farthest = vec![f64::NEG_INFINITY; cells.across * cells.down];
+        for (tile_row, tiles) in self.tile_farthest_t.chunks(self.tiles_across).enumerate() {
+            let cell_row =
+                &mut farthest[tile_row / tiles_per_cell * cells.across..][..cells.across];
+            for (cell, tiles) in cell_row.iter_mut().zip(tiles.chunks(tiles_per_cell)) {
+                *cell = tiles
+                    .iter()
+                    .fold(*cell, |far, &t| if t > far { t } else { far });
+            }
+        }
+        let at = |row: usize, column: usize| farthest[row * cells.across + column];
+        let mut around = vec![f64::NEG_INFINITY; farthest.len()];
+        for row in 0..cells.down {
+            for column in 0..cells.across {
+                let rows = row.saturating_sub(1)..=(row + 1).min(cells.down - 1);
+                let columns = column.saturating_sub(1)..=(column + 1).min(cells.across - 1);
+                around[row * cells.across + column] = rows
+                    .flat_map(|r| columns.clone().map(move |c| (r, c)))
+                    .map(|(r, c)| at(r, c))
+                    .fold(f64::NEG_INFINITY, |far, t| if t > far { t } else { far });
+            }
+        }
+        around
     }
 
     /// Whether `disc` may be as near as a pixel it can reach: false only when its nearest t lies

@@ -1,14 +1,16 @@
 //! Depth order for dense scenes: discs split into passes of depth slices, front to back, each
 //! pass covering the image twice as many times over as the one before, so that a pass can be
-//! culled against what the passes before it drew.
+//! culled against what the passes before it drew ([`CoarseDepth`]) — whole cells of the screen at
+//! once, then disc by disc.
 //!
 //! The order only decides how much is culled, never the picture (a hidden disc stays hidden, and
 //! ties go by file index whatever the order), so an approximate order does: a counting sort into
-//! [`DEPTH_SLICES`] slices of the depth range, file order within a slice. Linear in the discs.
+//! [`DEPTH_SLICES`] slices of the depth range. Linear in the discs.
 
 use rayon::prelude::*;
 
 use super::Disc;
+use super::coarse_depth::{Cells, CoarseDepth};
 use crate::geometry::camera::PixelGrid;
 
 /// Slices of the depth range the front-to-back order sorts discs into.
@@ -25,22 +27,11 @@ pub(super) const CULL_MIN_DISCS_PER_PIXEL: f64 = 6.0;
 /// Below this many discs in a frame, occlusion culling does not pay for its sort.
 pub(super) const CULL_MIN_DISCS: usize = 64;
 
-/// How many discs lie over a pixel on average: their areas on the image (each at most the image's) summed,
-/// over the image's area.
-pub(super) fn discs_per_pixel(discs: &[Disc], grid: &PixelGrid) -> f64 {
-    let pixels = f64::from(grid.width_px) * f64::from(grid.height_px);
-    discs
-        .par_iter()
-        .map(|disc| covered_pixels(disc, grid, pixels))
-        .sum::<f64>()
-        / pixels
-}
-
-/// The pixels `disc` may cover: its area in pixels, at most the image's `pixels`, and none when
-/// its bounding square lies off the image (zoomed-in views leave most discs off it).
-fn covered_pixels(disc: &Disc, grid: &PixelGrid, pixels: f64) -> f64 {
+/// The pixels `disc` (radius `radius_px` in pixels) may cover: its area, at most the image's
+/// `pixels`, and none when its bounding square lies off the image (zoomed-in views leave most
+/// discs off it).
+fn covered_pixels(disc: &Disc, radius_px: f64, grid: &PixelGrid, pixels: f64) -> f64 {
     let inverse_pixel = 1.0 / grid.pixel_size_world;
-    let radius_px = disc.radius_sq.sqrt() * inverse_pixel;
     let (half_width, half_height) = (
         0.5 * f64::from(grid.width_px),
         0.5 * f64::from(grid.height_px),
@@ -62,43 +53,120 @@ pub(super) fn front_t(disc: &Disc) -> f64 {
     disc.w - disc.radius_sq.sqrt()
 }
 
-/// A frame's discs split into passes front to back: per chunk of the file, per pass, the discs
-/// in file order with their depth slices.
-pub(super) struct Passes {
-    count: usize,
-    chunks: Vec<ChunkPasses>,
+/// How a frame's discs are drawn.
+pub(super) enum Plan {
+    /// In file order, no culling: few discs, or fewer than [`CULL_MIN_DISCS_PER_PIXEL`] over a
+    /// pixel.
+    FileOrder,
+    /// Dense, but all at one depth: any order, culled per band.
+    AnyOrder,
+    /// Dense: in passes, front to back.
+    Passes(Passes),
 }
 
-/// One chunk's discs by pass.
-struct ChunkPasses {
-    discs: Vec<Vec<Disc>>,
-    slices: Vec<Vec<u16>>,
+impl Plan {
+    /// The plan for `discs` (with their `depth`) on `grid`; with passes, the first covers the
+    /// image `first_layers` times over.
+    pub(super) fn of(discs: &[Disc], depth: &Depths, grid: &PixelGrid, first_layers: f64) -> Self {
+        let pixels = f64::from(grid.width_px) * f64::from(grid.height_px);
+        if discs.len() < CULL_MIN_DISCS || depth.covered_px < CULL_MIN_DISCS_PER_PIXEL * pixels {
+            return Self::FileOrder;
+        }
+        let span = depth.farthest_front - depth.nearest_front;
+        if !(span > 0.0 && span.is_finite()) {
+            return Self::AnyOrder;
+        }
+        Self::Passes(Passes::of(
+            discs,
+            grid,
+            first_layers,
+            depth.nearest_front,
+            span,
+        ))
+    }
+}
+
+/// What the plan needs to know of all the discs, gathered as they are projected.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Depths {
+    /// The nearest and farthest of the finite nearest t (`w − r`).
+    nearest_front: f64,
+    farthest_front: f64,
+    /// The pixels the discs cover, summed (each disc at most the image).
+    covered_px: f64,
+}
+
+impl Depths {
+    /// Of no disc.
+    pub(crate) const NONE: Self = Self {
+        nearest_front: f64::INFINITY,
+        farthest_front: f64::NEG_INFINITY,
+        covered_px: 0.0,
+    };
+
+    /// With `disc` on `grid` added.
+    #[inline]
+    pub(crate) fn with(self, disc: &Disc, grid: &PixelGrid) -> Self {
+        let pixels = f64::from(grid.width_px) * f64::from(grid.height_px);
+        let radius = disc.radius_sq.sqrt();
+        let front = disc.w - radius;
+        let covered_px =
+            self.covered_px + covered_pixels(disc, radius / grid.pixel_size_world, grid, pixels);
+        if front.is_finite() {
+            Self {
+                nearest_front: self.nearest_front.min(front),
+                farthest_front: self.farthest_front.max(front),
+                covered_px,
+            }
+        } else {
+            Self { covered_px, ..self }
+        }
+    }
+
+    /// Both together.
+    pub(crate) fn merge(self, other: Self) -> Self {
+        Self {
+            nearest_front: self.nearest_front.min(other.nearest_front),
+            farthest_front: self.farthest_front.max(other.farthest_front),
+            covered_px: self.covered_px + other.covered_px,
+        }
+    }
+}
+
+/// A frame's discs split into passes front to back: per chunk of the file, per pass, the discs
+/// grouped by cell.
+pub(super) struct Passes {
+    count: usize,
+    cells: Cells,
+    chunks: Vec<Vec<PassList>>,
+}
+
+/// One chunk's discs' keys: per disc its (slice, cell); per slice the pixels its discs cover.
+struct ChunkKeys {
+    keys: Vec<(u16, u16)>,
+    covered: Vec<f64>,
+}
+
+/// One chunk's discs of one pass, by cell: cell `c`'s are `discs[starts[c]..starts[c + 1]]`
+/// (file order), with their slices.
+#[derive(Default)]
+struct PassList {
+    discs: Vec<Disc>,
+    slices: Vec<u16>,
+    starts: Vec<usize>,
+    /// Per cell: the nearest t of its discs.
+    nearest_t: Vec<f64>,
+    /// Per cell: the largest r² of its discs.
+    largest_radius_sq: Vec<f64>,
 }
 
 impl Passes {
-    /// `discs` split into passes on `grid`: the first holds the nearest slices whose discs cover
-    /// the image `first_layers` times over, each next one twice as many layers. `None` when the
-    /// nearest t do not span a finite, non-empty range (then any order is as good).
-    pub(super) fn of(discs: &[Disc], grid: &PixelGrid, first_layers: f64) -> Option<Self> {
-        let (nearest, farthest) = discs
-            .par_iter()
-            .map(front_t)
-            .filter(|front| front.is_finite())
-            .fold(
-                || (f64::INFINITY, f64::NEG_INFINITY),
-                |(low, high), front| (low.min(front), high.max(front)),
-            )
-            .reduce(
-                || (f64::INFINITY, f64::NEG_INFINITY),
-                |a, b| (a.0.min(b.0), a.1.max(b.1)),
-            );
-        let span = farthest - nearest;
-        if !(span > 0.0 && span.is_finite()) {
-            return None;
-        }
+    /// `discs` (nearest t from `nearest` over `span`) split into passes on `grid`: the first holds
+    /// the nearest slices whose discs cover the image `first_layers` times over, each next one
+    /// twice as many layers.
+    fn of(discs: &[Disc], grid: &PixelGrid, first_layers: f64, nearest: f64, span: f64) -> Self {
         let scale = DEPTH_SLICES as f64 / span;
-        let slice_of = |disc: &Disc| {
-            let front = front_t(disc);
+        let slice_of = |front: f64| {
             let slice = if front.is_nan() {
                 f64::INFINITY
             } else {
@@ -107,27 +175,34 @@ impl Passes {
             // The saturating conversion puts −∞ first.
             (slice as usize).min(DEPTH_SLICES - 1) as u16
         };
-        let slices: Vec<u16> = discs.par_iter().map(slice_of).collect();
         let pixels = f64::from(grid.width_px) * f64::from(grid.height_px);
-        let covered_px = discs
+        let inverse_pixel = 1.0 / grid.pixel_size_world;
+        let cells = Cells::of(grid);
+        // Per chunk: each disc's slice and cell, and the pixels each slice covers.
+        let chunks: Vec<ChunkKeys> = discs
             .par_chunks(CHUNK)
-            .zip(slices.par_chunks(CHUNK))
-            .map(|(discs, slices)| {
+            .map(|discs| {
                 let mut covered = vec![0.0f64; DEPTH_SLICES];
-                for (disc, &slice) in discs.iter().zip(slices) {
-                    covered[usize::from(slice)] += covered_pixels(disc, grid, pixels);
-                }
-                covered
+                let keys = discs
+                    .iter()
+                    .map(|disc| {
+                        let radius = disc.radius_sq.sqrt();
+                        let slice = slice_of(disc.w - radius);
+                        covered[usize::from(slice)] +=
+                            covered_pixels(disc, radius * inverse_pixel, grid, pixels);
+                        // CELLS² cells fit u16.
+                        (slice, cells.of_disc(disc) as u16)
+                    })
+                    .collect();
+                ChunkKeys { keys, covered }
             })
-            .reduce(
-                || vec![0.0; DEPTH_SLICES],
-                |mut covered, more| {
-                    for (pixels, more) in covered.iter_mut().zip(more) {
-                        *pixels += more;
-                    }
-                    covered
-                },
-            );
+            .collect();
+        let mut covered_px = vec![0.0; DEPTH_SLICES];
+        for chunk in &chunks {
+            for (pixels, more) in covered_px.iter_mut().zip(&chunk.covered) {
+                *pixels += more;
+            }
+        }
         // The pass of each slice.
         let mut pass_of_slice = vec![0u8; DEPTH_SLICES];
         let (mut pass, mut covered, mut wanted) = (0u8, 0.0, first_layers * pixels);
@@ -140,23 +215,54 @@ impl Passes {
             }
         }
         let count = usize::from(pass_of_slice[DEPTH_SLICES - 1]) + 1;
+        let cell_count = cells.across * cells.down;
         let chunks = discs
             .par_chunks(CHUNK)
-            .zip(slices.par_chunks(CHUNK))
-            .map(|(discs, slices)| {
-                let mut chunk = ChunkPasses {
-                    discs: vec![Vec::new(); count],
-                    slices: vec![Vec::new(); count],
-                };
-                for (disc, &slice) in discs.iter().zip(slices) {
-                    let pass = usize::from(pass_of_slice[usize::from(slice)]);
-                    chunk.discs[pass].push(*disc);
-                    chunk.slices[pass].push(slice);
+            .zip(chunks)
+            .map(|(discs, ChunkKeys { keys, .. })| {
+                let pass_of = |slice: u16| usize::from(pass_of_slice[usize::from(slice)]);
+                // A counting sort by (pass, cell), file order within.
+                let mut lists: Vec<PassList> = (0..count)
+                    .map(|_| PassList {
+                        starts: vec![0; cell_count + 1],
+                        nearest_t: vec![f64::INFINITY; cell_count],
+                        largest_radius_sq: vec![f64::NEG_INFINITY; cell_count],
+                        ..PassList::default()
+                    })
+                    .collect();
+                for &(slice, cell) in &keys {
+                    lists[pass_of(slice)].starts[usize::from(cell) + 1] += 1;
                 }
-                chunk
+                for list in &mut lists {
+                    for cell in 0..cell_count {
+                        list.starts[cell + 1] += list.starts[cell];
+                    }
+                    let len = list.starts[cell_count];
+                    list.discs = vec![Disc::NONE; len];
+                    list.slices = vec![0; len];
+                }
+                let mut cursors: Vec<Vec<usize>> =
+                    lists.iter().map(|list| list.starts.clone()).collect();
+                for (disc, &(slice, cell)) in discs.iter().zip(&keys) {
+                    let (pass, cell) = (pass_of(slice), usize::from(cell));
+                    let list = &mut lists[pass];
+                    let slot = &mut cursors[pass][cell];
+                    list.discs[*slot] = *disc;
+                    list.slices[*slot] = slice;
+                    *slot += 1;
+                    let front = front_t(disc);
+                    // NaN fronts and radii never draw; min/max skip them.
+                    list.nearest_t[cell] = list.nearest_t[cell].min(front);
+                    list.largest_radius_sq[cell] = list.largest_radius_sq[cell].max(disc.radius_sq);
+                }
+                lists
             })
             .collect();
-        Some(Self { count, chunks })
+        Self {
+            count,
+            cells,
+            chunks,
+        }
     }
 
     /// How many passes there are.
@@ -164,27 +270,39 @@ impl Passes {
         self.count
     }
 
-    /// The discs of pass `pass` that `may_show` keeps, front to back (file order within a
-    /// slice), and the pass's memory released.
-    pub(super) fn take(
-        &mut self,
-        pass: usize,
-        may_show: impl Fn(&Disc) -> bool + Sync,
-    ) -> Vec<Disc> {
+    /// The discs of pass `pass` front to back (by slice), and the pass's memory released. With
+    /// `coarse`, what is drawn so far: only the discs that may show in front of it.
+    pub(super) fn take(&mut self, pass: usize, coarse: Option<&CoarseDepth>) -> Vec<Disc> {
+        let around = coarse.map(|coarse| coarse.farthest_around_cells(&self.cells));
+        let reach_sq = self.cells.reaching_neighbours_radius_sq;
         let mut kept: Vec<(u16, Disc)> = self
             .chunks
             .par_iter_mut()
-            .flat_map_iter(|chunk| {
-                let discs = std::mem::take(&mut chunk.discs[pass]);
-                let slices = std::mem::take(&mut chunk.slices[pass]);
-                slices
-                    .into_iter()
-                    .zip(discs)
-                    .filter(|(_, disc)| may_show(disc))
-                    .collect::<Vec<_>>()
+            .flat_map_iter(|lists| {
+                let list = std::mem::take(&mut lists[pass]);
+                let mut kept = Vec::new();
+                for cell in 0..list.starts.len().saturating_sub(1) {
+                    let listed = list.starts[cell]..list.starts[cell + 1];
+                    if let (Some(coarse), Some(around)) = (coarse, &around) {
+                        // Every disc of the cell reaches only the cells around it, and lies
+                        // behind everything drawn there.
+                        let hidden = list.largest_radius_sq[cell] <= reach_sq
+                            && list.nearest_t[cell] > around[cell];
+                        if hidden {
+                            continue;
+                        }
+                        kept.extend(
+                            listed
+                                .filter(|&index| coarse.may_show(&list.discs[index]))
+                                .map(|index| (list.slices[index], list.discs[index])),
+                        );
+                    } else {
+                        kept.extend(listed.map(|index| (list.slices[index], list.discs[index])));
+                    }
+                }
+                kept
             })
             .collect();
-        // Stable: file order within a slice.
         kept.par_sort_by_key(|&(slice, _)| slice);
         kept.into_iter().map(|(_, disc)| disc).collect()
     }

@@ -33,6 +33,7 @@ mod raster;
 mod shade;
 
 pub(crate) use bins::pixel_span;
+pub(crate) use depth_order::Depths;
 pub(crate) use raster::rasterise_frame;
 #[cfg(feature = "oracle")]
 pub(crate) use shade::frame_from_hits;
@@ -57,6 +58,15 @@ pub struct Disc {
 }
 
 impl Disc {
+    /// A placeholder: at the origin, of radius 0.
+    pub(crate) const NONE: Self = Self {
+        u: 0.0,
+        v: 0.0,
+        w: 0.0,
+        radius_sq: 0.0,
+        sphere: 0,
+    };
+
     /// t of the front surface at screen (u, v), or `None` outside the disc. Tangent points hit.
     #[inline]
     pub fn hit_t(&self, u: f64, v: f64) -> Option<f64> {
@@ -75,35 +85,46 @@ pub fn project_discs(scene: &Scene, view: &View, basis: &CameraBasis) -> Vec<Dis
     discs
 }
 
+/// Spheres projected per parallel task.
+const PROJECT_CHUNK: usize = 16_384;
+
 /// [`project_discs`] into `discs`, reusing its memory (released when it holds more than twice
-/// what the scene needs).
+/// what the scene needs); returns their [`Depths`], gathered on the way (the discs of a large
+/// scene are read once less).
 pub(crate) fn project_discs_into(
     scene: &Scene,
     view: &View,
     basis: &CameraBasis,
     discs: &mut Vec<Disc>,
-) {
+) -> Depths {
     use rayon::prelude::*;
     if discs.capacity() > 2 * scene.spheres.len() {
         *discs = Vec::new();
     }
-    scene
-        .spheres
-        .par_iter()
+    discs.resize(scene.spheres.len(), Disc::NONE);
+    let grid = view.grid();
+    discs
+        .par_chunks_mut(PROJECT_CHUNK)
+        .zip(scene.spheres.par_chunks(PROJECT_CHUNK))
         .enumerate()
-        .map(|(index, sphere)| {
+        .map(|(chunk, (discs, spheres))| {
             // Sphere counts fit u32 (the parser's limit).
-            let index = index as u32;
-            let center_camera = basis.to_camera(sphere.center_world - view.center_world);
-            Disc {
-                u: center_camera.x,
-                v: center_camera.y,
-                w: center_camera.z,
-                radius_sq: sphere.radius_world * sphere.radius_world,
-                sphere: index,
+            let first = (chunk * PROJECT_CHUNK) as u32;
+            let mut depths = Depths::NONE;
+            for ((disc, sphere), index) in discs.iter_mut().zip(spheres).zip(first..) {
+                let center_camera = basis.to_camera(sphere.center_world - view.center_world);
+                *disc = Disc {
+                    u: center_camera.x,
+                    v: center_camera.y,
+                    w: center_camera.z,
+                    radius_sq: sphere.radius_world * sphere.radius_world,
+                    sphere: index,
+                };
+                depths = depths.with(disc, &grid);
             }
+            depths
         })
-        .collect_into_vec(discs);
+        .reduce(|| Depths::NONE, Depths::merge)
 }
 
 /// The visible hit at screen (u, v) among `discs`: (t, sphere), smallest t, first in file order

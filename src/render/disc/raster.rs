@@ -10,7 +10,7 @@ use super::chord::{
     BandDisc, Chord, Columns, PixelHit, RowOut, chord_on_row, gather_band_discs, pixel_hit,
 };
 use super::coarse_depth::CoarseDepth;
-use super::depth_order::{CULL_MIN_DISCS, CULL_MIN_DISCS_PER_PIXEL, Passes, discs_per_pixel};
+use super::depth_order::{Depths, Plan};
 use super::occlusion::rasterise_band_front_to_back;
 use super::shade::frame_from_hits;
 use crate::geometry::camera::PixelGrid;
@@ -90,9 +90,9 @@ fn cover_chord_exact(disc: &Disc, columns: Columns, chord: Chord, row: &mut RowO
 /// covers twice as many times as the one before.
 const FIRST_PASS_LAYERS: f64 = 4.0;
 
-/// Renders one centre sample per pixel from projected `discs`.
+/// Renders one centre sample per pixel from projected `discs` (with their `depths`).
 ///
-/// Dense frames (many discs, [`CULL_MIN_DISCS_PER_PIXEL`] or more over a pixel on average) go in
+/// Dense frames (many discs, [`super::depth_order::CULL_MIN_DISCS_PER_PIXEL`] or more over a pixel on average) go in
 /// passes of depth slices, front to back: the first draws the nearest discs that cover the image
 /// [`FIRST_PASS_LAYERS`] times; each later one draws the next slices, twice as many layers, but
 /// only the discs that the coarse depth of what is drawn so far does not hide ([`CoarseDepth`]).
@@ -103,6 +103,7 @@ pub(crate) fn rasterise_frame(
     view: &View,
     grid: &PixelGrid,
     discs: &[Disc],
+    depths: &Depths,
 ) -> Frame {
     let grid = *grid;
     let width = view.width_px as usize;
@@ -117,21 +118,16 @@ pub(crate) fn rasterise_frame(
         .map(|_| NO_HIT)
         .collect();
     let mut out = (t.as_mut_slice(), sphere.as_mut_slice());
-    let dense =
-        discs.len() >= CULL_MIN_DISCS && discs_per_pixel(discs, &grid) >= CULL_MIN_DISCS_PER_PIXEL;
-    let passes = dense
-        .then(|| Passes::of(discs, &grid, FIRST_PASS_LAYERS))
-        .flatten();
-    let disc_tests = match passes {
-        None => rasterise_discs(discs, &grid, dense, &mut out),
-        Some(mut passes) => {
+    let disc_tests = match Plan::of(discs, depths, &grid, FIRST_PASS_LAYERS) {
+        Plan::FileOrder => rasterise_discs(discs, &grid, false, &mut out),
+        Plan::AnyOrder => rasterise_discs(discs, &grid, true, &mut out),
+        Plan::Passes(mut passes) => {
             let mut disc_tests = 0;
             for pass in 0..passes.count() {
                 let discs = if pass == 0 {
-                    passes.take(pass, |_| true)
+                    passes.take(pass, None)
                 } else {
-                    let coarse = CoarseDepth::of(out.0, &grid);
-                    passes.take(pass, |disc| coarse.may_show(disc))
+                    passes.take(pass, Some(&CoarseDepth::of(out.0, &grid)))
                 };
                 disc_tests += rasterise_discs(&discs, &grid, true, &mut out);
             }
