@@ -47,14 +47,19 @@ impl Bands {
 /// Image rows (top row first) `[first, last]` whose centres a disc may cover; conservative by
 /// one row.
 pub(super) fn row_span(grid: &PixelGrid, disc: &Disc) -> Option<(usize, usize)> {
-    let radius = disc.radius_sq.sqrt();
+    rows_of(grid, disc.v, disc.radius_sq.sqrt())
+}
+
+/// [`row_span`] of a disc at screen `v` with radius `radius` (its r², square-rooted).
+#[inline]
+pub(super) fn rows_of(grid: &PixelGrid, v: f64, radius: f64) -> Option<(usize, usize)> {
     let inverse_pixel = 1.0 / grid.pixel_size_world;
     // y_up (from the bottom) of a screen v: v = (y_up + ½ − height/2)·s.
     let offset = 0.5 * f64::from(grid.height_px) - 0.5;
     let max_row = grid.height_px as usize - 1;
     let (low, high) = pixel_span(
-        (disc.v - radius) * inverse_pixel + offset,
-        (disc.v + radius) * inverse_pixel + offset,
+        (v - radius) * inverse_pixel + offset,
+        (v + radius) * inverse_pixel + offset,
         max_row,
     )?;
     // Rows count from the top: row = height − 1 − y_up.

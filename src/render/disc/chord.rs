@@ -56,10 +56,11 @@ impl Columns {
         }
     }
 
-    /// Screen u of column `x`'s centre.
+    /// Screen u of the centre of the column whose index, as f64, is `x` (whole numbers are exact
+    /// in f64, so a loop counts columns in f64 and saves a conversion per pixel).
     #[inline(always)]
-    pub(super) fn u(&self, x: usize) -> f64 {
-        (x as f64 + self.offset) * self.pixel_size
+    pub(super) fn u(&self, x: f64) -> f64 {
+        (x + self.offset) * self.pixel_size
     }
 }
 
@@ -72,6 +73,8 @@ pub(super) struct BandDisc {
     /// The nearest t it can have anywhere: `w − r`, never above the t of any pixel it covers
     /// (correctly rounded square root and subtraction are monotonic).
     pub(super) front_t: f64,
+    /// Its radius, `√r²`.
+    pub(super) radius: f64,
 }
 
 /// The band's discs gathered once, contiguous and in file order: the rows read them sequentially
@@ -85,10 +88,12 @@ pub(super) fn gather_band_discs(
     let centre_column_offset = 0.5 * f64::from(grid.width_px) - 0.5;
     list.map(|index| {
         let disc = discs[index as usize];
+        let radius = disc.radius_sq.sqrt();
         BandDisc {
             disc,
             centre_column: disc.u * inverse_pixel + centre_column_offset,
-            front_t: disc.w - disc.radius_sq.sqrt(),
+            front_t: disc.w - radius,
+            radius,
         }
     })
     .collect()

@@ -1,7 +1,7 @@
 //! Occlusion culling for dense scenes: discs drawn front to back, and a disc hidden behind what
 //! is already drawn in a band skipped (one level of hierarchical z per band).
 
-use super::bins::column_span;
+use super::bins::{column_span, rows_of};
 use super::chord::{BandDisc, Chord, Columns, PixelHit, RowOut, chord_on_row, pixel_hit};
 use crate::geometry::camera::PixelGrid;
 
@@ -95,23 +95,30 @@ pub(super) fn rasterise_band_front_to_back(
     let inverse_pixel = 1.0 / grid.pixel_size_world;
     let mut occlusion = Occlusion::new(width);
     let mut disc_tests = 0u64;
+    let last_row = first_row + rows - 1;
     for band_disc in band_discs {
         let disc = &band_disc.disc;
-        let radius_px = disc.radius_sq.sqrt() * inverse_pixel;
+        let radius_px = band_disc.radius * inverse_pixel;
         let Some(span) = column_span(grid, band_disc.centre_column, radius_px) else {
             continue;
         };
-        if !occlusion.may_show(band_disc, span, t, width) {
+        // The rows it was binned for (none is drawn outside them), within the band.
+        let Some((first, last)) = rows_of(grid, disc.v, band_disc.radius) else {
+            continue;
+        };
+        let (first, last) = (first.max(first_row), last.min(last_row));
+        if first > last || !occlusion.may_show(band_disc, span, t, width) {
             continue;
         }
         occlusion.drawn(span);
-        for row_in_band in 0..rows {
-            let y_up = (height - 1 - (first_row + row_in_band)) as f64;
+        for image_row in first..=last {
+            let y_up = (height - 1 - image_row) as f64;
             let v = grid.v_of_row(y_up);
             let Some(chord) = chord_on_row(grid, disc, band_disc.centre_column, v) else {
                 continue;
             };
             disc_tests += (chord.last - chord.first + 1) as u64;
+            let row_in_band = image_row - first_row;
             let range = row_in_band * width..(row_in_band + 1) * width;
             let mut row = RowOut {
                 t: &mut t[range.clone()],
@@ -133,11 +140,15 @@ fn cover_chord_behind(band_disc: &BandDisc, columns: Columns, chord: Chord, row:
     let dv_sq = dv * dv;
     let t_span = &mut row.t[chord.first..=chord.last];
     let sphere_span = &mut row.sphere[chord.first..=chord.last];
-    for ((x, t_px), sphere_px) in (chord.first..).zip(t_span).zip(sphere_span) {
+    // Indexed over spans of one length (no bounds checks), columns counted in f64.
+    let mut x = chord.first as f64;
+    for (t_px, sphere_px) in t_span.iter_mut().zip(sphere_span.iter_mut()) {
+        let column = x;
+        x += 1.0;
         if front_t > *t_px {
             continue;
         }
-        let PixelHit { distance_sq, t } = pixel_hit(disc, columns.u(x), dv_sq);
+        let PixelHit { distance_sq, t } = pixel_hit(disc, columns.u(column), dv_sq);
         if distance_sq <= disc.radius_sq && (t < *t_px || (t == *t_px && disc.sphere < *sphere_px))
         {
             *t_px = t;

@@ -78,8 +78,11 @@ fn cover_chord_exact(disc: &Disc, columns: Columns, chord: Chord, row: &mut RowO
     let dv_sq = dv * dv;
     let t_span = &mut row.t[chord.first..=chord.last];
     let sphere_span = &mut row.sphere[chord.first..=chord.last];
-    for ((x, t_px), sphere_px) in (chord.first..).zip(t_span).zip(sphere_span) {
+    // Spans of one length (no bounds checks), columns counted in f64.
+    let mut x = chord.first as f64;
+    for (t_px, sphere_px) in t_span.iter_mut().zip(sphere_span.iter_mut()) {
         let PixelHit { distance_sq, t } = pixel_hit(disc, columns.u(x), dv_sq);
+        x += 1.0;
         let closer = distance_sq <= disc.radius_sq && t < *t_px;
         *t_px = if closer { t } else { *t_px };
         *sphere_px = if closer { disc.sphere } else { *sphere_px };
