@@ -6,7 +6,7 @@ use super::chord::{BandDisc, Chord, Columns, PixelHit, RowOut, chord_on_row, pix
 use crate::geometry::camera::PixelGrid;
 
 /// Columns per occlusion tile (a tile is this many columns of a band's rows).
-const TILE_COLUMNS: usize = 16;
+const TILE_COLUMNS: usize = 4;
 
 /// The farthest t among the pixels of `tile` in a band of rows `width` long; stops at the first
 /// uncovered pixel (+∞).
