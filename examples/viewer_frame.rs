@@ -7,6 +7,10 @@
 //! cargo run --release --example viewer_frame -- SCENE WIDTH HEIGHT [RUNS]
 //! ```
 
+#[cfg(feature = "mimalloc")]
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 use std::sync::Arc;
 use std::time::Instant;
 

@@ -69,8 +69,7 @@ pub(crate) fn render_with_progress(
     }
     let basis = view.validate()?;
     let grid = view.grid();
-    let mut discs = PROJECTED.take();
-    let depths = disc::project_discs_into(scene, view, &basis, &mut discs);
+    let (discs, depths) = disc::project_discs_with_depths(scene, view, &basis);
     let mut frame = disc::rasterise_frame(scene, view, &grid, &discs, &depths);
     if let Some(sampling) = &quality.sampling {
         let supersampled =
@@ -79,15 +78,6 @@ pub(crate) fn render_with_progress(
         frame.depth_grey = Some((view.depth_range, supersampled.depth_grey));
         frame.disc_tests += supersampled.disc_tests;
     }
-    PROJECTED.set(discs);
     progress(1.0);
     Ok(frame)
-}
-
-std::thread_local! {
-    /// The projected discs' memory, kept for the next frame on the thread that renders: a
-    /// million spheres' discs take 40 MB, and memory that large comes fresh from the system on
-    /// every allocation, its pages faulted in one by one (most of a 1,000,000-sphere frame's
-    /// projection time).
-    static PROJECTED: std::cell::Cell<Vec<disc::Disc>> = const { std::cell::Cell::new(Vec::new()) };
 }

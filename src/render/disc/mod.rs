@@ -80,30 +80,42 @@ impl Disc {
 /// Projects every sphere of `scene` into the camera space of `view` (basis from
 /// [`View::validate`]), in file order.
 pub fn project_discs(scene: &Scene, view: &View, basis: &CameraBasis) -> Vec<Disc> {
+    use rayon::prelude::*;
     let mut discs = Vec::new();
-    project_discs_into(scene, view, basis, &mut discs);
+    scene
+        .spheres
+        .par_iter()
+        .enumerate()
+        .map(|(index, sphere)| {
+            // Sphere counts fit u32 (the parser's limit).
+            let index = index as u32;
+            let center_camera = basis.to_camera(sphere.center_world - view.center_world);
+            Disc {
+                u: center_camera.x,
+                v: center_camera.y,
+                w: center_camera.z,
+                radius_sq: sphere.radius_world * sphere.radius_world,
+                sphere: index,
+            }
+        })
+        .collect_into_vec(&mut discs);
     discs
 }
 
 /// Spheres projected per parallel task.
 const PROJECT_CHUNK: usize = 16_384;
 
-/// [`project_discs`] into `discs`, reusing its memory (released when it holds more than twice
-/// what the scene needs); returns their [`Depths`], gathered on the way (the discs of a large
-/// scene are read once less).
-pub(crate) fn project_discs_into(
+/// [`project_discs`], and their [`Depths`] on the view's grid, gathered on the way (the discs of
+/// a large scene are read once less).
+pub(crate) fn project_discs_with_depths(
     scene: &Scene,
     view: &View,
     basis: &CameraBasis,
-    discs: &mut Vec<Disc>,
-) -> Depths {
+) -> (Vec<Disc>, Depths) {
     use rayon::prelude::*;
-    if discs.capacity() > 2 * scene.spheres.len() {
-        *discs = Vec::new();
-    }
-    discs.resize(scene.spheres.len(), Disc::NONE);
+    let mut discs = vec![Disc::NONE; scene.spheres.len()];
     let grid = view.grid();
-    discs
+    let depths = discs
         .par_chunks_mut(PROJECT_CHUNK)
         .zip(scene.spheres.par_chunks(PROJECT_CHUNK))
         .enumerate()
@@ -124,7 +136,8 @@ pub(crate) fn project_discs_into(
             }
             depths
         })
-        .reduce(|| Depths::NONE, Depths::merge)
+        .reduce(|| Depths::NONE, Depths::merge);
+    (discs, depths)
 }
 
 /// The visible hit at screen (u, v) among `discs`: (t, sphere), smallest t, first in file order
