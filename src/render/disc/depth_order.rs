@@ -275,7 +275,7 @@ impl Passes {
     pub(super) fn take(&mut self, pass: usize, coarse: Option<&CoarseDepth>) -> Vec<Disc> {
         let around = coarse.map(|coarse| coarse.farthest_around_cells(&self.cells));
         let reach_sq = self.cells.reaching_neighbours_radius_sq;
-        let mut kept: Vec<(u16, Disc)> = self
+        let kept: Vec<(u16, Disc)> = self
             .chunks
             .par_iter_mut()
             .flat_map_iter(|lists| {
@@ -303,7 +303,24 @@ impl Passes {
                 kept
             })
             .collect();
-        kept.par_sort_by_key(|&(slice, _)| slice);
-        kept.into_iter().map(|(_, disc)| disc).collect()
+        by_slice(&kept)
     }
+}
+
+/// `kept`'s discs ordered by slice, as they come within a slice: a counting sort.
+fn by_slice(kept: &[(u16, Disc)]) -> Vec<Disc> {
+    let mut starts = vec![0usize; DEPTH_SLICES + 1];
+    for &(slice, _) in kept {
+        starts[usize::from(slice) + 1] += 1;
+    }
+    for slice in 0..DEPTH_SLICES {
+        starts[slice + 1] += starts[slice];
+    }
+    let mut sorted = vec![Disc::NONE; kept.len()];
+    for &(slice, disc) in kept {
+        let slot = &mut starts[usize::from(slice)];
+        sorted[*slot] = disc;
+        *slot += 1;
+    }
+    sorted
 }
