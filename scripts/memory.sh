@@ -10,6 +10,7 @@ binary=target/release/raytracer
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 target/release/examples/generate 1000000 "$work/million.txt" >/dev/null
+target/release/examples/generate --dense 1000000 "$work/dense.txt" 7 >/dev/null 2>&1
 
 scene=scenes/scene1_02.txt
 requests=(
@@ -17,6 +18,7 @@ requests=(
   "largest image, supersampled|-input $scene -size 8192 8192 -uniform_samples 4 -output $work/c.tga -depth 8 12 $work/d.tga"
   "largest tile: 1024 samples, Gaussian 8|-input $scene -size 64 64 -uniform_samples 1024 -gaussian_filter 8 -output $work/c.png"
   "1,000,000 spheres (125 MB file)|-input $work/million.txt -size 1024 1024 -output $work/c.png -depth 0 100 $work/d.png"
+  "1,000,000 spheres, dense (drawn in passes front to back)|-input $work/dense.txt -size 1024 1024 -output $work/c.png -depth 100 300 $work/d.png"
 )
 {
   echo "# Memory: the stated bound against the measured peak"
