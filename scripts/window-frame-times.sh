@@ -6,9 +6,13 @@
 # The viewer logs every frame (RAYTRACER_FRAME_LOG, src/app/frame_log.rs): the render time the
 # status bar shows, the input-to-new-frame latency, and the UI thread's time per frame. Beside
 # them, the benchmark of the same view (examples/viewer_frame.rs). Writes
-# docs/window-frame-times.md. Needs xvfb and xdotool (scripts/test.sh installs them).
+# docs/window-frame-times.md, or the file given as the first argument. Needs xvfb and xdotool
+# (scripts/test.sh installs them). Mesa's software painter runs on as many threads as there are
+# cores; `LP_NUM_THREADS=1 bash scripts/window-frame-times.sh docs/window-frame-times-one-gl-thread.md`
+# measures it on one, to show how much it competes with the render worker.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+output=${1:-docs/window-frame-times.md}
 cargo build --release --quiet
 cargo build --release --quiet --example generate --example viewer_frame
 work=$(mktemp -d)
@@ -88,9 +92,14 @@ done
   echo "size measured alone (\`examples/viewer_frame.rs\`, median of 15); *latency*: from the UI frame"
   echo "that applied the input to the one that takes the new picture in; *UI*: the UI thread's time"
   echo "per frame (layout, tessellation, painting), as eframe measures it."
+  if [ -n "${LP_NUM_THREADS:-}" ]; then
+    echo
+    echo "This run: \`LP_NUM_THREADS=$LP_NUM_THREADS\`, Mesa's software painter on $LP_NUM_THREADS thread(s) instead of one per"
+    echo "core."
+  fi
   echo
   echo "| scene | window px | image px | frames | frame ms (p50) | benchmark ms | frame / benchmark | latency ms p50 | latency ms p95 | UI ms p50 | UI ms p95 |"
   echo "|---|---|---|---|---|---|---|---|---|---|---|"
   printf '%s' "$rows"
-} > docs/window-frame-times.md
-cat docs/window-frame-times.md
+} > "$output"
+cat "$output"
