@@ -18,9 +18,10 @@ use super::sampling::working_bytes;
 /// The program's own memory (code, libraries, thread stacks, allocator), generously.
 pub const BASELINE_BYTES: u64 = 96 << 20;
 
-/// Per sphere: the parsed sphere (40 bytes), its projected disc (40), for dense frames its depth
-/// slice and the front-to-back passes' copy of the disc (50 at most, while its pass is sorted)
-/// and, generously, its entries in the band lists and the band gathers (48).
+/// Per sphere: the parsed sphere (40 bytes), its projected disc (40), for dense frames its copy
+/// in the front-to-back passes (42 with its depth slice; while its pass is selected and sorted,
+/// 84 at most: the copy, the kept copy, then the sorted disc) and, generously, its entries in
+/// the band lists and the band gathers (48, once the pass's copies are gone: 40 + 40 + 40 + 48).
 pub const SPHERE_BYTES: u64 = 178;
 
 /// Per pixel of a frame: 8-bit colour (3), t as f64 (8) and the sphere index (4).

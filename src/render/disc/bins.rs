@@ -12,7 +12,7 @@ pub(crate) const BAND_ROWS: usize = 8;
 
 /// Discs listed per band of [`BAND_ROWS`] rows, binned in parallel: the discs are split into
 /// consecutive chunks, each chunk lists its discs per band (compressed rows), and a band's list is
-/// the chunks' lists one after the other — file order, with no serial merge.
+/// the chunks' lists one after the other — the order the discs came in, with no serial merge.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub(crate) struct Bands {
     chunks: Vec<ChunkBands>,
@@ -26,7 +26,8 @@ struct ChunkBands {
 }
 
 impl Bands {
-    /// The discs (indices into the projected discs) listed in band `band`, in file order.
+    /// The discs (indices into the projected discs) listed in band `band`, in the order they
+    /// came in.
     pub(crate) fn band(&self, band: usize) -> impl Iterator<Item = u32> + '_ {
         self.chunks.iter().flat_map(move |chunk| {
             let listed = match chunk.offsets.get(band..=band + 1) {

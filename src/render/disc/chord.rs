@@ -77,8 +77,8 @@ pub(super) struct BandDisc {
     pub(super) radius: f64,
 }
 
-/// The band's discs gathered once, contiguous and in file order: the rows read them sequentially
-/// instead of chasing indices across the whole scene (cache misses dominated).
+/// The band's discs gathered once, contiguous and in the order listed: the rows read them
+/// sequentially instead of chasing indices across the whole scene (cache misses dominated).
 pub(super) fn gather_band_discs(
     discs: &[Disc],
     list: impl Iterator<Item = u32>,

@@ -8,6 +8,15 @@ use rayon::prelude::*;
 use super::Disc;
 use crate::geometry::camera::PixelGrid;
 
+/// The larger of `far` and `t` (NaN: `far`).
+#[inline]
+fn farther(far: f64, t: f64) -> f64 {
+    if t > far { t } else { far }
+}
+
+/// Below this many pixels from the image's centre, a disc's extent is known to the pixel.
+const EXACT_PX: f64 = (1u64 << 40) as f64;
+
 /// Pixels per side of a tile.
 const TILE_PX: usize = 8;
 
@@ -91,9 +100,7 @@ impl CoarseDepth {
                 let mut farthest = vec![f64::NEG_INFINITY; tiles_across];
                 for row in rows.chunks(width) {
                     for (tile, pixels) in farthest.iter_mut().zip(row.chunks(TILE_PX)) {
-                        *tile = pixels
-                            .iter()
-                            .fold(*tile, |far, &t| if t > far { t } else { far });
+                        *tile = pixels.iter().copied().fold(*tile, farther);
                     }
                 }
                 farthest
@@ -105,9 +112,7 @@ impl CoarseDepth {
         for (tile_row, tiles) in tile_farthest_t.chunks(tiles_across).enumerate() {
             let blocks = &mut block_farthest_t[tile_row / BLOCK_TILES * blocks_across..];
             for (block, tiles) in blocks.iter_mut().zip(tiles.chunks(BLOCK_TILES)) {
-                *block = tiles
-                    .iter()
-                    .fold(*block, |far, &t| if t > far { t } else { far });
+                *block = tiles.iter().copied().fold(*block, farther);
             }
         }
         Self {
@@ -131,9 +136,7 @@ impl CoarseDepth {
             let cell_row =
                 &mut farthest[tile_row / tiles_per_cell * cells.across..][..cells.across];
             for (cell, tiles) in cell_row.iter_mut().zip(tiles.chunks(tiles_per_cell)) {
-                *cell = tiles
-                    .iter()
-                    .fold(*cell, |far, &t| if t > far { t } else { far });
+                *cell = tiles.iter().copied().fold(*cell, farther);
             }
         }
         let at = |row: usize, column: usize| farthest[row * cells.across + column];
@@ -145,7 +148,7 @@ impl CoarseDepth {
                 around[row * cells.across + column] = rows
                     .flat_map(|r| columns.clone().map(move |c| (r, c)))
                     .map(|(r, c)| at(r, c))
-                    .fold(f64::NEG_INFINITY, |far, t| if t > far { t } else { far });
+                    .fold(f64::NEG_INFINITY, farther);
             }
         }
         around
@@ -155,13 +158,16 @@ impl CoarseDepth {
     /// beyond the farthest t of every tile its pixel extent (widened by a pixel each side)
     /// touches, since then its t at every pixel is too. Off the image: false.
     pub(super) fn may_show(&self, disc: &Disc) -> bool {
-        let radius = disc.radius_sq.sqrt();
-        // As `depth_order::front_t`.
-        let front = disc.w - radius;
-        let radius_px = radius * self.inverse_pixel + 1.0;
+        let front = disc.front_t();
+        let radius_px = disc.radius_sq.sqrt() * self.inverse_pixel + 1.0;
         let column = disc.u * self.inverse_pixel + self.centre_column;
         // Rows count from the top: screen v grows upwards.
         let row = self.centre_row - disc.v * self.inverse_pixel;
+        // Beyond 2⁴⁰ pixels the pixel of margin drowns in the rounding of these sums: kept
+        // (binning drops what misses the image).
+        if !(radius_px < EXACT_PX && column.abs() < EXACT_PX && row.abs() < EXACT_PX) {
+            return true;
+        }
         let (Some(columns), Some(rows)) = (
             tile_span(column - radius_px, column + radius_px, self.tiles_across),
             tile_span(row - radius_px, row + radius_px, self.tiles_down),
@@ -169,10 +175,10 @@ impl CoarseDepth {
             return false;
         };
         let block_columns = columns.0 / BLOCK_TILES..=columns.1 / BLOCK_TILES;
-        let blocks = (rows.0 / BLOCK_TILES..=rows.1 / BLOCK_TILES).flat_map(|block_row| {
+        let mut blocks = (rows.0 / BLOCK_TILES..=rows.1 / BLOCK_TILES).flat_map(|block_row| {
             self.block_farthest_t[block_row * self.blocks_across..][block_columns.clone()].iter()
         });
-        if blocks.into_iter().all(|&farthest| front > farthest) {
+        if blocks.all(|&farthest| front > farthest) {
             return false;
         }
         (rows.0..=rows.1).any(|tile_row| {

@@ -10,7 +10,8 @@
 //! Cost: a disc is listed in the bands its rows touch; within a row only the columns its chord can
 //! cover are tested. A frame costs in proportion to the discs plus the pixels they cover, not to
 //! pixels × spheres. Ties keep the sphere that comes first in the file (bands list discs in file
-//! order and a hit replaces the current one only when strictly nearer).
+//! order and a hit replaces the current one only when strictly nearer; drawn front to back, a
+//! hit at an equal t replaces it only for a sphere earlier in the file).
 //!
 //! Everything is f64: an f32 mode was measured slower than f64 and less exact, and removed
 //! (`docs/accuracy.md`).
@@ -67,6 +68,13 @@ impl Disc {
         sphere: 0,
     };
 
+    /// The nearest t it can have anywhere: `w − r`, never above the t of a pixel it covers
+    /// (correctly rounded square root and subtraction are monotonic).
+    #[inline]
+    pub(crate) fn front_t(&self) -> f64 {
+        self.w - self.radius_sq.sqrt()
+    }
+
     /// t of the front surface at screen (u, v), or `None` outside the disc. Tangent points hit.
     #[inline]
     pub fn hit_t(&self, u: f64, v: f64) -> Option<f64> {
@@ -80,26 +88,7 @@ impl Disc {
 /// Projects every sphere of `scene` into the camera space of `view` (basis from
 /// [`View::validate`]), in file order.
 pub fn project_discs(scene: &Scene, view: &View, basis: &CameraBasis) -> Vec<Disc> {
-    use rayon::prelude::*;
-    let mut discs = Vec::new();
-    scene
-        .spheres
-        .par_iter()
-        .enumerate()
-        .map(|(index, sphere)| {
-            // Sphere counts fit u32 (the parser's limit).
-            let index = index as u32;
-            let center_camera = basis.to_camera(sphere.center_world - view.center_world);
-            Disc {
-                u: center_camera.x,
-                v: center_camera.y,
-                w: center_camera.z,
-                radius_sq: sphere.radius_world * sphere.radius_world,
-                sphere: index,
-            }
-        })
-        .collect_into_vec(&mut discs);
-    discs
+    project_discs_with_depths(scene, view, basis).0
 }
 
 /// Spheres projected per parallel task.

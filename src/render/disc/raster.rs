@@ -90,17 +90,17 @@ fn cover_chord_exact(disc: &Disc, columns: Columns, chord: Chord, row: &mut RowO
 }
 
 /// How many times over the first pass's discs (the nearest) cover the image; each later pass
-/// covers twice as many times as the one before.
+/// ends where the passes so far cover it twice as many times as before.
 const FIRST_PASS_LAYERS: f64 = 4.0;
 
 /// Renders one centre sample per pixel from projected `discs` (with their `depths`).
 ///
-/// Dense frames (many discs, [`super::depth_order::CULL_MIN_DISCS_PER_PIXEL`] or more over a pixel on average) go in
-/// passes of depth slices, front to back: the first draws the nearest discs that cover the image
-/// [`FIRST_PASS_LAYERS`] times; each later one draws the next slices, twice as many layers, but
-/// only the discs that the coarse depth of what is drawn so far does not hide ([`CoarseDepth`]).
-/// Within a pass, bands cull again, finer. Ties still go to the first sphere in the file
-/// whatever the order.
+/// Dense frames (many discs, six or more over a pixel on average:
+/// [`super::depth_order::CULL_MIN_DISCS_PER_PIXEL`]) go in passes of depth slices, front to back:
+/// the first draws the nearest discs that cover the image [`FIRST_PASS_LAYERS`] times; each later
+/// one the next slices, covering twice as many layers as all before it, but only the discs that
+/// the coarse depth of what is drawn so far does not hide ([`CoarseDepth`]). Within a pass, bands
+/// cull again, finer. Ties still go to the first sphere in the file whatever the order.
 pub(crate) fn rasterise_frame(
     scene: &Scene,
     view: &View,
@@ -127,11 +127,11 @@ pub(crate) fn rasterise_frame(
         Plan::Passes(mut passes) => {
             let mut disc_tests = 0;
             for pass in 0..passes.count() {
-                let discs = if pass == 0 {
-                    passes.take(pass, None)
-                } else {
-                    passes.take(pass, Some(&CoarseDepth::of(out.0, &grid)))
-                };
+                if passes.is_empty(pass) {
+                    continue;
+                }
+                let drawn = (pass > 0).then(|| CoarseDepth::of(out.0, &grid));
+                let discs = passes.take(pass, drawn.as_ref());
                 disc_tests += rasterise_discs(&discs, &grid, true, &mut out);
             }
             disc_tests
