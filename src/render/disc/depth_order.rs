@@ -457,7 +457,7 @@ mod tests {
         let discs = random_discs(&mut rng, 3_000, &grid);
         let mut t = vec![1.0; 400 * 300];
         for (index, disc) in discs.iter().enumerate().step_by(20) {
-            let column_off = |pixel: &usize| (grid.u_of_column((pixel % 400) as f64) - disc.u);
+            let column_off = |pixel: &usize| grid.u_of_column((pixel % 400) as f64) - disc.u;
             let pixels = covered(disc, &grid);
             let rim = if index % 40 == 0 {
                 pixels
