@@ -6,7 +6,7 @@
 #
 # Both revisions are timed with this checkout's examples/viewer_frame.rs (the viewer's work for
 # one frame: render, both textures, histogram; median of several frames), built against each
-# revision's library. About five minutes on two cores after the release build.
+# revision's library. About ten minutes on two cores (the base revision is built from scratch).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 base=${1:-cc08d3e}
@@ -19,12 +19,11 @@ trap 'git worktree remove --force "$work/base" >/dev/null 2>&1 || true; rm -rf "
 cargo build --release --quiet --example viewer_frame --example generate
 cp target/release/examples/viewer_frame "$work/viewer_frame-head"
 git worktree add --quiet --detach "$work/base" "$base"
+# Built in a target folder of its own: sharing this checkout's would overwrite its library with
+# the base revision's (the two have the same name and version).
 cp examples/viewer_frame.rs "$work/base/examples/viewer_frame.rs"
-# The same target folder: the dependencies are built once.
-target_dir=$PWD/target
-(cd "$work/base" && CARGO_TARGET_DIR="$target_dir" cargo build --release --quiet --example viewer_frame)
-cp target/release/examples/viewer_frame "$work/viewer_frame-base"
-cargo build --release --quiet --example viewer_frame
+(cd "$work/base" && CARGO_TARGET_DIR="$work/base-target" cargo build --release --quiet --example viewer_frame)
+cp "$work/base-target/release/examples/viewer_frame" "$work/viewer_frame-base"
 
 target/release/examples/generate --dense 100000 "$work/dense_1e5.txt" 7 >/dev/null 2>&1
 target/release/examples/generate --dense 1000000 "$work/dense_1e6.txt" 7 >/dev/null 2>&1
