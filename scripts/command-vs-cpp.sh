@@ -8,9 +8,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 rounds=${ROUNDS:-21}
 cargo build --release --quiet
+cargo build --release --quiet --example render_time
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 g++ -O2 -o "$work/raycast" bench/cpp/raycast.cpp
+repo=$PWD
 scene=$PWD/scenes/scene1_02.txt
 ours=$PWD/target/release/raytracer
 cd "$work"
@@ -37,6 +39,8 @@ awk '{print $2}' stats.txt > render.txt
 awk '{print $4}' stats.txt > write.txt
 render=$(median render.txt)
 write=$(median write.txt)
+# The same render warm: repeated in one process.
+read -r first_in_process warm < <("$repo/target/release/examples/render_time" "$scene" 2000 2000 "$rounds")
 cd - >/dev/null
 durability=$(cargo run --release --quiet --example write_cost -- "$rounds")
 {
@@ -57,6 +61,10 @@ durability=$(cargo run --release --quiet --example write_cost -- "$rounds")
   printf 'Of the raytracer'"'"'s time (its own `-stats`, medians): render %.1f ms (a cold first frame in a\n' "$render"
   printf 'new process), write %.1f ms (encode both images and write them, each to a temporary file that\n' "$write"
   echo "is synced to disk and then renamed; the two written at once)."
+  echo
+  printf 'The same render repeated in one process ([examples/render_time.rs](../examples/render_time.rs),\n'
+  printf '%s frames): %.1f ms for its first frame, %.1f ms warm (median of the others). The\n' "$rounds" "$first_in_process" "$warm"
+  printf "command's cold render is **%.2f×** the warm one.\n" "$(echo "$render / $warm" | bc -l)"
   echo
   echo "## What durability costs"
   echo
