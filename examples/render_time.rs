@@ -11,26 +11,17 @@
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
+#[path = "support/frame_args.rs"]
+mod frame_args;
+
 use std::time::Instant;
 
-use raytracer::render::depth_map::DepthRange;
-use raytracer::render::{View, render};
+use raytracer::render::render;
 
 fn main() {
-    let arguments: Vec<String> = std::env::args().skip(1).collect();
-    let [path, width, height, rest @ ..] = arguments.as_slice() else {
-        eprintln!("usage: render_time SCENE WIDTH HEIGHT [RUNS]");
-        std::process::exit(2);
-    };
-    let number = |text: &str| text.parse::<u32>().expect("a whole number");
-    let runs = rest.first().map_or(21, |r| number(r)).max(2);
-    let scene = raytracer::scene::load_scene(std::path::Path::new(path)).expect("a scene");
-    let view = View::of_camera(
-        &scene.camera,
-        number(width),
-        number(height),
-        DepthRange::new(0.0, 1.0),
-    );
+    let frame_args::FrameArgs { scene, view, runs } =
+        frame_args::frame_args("render_time SCENE WIDTH HEIGHT [RUNS]", 21);
+    let runs = runs.max(2);
     let mut times: Vec<f64> = (0..runs)
         .map(|_| {
             let started = Instant::now();

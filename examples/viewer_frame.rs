@@ -11,29 +11,21 @@
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
+#[path = "support/frame_args.rs"]
+mod frame_args;
+
 use std::sync::Arc;
 use std::time::Instant;
 
 use raytracer::app::job::{ViewerJob, prepare_frame};
 use raytracer::explore::initial_depth_range;
-use raytracer::render::View;
-use raytracer::render::depth_map::DepthRange;
 
 fn main() {
-    let arguments: Vec<String> = std::env::args().skip(1).collect();
-    let [path, width, height, rest @ ..] = arguments.as_slice() else {
-        eprintln!("usage: viewer_frame SCENE WIDTH HEIGHT [RUNS]");
-        std::process::exit(2);
-    };
-    let number = |text: &str| text.parse::<u32>().expect("a whole number");
-    let runs = rest.first().map_or(31, |r| number(r));
-    let scene = raytracer::scene::load_scene(std::path::Path::new(path)).expect("a scene");
-    let mut view = View::of_camera(
-        &scene.camera,
-        number(width),
-        number(height),
-        DepthRange::new(0.0, 1.0),
-    );
+    let frame_args::FrameArgs {
+        scene,
+        mut view,
+        runs,
+    } = frame_args::frame_args("viewer_frame SCENE WIDTH HEIGHT [RUNS]", 31);
     view.depth_range = initial_depth_range(&scene, &view);
     let job = ViewerJob {
         scene: Arc::new(scene),

@@ -22,6 +22,8 @@ git worktree add --quiet --detach "$work/base" "$base"
 # Built in a target folder of its own: sharing this checkout's would overwrite its library with
 # the base revision's (the two have the same name and version).
 cp examples/viewer_frame.rs "$work/base/examples/viewer_frame.rs"
+mkdir -p "$work/base/examples/support"
+cp examples/support/frame_args.rs "$work/base/examples/support/"
 (cd "$work/base" && CARGO_TARGET_DIR="$work/base-target" cargo build --release --quiet --example viewer_frame)
 cp "$work/base-target/release/examples/viewer_frame" "$work/viewer_frame-base"
 

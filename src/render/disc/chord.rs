@@ -88,12 +88,11 @@ pub(super) fn gather_band_discs(
     let centre_column_offset = 0.5 * f64::from(grid.width_px) - 0.5;
     list.map(|index| {
         let disc = discs[index as usize];
-        let radius = disc.radius_sq.sqrt();
         BandDisc {
             disc,
             centre_column: disc.u * inverse_pixel + centre_column_offset,
-            front_t: disc.w - radius,
-            radius,
+            front_t: disc.front_t(),
+            radius: disc.radius_sq.sqrt(),
         }
     })
     .collect()

@@ -27,6 +27,36 @@ const BLOCK_TILES: usize = 8;
 /// a group wholly behind what is drawn around its cell is dropped without a look at its discs.
 const CELLS: usize = 16;
 
+/// Where a disc's centre lies in pixel coordinates: column from the left, row from the top, with
+/// pixel centres at whole numbers.
+#[derive(Clone, Copy)]
+struct PixelCoordinates {
+    /// Column coordinate of screen u = 0: `width/2 − ½`.
+    centre_column: f64,
+    /// Row coordinate of screen v = 0: `height/2 − ½`.
+    centre_row: f64,
+    inverse_pixel: f64,
+}
+
+impl PixelCoordinates {
+    fn of(grid: &PixelGrid) -> Self {
+        Self {
+            centre_column: 0.5 * f64::from(grid.width_px) - 0.5,
+            centre_row: 0.5 * f64::from(grid.height_px) - 0.5,
+            inverse_pixel: 1.0 / grid.pixel_size_world,
+        }
+    }
+
+    /// (column, row) of `disc`'s centre; rows count from the top, screen v grows upwards.
+    #[inline]
+    fn of_disc(&self, disc: &Disc) -> (f64, f64) {
+        (
+            disc.u * self.inverse_pixel + self.centre_column,
+            self.centre_row - disc.v * self.inverse_pixel,
+        )
+    }
+}
+
 /// Square cells of the screen that group discs by their centre.
 #[derive(Clone, Copy)]
 pub(super) struct Cells {
@@ -34,11 +64,7 @@ pub(super) struct Cells {
     pub(super) px: usize,
     pub(super) across: usize,
     pub(super) down: usize,
-    /// Column coordinate of screen u = 0: `width/2 − ½`.
-    centre_column: f64,
-    /// Row coordinate (top row 0) of screen v = 0: `height/2 − ½`.
-    centre_row: f64,
-    inverse_pixel: f64,
+    pixels: PixelCoordinates,
     /// The largest r² for which a disc centred in a cell reaches no further than the cells
     /// around it (its radius and a pixel of margin within a cell's side).
     pub(super) reaching_neighbours_radius_sq: f64,
@@ -53,17 +79,14 @@ impl Cells {
             px,
             across: width.div_ceil(px),
             down: height.div_ceil(px),
-            centre_column: 0.5 * f64::from(grid.width_px) - 0.5,
-            centre_row: 0.5 * f64::from(grid.height_px) - 0.5,
-            inverse_pixel: 1.0 / grid.pixel_size_world,
+            pixels: PixelCoordinates::of(grid),
             reaching_neighbours_radius_sq: reach_world * reach_world,
         }
     }
 
     /// The cell of `disc`'s centre, clamped to the image's cells (NaN: the first).
     pub(super) fn of_disc(&self, disc: &Disc) -> usize {
-        let column = disc.u * self.inverse_pixel + self.centre_column;
-        let row = self.centre_row - disc.v * self.inverse_pixel;
+        let (column, row) = self.pixels.of_disc(disc);
         let side = self.px as f64;
         let cell = |at: f64, count: usize| {
             let cell = if at > 0.0 { (at / side) as usize } else { 0 };
@@ -81,11 +104,7 @@ pub(super) struct CoarseDepth {
     tile_farthest_t: Vec<f64>,
     blocks_across: usize,
     block_farthest_t: Vec<f64>,
-    /// Column coordinate of screen u = 0: `width/2 − ½`.
-    centre_column: f64,
-    /// Row coordinate (top row 0) of screen v = 0: `height/2 − ½`.
-    centre_row: f64,
-    inverse_pixel: f64,
+    pixels: PixelCoordinates,
 }
 
 impl CoarseDepth {
@@ -121,9 +140,7 @@ impl CoarseDepth {
             tile_farthest_t,
             blocks_across,
             block_farthest_t,
-            centre_column: 0.5 * f64::from(grid.width_px) - 0.5,
-            centre_row: 0.5 * f64::from(grid.height_px) - 0.5,
-            inverse_pixel: 1.0 / grid.pixel_size_world,
+            pixels: PixelCoordinates::of(grid),
         }
     }
 
@@ -159,10 +176,8 @@ impl CoarseDepth {
     /// touches, since then its t at every pixel is too. Off the image: false.
     pub(super) fn may_show(&self, disc: &Disc) -> bool {
         let front = disc.front_t();
-        let radius_px = disc.radius_sq.sqrt() * self.inverse_pixel + 1.0;
-        let column = disc.u * self.inverse_pixel + self.centre_column;
-        // Rows count from the top: screen v grows upwards.
-        let row = self.centre_row - disc.v * self.inverse_pixel;
+        let radius_px = disc.radius_sq.sqrt() * self.pixels.inverse_pixel + 1.0;
+        let (column, row) = self.pixels.of_disc(disc);
         // Beyond 2⁴⁰ pixels the pixel of margin drowns in the rounding of these sums: kept
         // (binning drops what misses the image).
         if !(radius_px < EXACT_PX && column.abs() < EXACT_PX && row.abs() < EXACT_PX) {

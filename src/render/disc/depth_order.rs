@@ -103,7 +103,7 @@ impl Depths {
     pub(crate) fn with(self, disc: &Disc, grid: &PixelGrid) -> Self {
         let pixels = f64::from(grid.width_px) * f64::from(grid.height_px);
         let radius = disc.radius_sq.sqrt();
-        let front = disc.w - radius;
+        let front = disc.front_t();
         let covered_px =
             self.covered_px + covered_pixels(disc, radius / grid.pixel_size_world, grid, pixels);
         if front.is_finite() {
@@ -181,7 +181,7 @@ impl Passes {
                     .iter()
                     .map(|disc| {
                         let radius = disc.radius_sq.sqrt();
-                        let slice = slice_of(disc.w - radius);
+                        let slice = slice_of(disc.front_t());
                         covered[usize::from(slice)] +=
                             covered_pixels(disc, radius * inverse_pixel, grid, pixels);
                         // CELLS² cells fit u16.

@@ -1,0 +1,33 @@
+//! The arguments the frame-timing examples share: `SCENE WIDTH HEIGHT [RUNS]`, the scene loaded
+//! and its own camera's view at that size.
+
+use raytracer::render::View;
+use raytracer::render::depth_map::DepthRange;
+use raytracer::scene::Scene;
+
+/// A scene file's view to time, and how many times.
+pub(crate) struct FrameArgs {
+    pub(crate) scene: Scene,
+    pub(crate) view: View,
+    pub(crate) runs: u32,
+}
+
+/// Reads `SCENE WIDTH HEIGHT [RUNS]` (RUNS `default_runs` when absent); exits with `usage` on
+/// anything else.
+pub(crate) fn frame_args(usage: &str, default_runs: u32) -> FrameArgs {
+    let arguments: Vec<String> = std::env::args().skip(1).collect();
+    let [path, width, height, rest @ ..] = arguments.as_slice() else {
+        eprintln!("usage: {usage}");
+        std::process::exit(2);
+    };
+    let number = |text: &str| text.parse::<u32>().expect("a whole number");
+    let runs = rest.first().map_or(default_runs, |r| number(r));
+    let scene = raytracer::scene::load_scene(std::path::Path::new(path)).expect("a scene");
+    let view = View::of_camera(
+        &scene.camera,
+        number(width),
+        number(height),
+        DepthRange::new(0.0, 1.0),
+    );
+    FrameArgs { scene, view, runs }
+}
