@@ -1,6 +1,7 @@
 //! Viewer latency: the work between a slider change and a frame ready to upload — rendering a
 //! 1024×1024 view and preparing both texture images (what the viewer's worker does) — for each
-//! course scene and for generated scenes of 1,000 and 100,000 spheres.
+//! course scene and for generated scenes of 1,000 and 100,000 spheres; and, alone, the depth
+//! histogram of a dense frame (the part of that work that counts every pixel's t).
 
 use std::hint::black_box;
 use std::path::Path;
@@ -11,7 +12,8 @@ use std::sync::Arc;
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use raytracer::app::job::{ViewerJob, prepare_frame};
+use raytracer::app::job::{HISTOGRAM_BINS, ViewerJob, prepare_frame};
+use raytracer::explore::depth_stats::DepthHistogram;
 use raytracer::explore::initial_depth_range;
 use raytracer::render::View;
 use raytracer::render::depth_map::DepthRange;
@@ -56,5 +58,17 @@ fn viewer_frame_1024x1024(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, viewer_frame_1024x1024);
+/// The depth histogram the viewer draws, of a 1024×1024 frame of the dense 100,000-sphere scene.
+fn depth_histogram_1024x1024(c: &mut Criterion) {
+    let job = job_1024x1024(raytracer::oracle::dense_scene(7, 100_000));
+    let frame = raytracer::render::render(&job.scene, &job.view).expect("renders");
+    let mut group = c.benchmark_group("depth_histogram_1024x1024");
+    group.sample_size(50);
+    group.bench_function("dense_100000", |b| {
+        b.iter(|| DepthHistogram::new(black_box(&frame), HISTOGRAM_BINS));
+    });
+    group.finish();
+}
+
+criterion_group!(benches, viewer_frame_1024x1024, depth_histogram_1024x1024);
 criterion_main!(benches);

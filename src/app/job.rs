@@ -47,7 +47,7 @@ impl Default for DepthStyle {
 }
 
 /// Bins of the histogram of visible t drawn under the depth image.
-pub(crate) const HISTOGRAM_BINS: usize = 128;
+pub const HISTOGRAM_BINS: usize = 128;
 
 /// A rendered frame with the pixels of its two textures.
 #[derive(Debug, Clone)]

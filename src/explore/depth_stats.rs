@@ -13,6 +13,9 @@ use crate::render::depth_map::DepthRange;
 /// Pixels per parallel task when counting the histogram.
 const PIXELS_PER_TASK: usize = 1 << 16;
 
+/// Counters per histogram bin within a task, taken in turn by consecutive pixels.
+const COUNTER_LANES: usize = 4;
+
 /// Largest accepted percentile cut for [`auto_range`] (each end), in percent.
 pub(crate) const MAX_PERCENTILE_CUT: f64 = 49.0;
 
@@ -86,22 +89,32 @@ impl DepthHistogram {
             return None;
         }
         let width = high - low;
+        // One multiplication per pixel, not a division (a t on a bin's edge may land in either
+        // bin: the histogram is read by eye); four counters per bin, so that neighbouring
+        // pixels of one depth (most of a dense frame) do not wait on each other's increments.
+        let bins_per_t = if width > 0.0 {
+            bins as f64 / width
+        } else {
+            0.0
+        };
         let counts = frame
             .t
             .par_chunks(PIXELS_PER_TASK)
             .map(|chunk| {
-                let mut counts = vec![0u32; bins];
-                for &t in chunk.iter().filter(|t| t.is_finite()) {
-                    let bin = if width > 0.0 {
-                        // In [0, bins]; the farthest t lands in the last bin.
-                        (((t - low) / width) * bins as f64) as usize
-                    } else {
-                        0
-                    };
-                    let count = &mut counts[bin.min(bins - 1)];
-                    *count = count.saturating_add(1);
+                let mut lanes = vec![[0u32; COUNTER_LANES]; bins];
+                for (index, &t) in chunk.iter().enumerate() {
+                    if !t.is_finite() {
+                        continue;
+                    }
+                    // In [0, bins] (NaN, from an infinite scale at t_low, to 0); the farthest
+                    // t lands in the last bin; through i64, a cheaper conversion. A task's pixels fit u32.
+                    let bin = ((t - low) * bins_per_t) as i64 as usize;
+                    lanes[bin.min(bins - 1)][index % COUNTER_LANES] += 1;
                 }
-                counts
+                lanes
+                    .iter()
+                    .map(|lanes| lanes.iter().sum())
+                    .collect::<Vec<u32>>()
             })
             .reduce(
                 || vec![0u32; bins],
