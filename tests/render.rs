@@ -81,6 +81,7 @@ fn random_scene(seed: u64, sphere_count: usize) -> Scene {
 /// Asserts that the fast frame and the oracle frame agree: the same sphere wherever the pixel is
 /// not within rounding of a silhouette or a tie, and t within `1e-12 · scale` where they agree.
 fn assert_frames_agree(scene: &Scene, view: &View, fast: &Frame, oracle: &Frame) -> usize {
+    assert_colours_follow_spheres(scene, fast);
     let basis = view.validate().unwrap();
     let grid = view.grid();
     let scale = scene.bounds().map_or(1.0, |b| b.diagonal()) + view.size_world;
@@ -122,6 +123,26 @@ fn assert_frames_agree(scene: &Scene, view: &View, fast: &Frame, oracle: &Frame)
         }
     }
     silhouette_pixels
+}
+
+/// Every pixel of `frame` has the colour of the sphere it shows (its material's diffuse colour,
+/// white without one) or the background, each channel quantised as `floor(c·255)` within
+/// [0, 255] — worked out here from the scene, not by the renderer's shading.
+fn assert_colours_follow_spheres(scene: &Scene, frame: &Frame) {
+    assert_eq!(frame.colour.len(), frame.sphere.len());
+    for (index, (&rgb, &sphere)) in frame.colour.iter().zip(&frame.sphere).enumerate() {
+        let colour = if sphere == NO_HIT {
+            scene.background
+        } else {
+            scene.spheres[sphere as usize]
+                .material
+                .map_or(Vec3::ONE, |m| scene.materials[m as usize].diffuse_colour)
+        };
+        let expected = colour
+            .to_array()
+            .map(|c| (c * 255.0).clamp(0.0, 255.0) as u8);
+        assert_eq!(rgb, expected, "pixel {index}: colour of sphere {sphere}");
+    }
 }
 
 #[test]

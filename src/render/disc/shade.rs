@@ -7,6 +7,9 @@ use crate::render::depth_map::quantize_f32;
 use crate::render::{Frame, View};
 use crate::scene::Scene;
 
+/// A sphere-colour table is made when there are at least this many pixels per sphere.
+const SPHERES_PER_TABLE_PIXEL: usize = 4;
+
 /// Completes a frame from per-pixel t and sphere indices: colour from the sphere's material or
 /// the background, quantised to 8 bits.
 pub(crate) fn frame_from_hits(scene: &Scene, view: &View, t: Vec<f64>, sphere: Vec<u32>) -> Frame {
@@ -19,16 +22,30 @@ pub(crate) fn frame_from_hits(scene: &Scene, view: &View, t: Vec<f64>, sphere: V
         .collect();
     let default_rgb = crate::scene::DEFAULT_DIFFUSE.to_array().map(quantize_f32);
     let background = scene.background.to_array().map(quantize_f32);
-    let colour = sphere
-        .par_iter()
-        .map(|&index| match scene.spheres.get(index as usize) {
-            Some(hit) => hit
-                .material
-                .and_then(|material| material_rgb.get(material as usize).copied())
-                .unwrap_or(default_rgb),
-            None => background,
-        })
-        .collect();
+    let rgb_of_sphere = |hit: &crate::scene::Sphere| {
+        hit.material
+            .and_then(|material| material_rgb.get(material as usize).copied())
+            .unwrap_or(default_rgb)
+    };
+    // With far fewer spheres than pixels, each sphere's colour once, in a table small enough to
+    // stay in cache, instead of a read of the sphere (scattered over the whole scene) per pixel.
+    let colour = if scene.spheres.len() <= sphere.len() / SPHERES_PER_TABLE_PIXEL {
+        let sphere_rgb: Vec<[u8; 3]> = scene.spheres.par_iter().map(rgb_of_sphere).collect();
+        sphere
+            .par_iter()
+            .map(|&index| *sphere_rgb.get(index as usize).unwrap_or(&background))
+            .collect()
+    } else {
+        sphere
+            .par_iter()
+            .map(|&index| {
+                scene
+                    .spheres
+                    .get(index as usize)
+                    .map_or(background, rgb_of_sphere)
+            })
+            .collect()
+    };
     Frame {
         width_px: view.width_px,
         height_px: view.height_px,
