@@ -89,6 +89,14 @@ impl Frame {
             .as_ref()
             .filter(|(grey_range, _)| *grey_range == range)
             .map(|(_, grey)| grey);
+        if filtered.is_none() {
+            // The common case on its own, over the t alone (no index, no per-pixel match).
+            return self
+                .t
+                .par_iter()
+                .map(|&t| pixel(map.rgb(&range, t, no_hit)))
+                .collect();
+        }
         (0..self.t.len())
             .into_par_iter()
             .map(|index| {
