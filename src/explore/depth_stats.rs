@@ -107,7 +107,8 @@ impl DepthHistogram {
                         continue;
                     }
                     // In [0, bins] (NaN, from an infinite scale at t_low, to 0); the farthest
-                    // t lands in the last bin; through i64, a cheaper conversion. A task's pixels fit u32.
+                    // t lands in the last bin. Through i64: a cheaper conversion than to usize.
+                    // A task's pixels fit u32.
                     let bin = ((t - low) * bins_per_t) as i64 as usize;
                     lanes[bin.min(bins - 1)][index % COUNTER_LANES] += 1;
                 }

@@ -7,8 +7,9 @@ use crate::render::depth_map::quantize_f32;
 use crate::render::{Frame, View};
 use crate::scene::Scene;
 
-/// A sphere-colour table is made when there are at least this many pixels per sphere.
-const SPHERES_PER_TABLE_PIXEL: usize = 4;
+/// Pixels per sphere from which a frame colours its spheres once, in a table, rather than
+/// reading each pixel's sphere.
+const MIN_PIXELS_PER_SPHERE_FOR_TABLE: usize = 4;
 
 /// Completes a frame from per-pixel t and sphere indices: colour from the sphere's material or
 /// the background, quantised to 8 bits.
@@ -29,7 +30,7 @@ pub(crate) fn frame_from_hits(scene: &Scene, view: &View, t: Vec<f64>, sphere: V
     };
     // With far fewer spheres than pixels, each sphere's colour once, in a table small enough to
     // stay in cache, instead of a read of the sphere (scattered over the whole scene) per pixel.
-    let colour = if scene.spheres.len() <= sphere.len() / SPHERES_PER_TABLE_PIXEL {
+    let colour = if scene.spheres.len() <= sphere.len() / MIN_PIXELS_PER_SPHERE_FOR_TABLE {
         let sphere_rgb: Vec<[u8; 3]> = scene.spheres.par_iter().map(rgb_of_sphere).collect();
         sphere
             .par_iter()
