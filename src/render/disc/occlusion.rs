@@ -99,7 +99,7 @@ pub(super) fn rasterise_band_front_to_back(
     for band_disc in band_discs {
         let disc = &band_disc.disc;
         let radius_px = band_disc.radius * inverse_pixel;
-        let Some(span) = column_span(grid, band_disc.centre_column, radius_px) else {
+        let Some(span) = column_span(grid, band_disc.centre_column, radius_px, radius_px) else {
             continue;
         };
         // The rows it was binned for (none is drawn outside them), within the band.
@@ -114,7 +114,8 @@ pub(super) fn rasterise_band_front_to_back(
         for image_row in first..=last {
             let y_up = (height - 1 - image_row) as f64;
             let v = grid.v_of_row(y_up);
-            let Some(chord) = chord_on_row(grid, disc, band_disc.centre_column, v) else {
+            let Some(chord) = chord_on_row(grid, disc, (band_disc.centre_column, radius_px), v)
+            else {
                 continue;
             };
             disc_tests += (chord.last - chord.first + 1) as u64;

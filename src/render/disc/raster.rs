@@ -47,6 +47,7 @@ fn rasterise_band_in_order(
     let width = grid.width_px as usize;
     let height = grid.height_px as usize;
     let columns = Columns::of(grid);
+    let inverse_pixel = 1.0 / grid.pixel_size_world;
     let mut disc_tests = 0u64;
     let rows = t.chunks_mut(width).zip(sphere.chunks_mut(width));
     for (row_in_band, (t, sphere)) in rows.enumerate() {
@@ -56,10 +57,12 @@ fn rasterise_band_in_order(
         for BandDisc {
             disc,
             centre_column,
+            radius,
             ..
         } in band_discs
         {
-            let Some(chord) = chord_on_row(grid, disc, *centre_column, v) else {
+            let reach = (*centre_column, radius * inverse_pixel);
+            let Some(chord) = chord_on_row(grid, disc, reach, v) else {
                 continue;
             };
             disc_tests += (chord.last - chord.first + 1) as u64;
