@@ -7,7 +7,11 @@
 # status bar shows, the input-to-new-frame latency, and the UI thread's time per frame. Beside
 # them, the benchmark of the same view (examples/viewer_frame.rs). Writes
 # docs/window-frame-times.md, or the file given as the first argument. Needs xvfb and xdotool
-# (scripts/test.sh installs them). Mesa's software painter runs on as many threads as there are
+# (scripts/test.sh installs them). It also reads the CPU time of the viewer's threads from /proc:
+# how much painting takes, per UI frame and of the two cores, beside the renderer's share. The
+# window is painted with OpenGL unless RAYTRACER_RENDERER=wgpu:
+# `RAYTRACER_RENDERER=wgpu bash scripts/window-frame-times.sh docs/window-frame-times-wgpu.md`
+# measures the other renderer. Mesa's software painter runs on as many threads as there are
 # cores; `LP_NUM_THREADS=1 bash scripts/window-frame-times.sh docs/window-frame-times-one-gl-thread.md`
 # measures it on one, to show how much it competes with the render worker.
 set -euo pipefail
@@ -26,10 +30,31 @@ trap 'kill $xvfb 2>/dev/null || true; rm -rf "$work"' EXIT
 export DISPLAY="$display"
 for _ in $(seq 100); do xdotool getmouselocation >/dev/null 2>&1 && break; sleep 0.1; done
 
+# CPU milliseconds so far of the viewer's threads, as "GROUP MS" lines: paint (Mesa's painter
+# threads, llvmpipe-N, and the UI thread, which is the process's first), render (the render
+# worker and rayon's threads) and other.
+tick_ms=$((1000 / $(getconf CLK_TCK)))
+thread_cpu() {
+  for task in /proc/"$1"/task/*; do
+    [ -r "$task/stat" ] || continue
+    name=$(cat "$task/comm" 2>/dev/null || true)
+    ticks=$(sed 's/.*) //' "$task/stat" 2>/dev/null | awk '{print $12 + $13}')
+    [ -n "$ticks" ] || continue
+    case "$name" in
+      llvmpipe-*) group=paint ;;
+      rayon-*|render-worker) group=render ;;
+      *) if [ "$(basename "$task")" = "$1" ]; then group=paint; else group=other; fi ;;
+    esac
+    echo "$group $((ticks * tick_ms))"
+  done | awk '{ms[$1] += $2} END {print "paint", ms["paint"] + 0; print "render", ms["render"] + 0; print "other", ms["other"] + 0}'
+}
+cpu_of() { awk -v g="$1" '$1 == g {print $2}' "$2"; }
+
 # Percentile P (0-100) of the numbers in file $2.
 percentile() { sort -g "$2" | awk -v p="$1" '{a[NR]=$1} END {i=int((NR-1)*p/100)+1; print a[i]}'; }
 
 rows=""
+renderers=""
 for scene in scenes/scene1_02.txt "$work/dense_1e5.txt" "$work/dense_1e6.txt"; do
   case "$scene" in
     *dense_1e5*) name="dense, 100,000 spheres" ;;
@@ -53,6 +78,8 @@ for scene in scenes/scene1_02.txt "$work/dense_1e5.txt" "$work/dense_1e6.txt"; d
     done
     sleep 2
     start=$(wc -l <"$log")
+    thread_cpu "$viewer" >"$work/cpu_before"
+    started_ns=$(date +%s%N)
     # The colour image: left of the middle in a wide window (controls on the left), in the
     # upper half of a narrow one (images stacked or side by side below the toolbar).
     if [ "$width" -ge 900 ]; then x=$((320 + (width - 320) / 4)); y=$((height / 2)); else x=$((width / 4)); y=$((height / 3)); fi
@@ -63,21 +90,32 @@ for scene in scenes/scene1_02.txt "$work/dense_1e5.txt" "$work/dense_1e6.txt"; d
     xdotool mousemove --window "$window" 5 $((height - 5))
     for _ in $(seq 20); do xdotool key --window "$window" Right 2>/dev/null; sleep 0.15; done
     sleep 2
+    thread_cpu "$viewer" >"$work/cpu_after"
+    wall_ms=$((($(date +%s%N) - started_ns) / 1000000))
     kill "$viewer" 2>/dev/null || true
     wait "$viewer" 2>/dev/null || true
+    painted_with=$(awk '$1 == "renderer" {print $2; exit}' "$log")
+    renderers="$renderers $painted_with"
     tail -n +"$((start + 1))" "$log" > "$work/run.log"
     grep '^frame' "$work/run.log" | awk '{print $2}' > "$work/render.txt"
     grep '^frame' "$work/run.log" | awk '$3 != "NaN" {print $3}' > "$work/latency.txt"
     grep '^ui' "$work/run.log" | awk '{print $2}' > "$work/ui.txt"
     frames=$(wc -l <"$work/render.txt")
+    ui_frames=$(wc -l <"$work/ui.txt")
+    paint_ms=$(($(cpu_of paint "$work/cpu_after") - $(cpu_of paint "$work/cpu_before")))
+    render_ms=$(($(cpu_of render "$work/cpu_after") - $(cpu_of render "$work/cpu_before")))
+    paint_per_frame=$(echo "$paint_ms / ($ui_frames + 0.000001)" | bc -l)
+    paint_share=$(echo "100 * $paint_ms / (2 * $wall_ms)" | bc -l)
+    render_share=$(echo "100 * $render_ms / (2 * $wall_ms)" | bc -l)
     read -r frame_width frame_height <<<"$(grep '^frame' "$work/run.log" | tail -n 1 | awk '{print $4, $5}')"
     bench=$(target/release/examples/viewer_frame "$scene" "$frame_width" "$frame_height" 15)
     render=$(percentile 50 "$work/render.txt")
     ratio=$(echo "$render / $bench" | bc -l)
-    rows+=$(printf '| %s | %s×%s | %s×%s | %d | %.1f | %.1f | %.2f× | %.1f | %.1f | %.1f | %.1f |' \
+    rows+=$(printf '| %s | %s×%s | %s×%s | %d | %.1f | %.1f | %.2f× | %.1f | %.1f | %.1f | %.1f | %d | %.1f | %.0f %% | %.0f %% |' \
       "$name" "$width" "$height" "$frame_width" "$frame_height" "$frames" "$render" "$bench" "$ratio" \
       "$(percentile 50 "$work/latency.txt")" "$(percentile 95 "$work/latency.txt")" \
-      "$(percentile 50 "$work/ui.txt")" "$(percentile 95 "$work/ui.txt")")$'\n'
+      "$(percentile 50 "$work/ui.txt")" "$(percentile 95 "$work/ui.txt")" \
+      "$ui_frames" "$paint_per_frame" "$paint_share" "$render_share")$'\n'
     rm -rf "$home"
   done
 done
@@ -91,15 +129,22 @@ done
   echo "histogram), median over the frames of the run; *benchmark*: the same work for the same view"
   echo "size measured alone (\`examples/viewer_frame.rs\`, median of 15); *latency*: from the UI frame"
   echo "that applied the input to the one that takes the new picture in; *UI*: the UI thread's time"
-  echo "per frame (layout, tessellation, painting), as eframe measures it."
+  echo "per frame (layout, tessellation, painting), as eframe measures it; *UI frames*: how many"
+  echo "frames the UI drew in the run; *paint CPU per UI frame*: the CPU time of the UI thread and"
+  echo "of Mesa's painter threads (\`llvmpipe-N\`, which eframe's own figure leaves out) over the"
+  echo "run, per UI frame; *paint share* and *render share*: the part of the two cores' time over"
+  echo "the run that painting and the renderer (the render worker and rayon's threads) took."
+  echo
+  echo "This run: the window painted with $(echo $renderers | tr ' ' '\n' | sort -u | tr '\n' ' ' | sed 's/ $//')"
+  echo "(as the viewer's frame log says; \`RAYTRACER_RENDERER=${RAYTRACER_RENDERER:-}\`, see src/app/window.rs)."
   if [ -n "${LP_NUM_THREADS:-}" ]; then
     echo
     echo "This run: \`LP_NUM_THREADS=$LP_NUM_THREADS\`, Mesa's software painter on $LP_NUM_THREADS thread(s) instead of one per"
     echo "core."
   fi
   echo
-  echo "| scene | window px | image px | frames | frame ms (p50) | benchmark ms | frame / benchmark | latency ms p50 | latency ms p95 | UI ms p50 | UI ms p95 |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|"
+  echo "| scene | window px | image px | frames | frame ms (p50) | benchmark ms | frame / benchmark | latency ms p50 | latency ms p95 | UI ms p50 | UI ms p95 | UI frames | paint CPU ms per UI frame | paint share | render share |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
   printf '%s' "$rows"
 } > "$output"
 cat "$output"

@@ -43,14 +43,66 @@ fn blob_in_rows(
 
 #[test]
 fn real_window_shows_colour_and_depth_side_by_side() {
+    // Painted with OpenGL unless asked otherwise.
+    assert_eq!(shows_both_images(None), "glow");
+}
+
+#[test]
+fn real_window_painted_with_wgpu_when_asked_shows_both_images() {
+    assert_eq!(shows_both_images(Some("wgpu")), "wgpu");
+}
+
+#[test]
+fn an_unknown_renderer_is_refused_naming_the_choices() {
     let (_xvfb, display) = start_xvfb();
     let home = tempfile::tempdir().unwrap();
     let scene: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_01.txt");
-    let viewer = viewer_command(&display, home.path())
+    let child = viewer_command(&display, home.path())
+        .env("RAYTRACER_RENDERER", "vulkan")
         .arg("-input")
         .arg(&scene)
         .spawn()
         .unwrap();
+    let mut viewer = KillOnDrop(child);
+    // Refused before any window opens: it ends at once (a viewer that opened is killed).
+    let deadline = Instant::now() + Duration::from_secs(30);
+    let status = loop {
+        if let Some(status) = viewer.0.try_wait().unwrap() {
+            break status;
+        }
+        assert!(
+            Instant::now() < deadline,
+            "the viewer did not end within 30 s: it opened instead of refusing"
+        );
+        std::thread::sleep(Duration::from_millis(100));
+    };
+    let mut stderr = String::new();
+    if let Some(mut pipe) = viewer.0.stderr.take() {
+        use std::io::Read;
+        let _ = pipe.read_to_string(&mut stderr);
+    }
+    assert_eq!(status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("RAYTRACER_RENDERER is \"vulkan\"")
+            && stderr.contains("glow")
+            && stderr.contains("wgpu"),
+        "{stderr}"
+    );
+}
+
+/// Runs the viewer on scene1_01 with `RAYTRACER_RENDERER` set to `renderer` (unset with `None`)
+/// until both images are on screen; returns the renderer its frame log names.
+fn shows_both_images(renderer: Option<&str>) -> String {
+    let (_xvfb, display) = start_xvfb();
+    let home = tempfile::tempdir().unwrap();
+    let scene: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_01.txt");
+    let log = home.path().join("frames.log");
+    let mut command = viewer_command(&display, home.path());
+    command.env("RAYTRACER_FRAME_LOG", &log);
+    if let Some(renderer) = renderer {
+        command.env("RAYTRACER_RENDERER", renderer);
+    }
+    let viewer = command.arg("-input").arg(&scene).spawn().unwrap();
     let mut viewer = KillOnDrop(viewer);
 
     let shot_path = home.path().join("screen.png");
@@ -89,7 +141,12 @@ fn real_window_shows_colour_and_depth_side_by_side() {
                 if let Some(keep) = keep {
                     shot.save(keep).unwrap();
                 }
-                return;
+                let log = std::fs::read_to_string(&log).unwrap();
+                let first = log.lines().next().unwrap_or_default();
+                return first
+                    .strip_prefix("renderer ")
+                    .unwrap_or_else(|| panic!("no renderer line first in the frame log: {log}"))
+                    .to_owned();
             }
         }
         assert!(Instant::now() < deadline, "no frame on screen after 90 s");

@@ -2,6 +2,7 @@
 //! per frame it draws, so a script driving the real window can measure what the user sees
 //! (`scripts/window-frame-times.sh`):
 //!
+//! * `renderer NAME`: first, the renderer painting the window (`glow` or `wgpu`);
 //! * `ui MS`: the UI thread's time for the previous frame (egui's layout, tessellation and paint,
 //!   as eframe measures it);
 //! * `frame RENDER_MS LATENCY_MS WIDTH HEIGHT`: a new frame from the worker — its render time
@@ -30,10 +31,17 @@ impl FrameLog {
         })
     }
 
+    /// The renderer that paints the window (`glow` or `wgpu`), once at the start.
+    pub(crate) fn renderer(&mut self, name: &str) {
+        let _ = writeln!(self.out, "renderer {name}");
+        let _ = self.out.flush();
+    }
+
     /// The UI thread's seconds for the previous frame.
     pub(crate) fn ui(&mut self, seconds: Option<f32>) {
         if let Some(seconds) = seconds {
             let _ = writeln!(self.out, "ui {:.3}", f64::from(seconds) * 1e3);
+            let _ = self.out.flush();
         }
     }
 

@@ -181,7 +181,10 @@ impl ViewerApp {
             saving_open_scene: false,
             pending_replace: None,
             compare: compare::CompareState::default(),
-            frame_log: frame_log::FrameLog::from_environment(),
+            frame_log: frame_log::FrameLog::from_environment().map(|mut log| {
+                log.renderer(if cc.gl.is_some() { "glow" } else { "wgpu" });
+                log
+            }),
             ctx: cc.egui_ctx.clone(),
         };
         let ctx = cc.egui_ctx.clone();

@@ -1,23 +1,73 @@
-//! Opening the viewer's window: eframe's native options, and the one-line reason when no window
-//! can be opened here.
+//! Opening the viewer's window: eframe's native options, the renderer that paints it, and the
+//! one-line reason when no window can be opened here.
+//!
+//! The window is painted with OpenGL (glow) unless `RAYTRACER_RENDERER=wgpu` asks for wgpu. Where
+//! there is no GPU, both paint on the CPU with Mesa, on the cores the render worker needs, and
+//! OpenGL's painter (llvmpipe) costs about a seventh of the CPU per UI frame that Vulkan's
+//! (lavapipe, under wgpu) does: `scripts/window-frame-times.sh` measures both
+//! (`docs/window-frame-times.md`, `docs/window-frame-times-wgpu.md`).
+//! If OpenGL cannot be started and no renderer was asked for, wgpu is tried.
+
+use eframe::Renderer;
 
 use super::ViewerApp;
 use crate::cli::ViewerRequest;
 
+/// The environment variable that chooses the renderer: `glow` (OpenGL, the default) or `wgpu`.
+pub(crate) const RENDERER_VARIABLE: &str = "RAYTRACER_RENDERER";
+
+/// The renderer `value` (of [`RENDERER_VARIABLE`]) asks for: `None` when unset or empty (the
+/// default, with wgpu tried when OpenGL cannot start), an error naming the choices when it is
+/// neither `glow` nor `wgpu`.
+pub(crate) fn renderer_asked(value: Option<&std::ffi::OsStr>) -> Result<Option<Renderer>, String> {
+    match value.map(|value| value.to_str()) {
+        None => Ok(None),
+        Some(Some("")) => Ok(None),
+        Some(Some("glow")) => Ok(Some(Renderer::Glow)),
+        Some(Some("wgpu")) => Ok(Some(Renderer::Wgpu)),
+        Some(other) => Err(format!(
+            "{RENDERER_VARIABLE} is {:?}: it must be glow (OpenGL) or wgpu",
+            other.unwrap_or("(not UTF-8)")
+        )),
+    }
+}
+
 /// Opens the viewer window and runs it until closed.
 pub fn run(request: ViewerRequest) -> eframe::Result {
+    let asked = renderer_asked(std::env::var_os(RENDERER_VARIABLE).as_deref())
+        .map_err(|reason| eframe::Error::AppCreation(reason.into()))?;
+    let first = asked.unwrap_or(Renderer::Glow);
+    let opened = std::cell::Cell::new(false);
+    let outcome = run_with(first, request.clone(), &opened);
+    match outcome {
+        // OpenGL could not start (no window came up): wgpu, unless OpenGL was asked for.
+        Err(_) if asked.is_none() && !opened.get() => run_with(Renderer::Wgpu, request, &opened),
+        outcome => outcome,
+    }
+}
+
+/// Runs the viewer painted by `renderer`; `opened` is set once the app is created.
+fn run_with(
+    renderer: Renderer,
+    request: ViewerRequest,
+    opened: &std::cell::Cell<bool>,
+) -> eframe::Result {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("raytracer")
             .with_inner_size([1280.0, 720.0])
             .with_min_inner_size([320.0, 240.0])
             .with_drag_and_drop(true),
+        renderer,
         ..Default::default()
     };
     eframe::run_native(
         "raytracer",
         options,
-        Box::new(|cc| Ok(Box::new(ViewerApp::new(cc, request)))),
+        Box::new(|cc| {
+            opened.set(true);
+            Ok(Box::new(ViewerApp::new(cc, request)))
+        }),
     )
 }
 
@@ -33,5 +83,30 @@ pub fn no_display_reason() -> Option<&'static str> {
              render to files instead: raytracer -input FILE -output FILE.png \
              [-depth DMIN DMAX FILE.png]",
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::ffi::OsStr;
+
+    #[test]
+    fn the_renderer_variable_chooses_opengl_or_wgpu_and_names_the_choices_otherwise() {
+        assert_eq!(renderer_asked(None), Ok(None));
+        assert_eq!(renderer_asked(Some(OsStr::new(""))), Ok(None));
+        assert_eq!(
+            renderer_asked(Some(OsStr::new("glow"))),
+            Ok(Some(Renderer::Glow))
+        );
+        assert_eq!(
+            renderer_asked(Some(OsStr::new("wgpu"))),
+            Ok(Some(Renderer::Wgpu))
+        );
+        let error = renderer_asked(Some(OsStr::new("vulkan"))).unwrap_err();
+        assert!(
+            error.contains("\"vulkan\"") && error.contains("glow") && error.contains("wgpu"),
+            "{error}"
+        );
     }
 }

@@ -23,7 +23,8 @@ use crate::output::atomic::remove_temporary_files;
 pub fn start_thread_pool() -> Result<(), rayon::ThreadPoolBuildError> {
     let wanted = std::thread::available_parallelism().map_or(1, usize::from);
     let startable = count_startable_threads(wanted);
-    let builder = rayon::ThreadPoolBuilder::new();
+    // Named, so that a profiler or `top -H` tells the renderer's threads from the painter's.
+    let builder = rayon::ThreadPoolBuilder::new().thread_name(|index| format!("rayon-{index}"));
     let builder = match startable {
         0 => builder.num_threads(1).use_current_thread(),
         n => builder.num_threads(n),

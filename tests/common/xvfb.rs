@@ -1,9 +1,9 @@
 //! A real X server for the tests that run the real viewer window: Xvfb on a free display, and
 //! screenshots of it. Needs `Xvfb` and ImageMagick's `import` (scripts/test.sh installs them).
 
+use std::io::{BufRead, BufReader};
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
-use std::time::{Duration, Instant};
 
 use image::RgbImage;
 
@@ -17,39 +17,35 @@ impl Drop for KillOnDrop {
     }
 }
 
-/// Starts Xvfb on a free display (1280×800); returns it and the display name.
+/// Starts Xvfb on a free display (1280×800); returns it and the display name. Xvfb picks the
+/// display itself and names it once it accepts connections (`-displayfd`), so tests running at
+/// once never share one.
 pub(crate) fn start_xvfb() -> (KillOnDrop, String) {
-    for number in 90..140 {
-        if Path::new(&format!("/tmp/.X{number}-lock")).exists() {
-            continue;
-        }
-        let display = format!(":{number}");
-        let child = Command::new("Xvfb")
-            .args([
-                display.as_str(),
-                "-screen",
-                "0",
-                "1280x800x24",
-                "-nolisten",
-                "tcp",
-            ])
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
-            .spawn()
-            .expect("Xvfb is needed for this test (scripts/test.sh installs it)");
-        let mut xvfb = KillOnDrop(child);
-        let deadline = Instant::now() + Duration::from_secs(10);
-        while Instant::now() < deadline {
-            if Path::new(&format!("/tmp/.X11-unix/X{number}")).exists() {
-                return (xvfb, display);
-            }
-            if let Ok(Some(_)) = xvfb.0.try_wait() {
-                break; // display taken meanwhile: try the next
-            }
-            std::thread::sleep(Duration::from_millis(50));
-        }
+    let child = Command::new("Xvfb")
+        .args([
+            "-displayfd",
+            "1",
+            "-screen",
+            "0",
+            "1280x800x24",
+            "-nolisten",
+            "tcp",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("Xvfb is needed for this test (scripts/test.sh installs it)");
+    let mut xvfb = KillOnDrop(child);
+    let mut number = String::new();
+    if let Some(stdout) = xvfb.0.stdout.take() {
+        let _ = BufReader::new(stdout).read_line(&mut number);
     }
-    panic!("could not start Xvfb on any display :90..:139");
+    let number = number.trim();
+    assert!(
+        !number.is_empty() && number.bytes().all(|b| b.is_ascii_digit()),
+        "Xvfb did not start (it named no display)"
+    );
+    (xvfb, format!(":{number}"))
 }
 
 /// A screenshot of the whole X screen (ImageMagick's `import`).
@@ -73,6 +69,8 @@ pub(crate) fn viewer_command(display: &str, home: &Path) -> Command {
     command
         .env("DISPLAY", display)
         .env_remove("WAYLAND_DISPLAY")
+        .env_remove("RAYTRACER_RENDERER")
+        .env_remove("RAYTRACER_FRAME_LOG")
         .env("HOME", home)
         .env("XDG_DATA_HOME", home.join("data"))
         .env("XDG_CONFIG_HOME", home.join("config"))
