@@ -44,12 +44,45 @@ fn blob_in_rows(
 #[test]
 fn real_window_shows_colour_and_depth_side_by_side() {
     // Painted with OpenGL unless asked otherwise.
-    assert_eq!(shows_both_images(None), "glow");
+    assert_eq!(shows_both_images(None, &[]), "glow");
 }
 
 #[test]
 fn real_window_painted_with_wgpu_when_asked_shows_both_images() {
-    assert_eq!(shows_both_images(Some("wgpu")), "wgpu");
+    assert_eq!(shows_both_images(Some("wgpu"), &[]), "wgpu");
+}
+
+/// Mesa finds no OpenGL driver (its Vulkan one is found apart).
+const NO_OPENGL: [(&str, &str); 2] = [
+    ("LIBGL_DRIVERS_PATH", "/nonexistent"),
+    ("GALLIUM_DRIVER", "nonexistent"),
+];
+
+#[test]
+fn where_opengl_cannot_start_the_window_is_painted_with_wgpu() {
+    assert_eq!(shows_both_images(None, &NO_OPENGL), "wgpu");
+}
+
+#[test]
+fn opengl_asked_for_where_it_cannot_start_is_an_error_not_another_renderer() {
+    let (_xvfb, display) = start_xvfb();
+    let home = tempfile::tempdir().unwrap();
+    let scene: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_01.txt");
+    let child = viewer_command(&display, home.path())
+        .env("RAYTRACER_RENDERER", "glow")
+        .envs(NO_OPENGL)
+        .arg("-input")
+        .arg(&scene)
+        .spawn()
+        .unwrap();
+    let mut viewer = KillOnDrop(child);
+    let status = viewer.wait_within(
+        Duration::from_secs(60),
+        "the viewer did not end within 60 s: it opened with another renderer",
+    );
+    let stderr = viewer.stderr_text();
+    assert_eq!(status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("cannot open the viewer window"), "{stderr}");
 }
 
 #[test]
@@ -65,22 +98,11 @@ fn an_unknown_renderer_is_refused_naming_the_choices() {
         .unwrap();
     let mut viewer = KillOnDrop(child);
     // Refused before any window opens: it ends at once (a viewer that opened is killed).
-    let deadline = Instant::now() + Duration::from_secs(30);
-    let status = loop {
-        if let Some(status) = viewer.0.try_wait().unwrap() {
-            break status;
-        }
-        assert!(
-            Instant::now() < deadline,
-            "the viewer did not end within 30 s: it opened instead of refusing"
-        );
-        std::thread::sleep(Duration::from_millis(100));
-    };
-    let mut stderr = String::new();
-    if let Some(mut pipe) = viewer.0.stderr.take() {
-        use std::io::Read;
-        let _ = pipe.read_to_string(&mut stderr);
-    }
+    let status = viewer.wait_within(
+        Duration::from_secs(30),
+        "the viewer did not end within 30 s: it opened instead of refusing",
+    );
+    let stderr = viewer.stderr_text();
     assert_eq!(status.code(), Some(1), "{stderr}");
     assert!(
         stderr.contains("RAYTRACER_RENDERER is \"vulkan\"")
@@ -91,14 +113,17 @@ fn an_unknown_renderer_is_refused_naming_the_choices() {
 }
 
 /// Runs the viewer on scene1_01 with `RAYTRACER_RENDERER` set to `renderer` (unset with `None`)
-/// until both images are on screen; returns the renderer its frame log names.
-fn shows_both_images(renderer: Option<&str>) -> String {
+/// and the variables `environment` until both images are on screen; returns the renderer its
+/// frame log names.
+fn shows_both_images(renderer: Option<&str>, environment: &[(&str, &str)]) -> String {
     let (_xvfb, display) = start_xvfb();
     let home = tempfile::tempdir().unwrap();
     let scene: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_01.txt");
     let log = home.path().join("frames.log");
     let mut command = viewer_command(&display, home.path());
-    command.env("RAYTRACER_FRAME_LOG", &log);
+    command
+        .env("RAYTRACER_FRAME_LOG", &log)
+        .envs(environment.iter().copied());
     if let Some(renderer) = renderer {
         command.env("RAYTRACER_RENDERER", renderer);
     }
@@ -109,12 +134,10 @@ fn shows_both_images(renderer: Option<&str>) -> String {
     let deadline = Instant::now() + Duration::from_secs(90);
     loop {
         if let Ok(Some(status)) = viewer.0.try_wait() {
-            let mut stderr = String::new();
-            if let Some(mut pipe) = viewer.0.stderr.take() {
-                use std::io::Read;
-                let _ = pipe.read_to_string(&mut stderr);
-            }
-            panic!("the viewer exited early ({status}): {stderr}");
+            panic!(
+                "the viewer exited early ({status}): {}",
+                viewer.stderr_text()
+            );
         }
         if let Some(shot) = screenshot(&display, &shot_path) {
             let red = blob(&shot, |p| p[0] > 250 && p[1] < 5 && p[2] < 5);

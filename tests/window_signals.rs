@@ -81,17 +81,10 @@ fn sigterm_saves_the_settings_before_the_viewer_ends() {
         .status()
         .unwrap();
     assert!(sent.success());
-    let deadline = Instant::now() + Duration::from_secs(30);
-    let status = loop {
-        if let Some(status) = viewer.0.try_wait().unwrap() {
-            break status;
-        }
-        assert!(
-            Instant::now() < deadline,
-            "the viewer did not end after SIGTERM"
-        );
-        std::thread::sleep(Duration::from_millis(50));
-    };
+    let status = viewer.wait_within(
+        Duration::from_secs(30),
+        "the viewer did not end after SIGTERM",
+    );
     assert_eq!(status.code(), Some(143), "exit 128 + 15");
     assert!(
         texts_under(&home.path().join("data"))

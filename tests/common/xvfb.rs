@@ -1,9 +1,10 @@
 //! A real X server for the tests that run the real viewer window: Xvfb on a free display, and
 //! screenshots of it. Needs `Xvfb` and ImageMagick's `import` (scripts/test.sh installs them).
 
-use std::io::{BufRead, BufReader};
+use std::io::{BufRead, BufReader, Read};
 use std::path::Path;
-use std::process::{Child, Command, Stdio};
+use std::process::{Child, Command, ExitStatus, Stdio};
+use std::time::{Duration, Instant};
 
 use image::RgbImage;
 
@@ -14,6 +15,29 @@ impl Drop for KillOnDrop {
     fn drop(&mut self) {
         let _ = self.0.kill();
         let _ = self.0.wait();
+    }
+}
+
+impl KillOnDrop {
+    /// Waits for the process to end, at most `within`; fails with `late` if it has not by then.
+    pub(crate) fn wait_within(&mut self, within: Duration, late: &str) -> ExitStatus {
+        let deadline = Instant::now() + within;
+        loop {
+            if let Some(status) = self.0.try_wait().unwrap() {
+                return status;
+            }
+            assert!(Instant::now() < deadline, "{late}");
+            std::thread::sleep(Duration::from_millis(50));
+        }
+    }
+
+    /// What the process wrote to its piped standard error (read to the end).
+    pub(crate) fn stderr_text(&mut self) -> String {
+        let mut text = String::new();
+        if let Some(mut pipe) = self.0.stderr.take() {
+            let _ = pipe.read_to_string(&mut text);
+        }
+        text
     }
 }
 
