@@ -85,6 +85,10 @@ fn print_or_fail(text: &str, status: ExitCode) -> ExitCode {
 
 #[cfg(feature = "gui")]
 fn open_viewer(request: raytracer::cli::ViewerRequest) -> ExitCode {
+    if let Some(problem) = raytracer::app::renderer_problem() {
+        print_err(&format!("raytracer: {problem}\n"));
+        return ExitCode::from(2);
+    }
     if let Some(reason) = raytracer::app::no_display_reason() {
         print_err(&format!("raytracer: {reason}\n"));
         return ExitCode::from(1);

@@ -59,7 +59,7 @@ use crate::cli::ViewerRequest;
 use crate::render::View;
 
 pub use self::input::{KEY_ORBIT_RAD, KEY_PAN_FRACTION, KEY_ZOOM_FACTOR};
-pub use self::window::{no_display_reason, run};
+pub use self::window::{no_display_reason, renderer_problem, run};
 
 /// Image size used until the first layout tells the real one.
 const INITIAL_SIZE_PX: (u32, u32) = (512, 512);

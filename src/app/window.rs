@@ -6,7 +6,8 @@
 //! OpenGL's painter (llvmpipe) costs about a seventh of the CPU per UI frame that Vulkan's
 //! (lavapipe, under wgpu) does: `scripts/window-frame-times.sh` measures both
 //! (`docs/window-frame-times.md`, `docs/window-frame-times-wgpu.md`).
-//! If OpenGL cannot be started and no renderer was asked for, wgpu is tried.
+//! If OpenGL cannot be started and no renderer was asked for, wgpu is tried (and standard error
+//! says why).
 
 use eframe::Renderer;
 
@@ -20,28 +21,46 @@ pub(crate) const RENDERER_VARIABLE: &str = "RAYTRACER_RENDERER";
 /// default, with wgpu tried when OpenGL cannot start), an error naming the choices when it is
 /// neither `glow` nor `wgpu`.
 pub(crate) fn renderer_asked(value: Option<&std::ffi::OsStr>) -> Result<Option<Renderer>, String> {
-    match value.map(|value| value.to_str()) {
-        None => Ok(None),
-        Some(Some("")) => Ok(None),
-        Some(Some("glow")) => Ok(Some(Renderer::Glow)),
-        Some(Some("wgpu")) => Ok(Some(Renderer::Wgpu)),
-        Some(other) => Err(format!(
+    match value.map(|value| (value.to_str(), value)) {
+        None | Some((Some(""), _)) => Ok(None),
+        Some((Some("glow"), _)) => Ok(Some(Renderer::Glow)),
+        Some((Some("wgpu"), _)) => Ok(Some(Renderer::Wgpu)),
+        Some((_, value)) => Err(format!(
             "{RENDERER_VARIABLE} is {:?}: it must be glow (OpenGL) or wgpu",
-            other.unwrap_or("(not UTF-8)")
+            value.to_string_lossy()
         )),
     }
 }
 
-/// Opens the viewer window and runs it until closed.
+/// Why the environment's renderer choice cannot be followed, if it cannot: one line for the
+/// user, naming the choices (checked before anything else of the viewer starts).
+pub fn renderer_problem() -> Option<String> {
+    renderer_asked(std::env::var_os(RENDERER_VARIABLE).as_deref()).err()
+}
+
+/// Opens the viewer window and runs it until closed. When OpenGL cannot start and no renderer
+/// was asked for, says why on standard error and paints with wgpu; when both fail, the error
+/// names both.
 pub fn run(request: ViewerRequest) -> eframe::Result {
     let asked = renderer_asked(std::env::var_os(RENDERER_VARIABLE).as_deref())
         .map_err(|reason| eframe::Error::AppCreation(reason.into()))?;
     let first = asked.unwrap_or(Renderer::Glow);
     let opened = std::cell::Cell::new(false);
     let outcome = run_with(first, request.clone(), &opened);
+    // Another renderer only when OpenGL was not asked for, never came up (so no window was
+    // shown or closed) and no termination signal has come meanwhile.
+    let retry = asked.is_none() && !opened.get() && crate::cli::process::stop_requested().is_none();
     match outcome {
-        // OpenGL could not start (no window came up): wgpu, unless OpenGL was asked for.
-        Err(_) if asked.is_none() && !opened.get() => run_with(Renderer::Wgpu, request, &opened),
+        Err(opengl_error) if retry => {
+            crate::cli::process::print_err(&format!(
+                "raytracer: OpenGL could not start ({opengl_error}); painting with wgpu\n"
+            ));
+            run_with(Renderer::Wgpu, request, &opened).map_err(|wgpu_error| {
+                eframe::Error::AppCreation(
+                    format!("OpenGL: {opengl_error}; wgpu: {wgpu_error}").into(),
+                )
+            })
+        }
         outcome => outcome,
     }
 }

@@ -60,14 +60,22 @@ pub(crate) fn start_xvfb() -> (KillOnDrop, String) {
         .spawn()
         .expect("Xvfb is needed for this test (scripts/test.sh installs it)");
     let mut xvfb = KillOnDrop(child);
-    let mut number = String::new();
+    // Read on a thread, so that an Xvfb that hangs fails the test after 10 s (and is killed).
+    let (sender, named) = std::sync::mpsc::channel();
     if let Some(stdout) = xvfb.0.stdout.take() {
-        let _ = BufReader::new(stdout).read_line(&mut number);
+        std::thread::spawn(move || {
+            let mut number = String::new();
+            let _ = BufReader::new(stdout).read_line(&mut number);
+            let _ = sender.send(number);
+        });
     }
+    let number = named
+        .recv_timeout(Duration::from_secs(10))
+        .unwrap_or_default();
     let number = number.trim();
     assert!(
         !number.is_empty() && number.bytes().all(|b| b.is_ascii_digit()),
-        "Xvfb did not start (it named no display)"
+        "Xvfb did not start within 10 s (it named no display)"
     );
     (xvfb, format!(":{number}"))
 }
