@@ -72,22 +72,14 @@ fn where_opengl_cannot_start_the_window_is_painted_with_wgpu() {
 #[test]
 fn opengl_asked_for_where_it_cannot_start_is_an_error_not_another_renderer() {
     let (_xvfb, display) = start_xvfb();
-    let home = tempfile::tempdir().unwrap();
-    let scene: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_01.txt");
-    let child = viewer_command(&display, home.path())
-        .env("RAYTRACER_RENDERER", "glow")
-        .envs(NO_OPENGL)
-        .arg("-input")
-        .arg(&scene)
-        .spawn()
-        .unwrap();
-    let mut viewer = KillOnDrop(child);
-    let status = viewer.wait_within(
+    let environment = [("RAYTRACER_RENDERER", "glow"), NO_OPENGL[0], NO_OPENGL[1]];
+    let (status, stderr) = run_until_it_ends(
+        &display,
+        &environment,
         Duration::from_secs(60),
         "the viewer did not end within 60 s: it opened with another renderer",
     );
-    let stderr = viewer.stderr_text();
-    assert_eq!(status.code(), Some(1), "{stderr}");
+    assert_eq!(status, Some(1), "{stderr}");
     assert!(stderr.contains("cannot open the viewer window"), "{stderr}");
     assert!(!stderr.contains("painting with wgpu"), "{stderr}");
 }
@@ -95,25 +87,38 @@ fn opengl_asked_for_where_it_cannot_start_is_an_error_not_another_renderer() {
 #[test]
 fn an_unknown_renderer_is_refused_naming_the_choices() {
     // Checked before the display is: no X server is needed (none answers on this display).
+    let (status, stderr) = run_until_it_ends(
+        ":9999",
+        &[("RAYTRACER_RENDERER", "vulkan")],
+        Duration::from_secs(30),
+        "the viewer did not end within 30 s: it opened instead of refusing",
+    );
+    assert_eq!(status, Some(2), "a usage error: {stderr}");
+    assert_eq!(
+        stderr.trim_end(),
+        "raytracer: RAYTRACER_RENDERER is \"vulkan\": it must be glow (OpenGL) or wgpu"
+    );
+}
+
+/// Runs the viewer on scene1_01 on `display` with the variables `environment` until it ends (it
+/// fails with `late` after `within`): its exit status and standard error.
+fn run_until_it_ends(
+    display: &str,
+    environment: &[(&str, &str)],
+    within: Duration,
+    late: &str,
+) -> (Option<i32>, String) {
     let home = tempfile::tempdir().unwrap();
     let scene: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_01.txt");
-    let child = viewer_command(":9999", home.path())
-        .env("RAYTRACER_RENDERER", "vulkan")
+    let child = viewer_command(display, home.path())
+        .envs(environment.iter().copied())
         .arg("-input")
         .arg(&scene)
         .spawn()
         .unwrap();
     let mut viewer = KillOnDrop(child);
-    let status = viewer.wait_within(
-        Duration::from_secs(30),
-        "the viewer did not end within 30 s: it opened instead of refusing",
-    );
-    let stderr = viewer.stderr_text();
-    assert_eq!(status.code(), Some(2), "a usage error: {stderr}");
-    assert_eq!(
-        stderr.trim_end(),
-        "raytracer: RAYTRACER_RENDERER is \"vulkan\": it must be glow (OpenGL) or wgpu"
-    );
+    let status = viewer.wait_within(within, late);
+    (status.code(), viewer.stderr_text())
 }
 
 /// Runs the viewer on scene1_01 with `RAYTRACER_RENDERER` set to `renderer` (unset with `None`)

@@ -35,15 +35,20 @@ pub(crate) fn renderer_asked(value: Option<&std::ffi::OsStr>) -> Result<Option<R
 /// Why the environment's renderer choice cannot be followed, if it cannot: one line for the
 /// user, naming the choices (checked before anything else of the viewer starts).
 pub fn renderer_problem() -> Option<String> {
-    renderer_asked(std::env::var_os(RENDERER_VARIABLE).as_deref()).err()
+    renderer_of_environment().err()
+}
+
+/// [`renderer_asked`] by this process's [`RENDERER_VARIABLE`].
+fn renderer_of_environment() -> Result<Option<Renderer>, String> {
+    renderer_asked(std::env::var_os(RENDERER_VARIABLE).as_deref())
 }
 
 /// Opens the viewer window and runs it until closed. When OpenGL cannot start and no renderer
 /// was asked for, says why on standard error and paints with wgpu; when both fail, the error
 /// names both.
 pub fn run(request: ViewerRequest) -> eframe::Result {
-    let asked = renderer_asked(std::env::var_os(RENDERER_VARIABLE).as_deref())
-        .map_err(|reason| eframe::Error::AppCreation(reason.into()))?;
+    let asked =
+        renderer_of_environment().map_err(|reason| eframe::Error::AppCreation(reason.into()))?;
     let first = asked.unwrap_or(Renderer::Glow);
     let opened = std::cell::Cell::new(false);
     let outcome = run_with(first, request.clone(), &opened);
