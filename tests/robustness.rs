@@ -387,6 +387,43 @@ fn inputs_that_never_end_or_are_too_large_are_refused_with_the_limit() {
     assert_eq!(names_in(folder.path()), ["big.txt"]);
 }
 
+#[test]
+fn a_pipe_that_goes_on_past_the_limit_is_refused_with_it() {
+    // A named pipe has no length to check beforehand: the reading stops once more than 1 GiB
+    // has come, with the limit in the error, and nothing is written.
+    let folder = tempfile::tempdir().unwrap();
+    let pipe = folder.path().join("endless.txt");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&pipe)
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let writer = std::thread::spawn(move || {
+        use std::io::Write as _;
+        let mut file = std::fs::OpenOptions::new().write(true).open(pipe).unwrap();
+        let block = vec![b' '; 1 << 20];
+        // 1 GiB and 64 MiB, unless the reader goes away first (then writing fails).
+        let mut written = 0usize;
+        while written < (1 << 30) + (64 << 20) && file.write_all(&block).is_ok() {
+            written += block.len();
+        }
+        written
+    });
+    let output = run_in(
+        folder.path(),
+        &["-input", "endless.txt", "-output", "c.png"],
+    );
+    let written = writer.join().unwrap();
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(1), "{text}");
+    assert!(
+        text.contains("endless.txt") && text.contains("past 1 GiB"),
+        "states the limit: {text}"
+    );
+    assert!(written > 1 << 30, "read past the limit: {written} bytes");
+    assert_eq!(names_in(folder.path()), ["endless.txt"]);
+}
+
 // --- 10. Supersampling memory --------------------------------------------------------------
 
 /// Runs the binary and samples its peak resident memory (VmHWM) until it exits.

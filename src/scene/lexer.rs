@@ -55,6 +55,11 @@ impl<'a> Lexer<'a> {
         }
     }
 
+    /// Bytes of the text consumed so far, and bytes left.
+    pub(crate) fn bytes_consumed_and_left(&self) -> (usize, usize) {
+        (self.offset, self.text.len() - self.offset)
+    }
+
     /// Byte offset of `token` (one of this lexer's) in the text.
     pub(crate) fn offset_of(&self, token: &Token<'_>) -> usize {
         token.text.as_ptr() as usize - self.text.as_ptr() as usize

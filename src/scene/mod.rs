@@ -90,6 +90,9 @@ pub fn load_scene(path: &Path) -> Result<Scene, LoadError> {
     load_scene_with_progress(path, &|_| {})
 }
 
+/// Bytes read between two progress reports while loading.
+const READ_BLOCK_BYTES: u64 = 1 << 20;
+
 /// Share of a load's progress given to reading the file (the rest is parsing).
 const READ_SHARE: f64 = 0.1;
 
@@ -116,22 +119,21 @@ pub fn load_scene_with_progress(
     }
     let expected = metadata.len().max(1);
     let mut bytes = Vec::with_capacity(usize::try_from(expected).unwrap_or(0));
-    let mut block = vec![0u8; 1 << 20];
     loop {
-        let read = match file.read(&mut block) {
+        // Straight into the list's spare room (one copy, not two), a block at a time for the
+        // progress; `read_to_end` retries interrupted reads.
+        match (&mut file).take(READ_BLOCK_BYTES).read_to_end(&mut bytes) {
             Ok(0) => break,
-            Ok(read) => read,
-            Err(error) if error.kind() == std::io::ErrorKind::Interrupted => continue,
+            Ok(_) => {}
             Err(error) => return Err(io_error(error)),
-        };
+        }
         // A pipe's length is not known beforehand: stop at the limit.
-        if (bytes.len() + read) as u64 > MAX_SCENE_BYTES {
+        if bytes.len() as u64 > MAX_SCENE_BYTES {
             return Err(LoadError::TooLarge {
                 path: name,
                 size: "the input goes on past 1 GiB".into(),
             });
         }
-        bytes.extend_from_slice(&block[..read]);
         progress(READ_SHARE * (bytes.len() as f64 / expected as f64).min(1.0));
     }
     let parse_progress = |share: f64| progress(READ_SHARE + (1.0 - READ_SHARE) * share);

@@ -70,6 +70,16 @@ const MAX_QUOTED_CHARS: usize = 40;
 /// Spheres parsed between two progress reports.
 pub(super) const SPHERES_PER_REPORT: usize = 16_384;
 
+/// Spheres parsed before the list makes room for the rest of the text ([`Parser::sphere`]).
+const SPHERES_BEFORE_RESERVE: usize = 4_096;
+
+/// Fewest bytes a sphere statement takes (`Sphere{center 0 0 0 radius 0}` is 30): the room made
+/// for the rest of a text never exceeds what it could hold.
+const MIN_SPHERE_BYTES: usize = 24;
+
+/// Fewest bytes a `MaterialIndex` statement takes (`MaterialIndex 0` is 15).
+const MIN_MATERIAL_INDEX_BYTES: usize = 15;
+
 /// A token as quoted in an error: escaped and shortened.
 fn quote(text: &str) -> String {
     let mut quoted: String = text.chars().take(MAX_QUOTED_CHARS).collect();
@@ -446,9 +456,31 @@ impl<'a> Parser<'a> {
             radius_world,
             material: self.current_material,
         });
+        if self.spheres.len() == SPHERES_BEFORE_RESERVE {
+            self.reserve_for_the_rest();
+        }
         if self.spheres.len().is_multiple_of(SPHERES_PER_REPORT) {
             (self.progress)(self.lexer.share_consumed());
         }
         Ok(())
+    }
+
+    /// Room for as many more spheres and `MaterialIndex` statements as the rest of the text holds
+    /// at the density seen so far, a tenth more to spare, and never more than it could hold at
+    /// all: a big file's lists then grow once instead of doubling twenty times, each time copying
+    /// them into fresh memory and leaving the old block behind (slower, and a higher peak). Room
+    /// not filled is address space only (its pages are never touched).
+    fn reserve_for_the_rest(&mut self) {
+        let (consumed, left) = self.lexer.bytes_consumed_and_left();
+        let more = |seen: usize, fewest_bytes: usize| {
+            let per_byte = seen as f64 / consumed.max(1) as f64;
+            ((left as f64 * per_byte * 1.1) as usize).min(left / fewest_bytes)
+        };
+        self.spheres
+            .reserve(more(self.spheres.len(), MIN_SPHERE_BYTES));
+        self.material_references.reserve(more(
+            self.material_references.len(),
+            MIN_MATERIAL_INDEX_BYTES,
+        ));
     }
 }

@@ -226,6 +226,19 @@ mod tests {
     }
 
     #[test]
+    fn a_big_file_lists_its_spheres_in_one_block_not_by_doubling() {
+        // 150,000 spheres: doubling from empty would leave room for 262,144; room made once for
+        // the whole text (the second half's run included) leaves about a tenth spare.
+        for count in [20_000, 150_000] {
+            let text = big_text(count);
+            let scene = parse_scene(&text).unwrap();
+            assert_eq!(scene.spheres.len(), count);
+            let spare = scene.spheres.capacity() as f64 / count as f64;
+            assert!((1.0..1.25).contains(&spare), "{count}: room for {spare}×");
+        }
+    }
+
+    #[test]
     fn an_error_in_the_second_half_is_the_one_a_single_thread_finds() {
         let text = big_text(120_000);
         let at = text.len() * 3 / 4;
