@@ -85,7 +85,7 @@ fn print_or_fail(text: &str, status: ExitCode) -> ExitCode {
 
 #[cfg(feature = "gui")]
 fn open_viewer(request: raytracer::cli::ViewerRequest) -> ExitCode {
-    if let Some(problem) = raytracer::app::renderer_problem() {
+    if let Some(problem) = raytracer::app::environment_problem() {
         print_err(&format!("raytracer: {problem}\n"));
         return ExitCode::from(2);
     }

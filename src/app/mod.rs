@@ -20,6 +20,7 @@
 //! * [`dialogs`]: native file dialogs; [`reload`]: watching the open file
 //! * [`inspect`]: read access for tests and tools
 //! * [`window`]: opening the window (or saying why none can be opened)
+//! * [`painter_priority`]: the window's software painter gives way to the renderer
 //! * [`ui`]: the drawing, one `*_ui` function per part
 
 pub(crate) mod actions;
@@ -32,6 +33,7 @@ pub(crate) mod input;
 pub(crate) mod inspect;
 pub mod job;
 pub(crate) mod layout;
+pub(crate) mod painter_priority;
 pub(crate) mod reload;
 pub(crate) mod scene_loading;
 pub mod state;
@@ -59,7 +61,7 @@ use crate::cli::ViewerRequest;
 use crate::render::View;
 
 pub use self::input::{KEY_ORBIT_RAD, KEY_PAN_FRACTION, KEY_ZOOM_FACTOR};
-pub use self::window::{no_display_reason, renderer_problem, run};
+pub use self::window::{environment_problem, no_display_reason, run};
 
 /// Image size used until the first layout tells the real one.
 const INITIAL_SIZE_PX: (u32, u32) = (512, 512);

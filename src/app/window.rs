@@ -12,6 +12,7 @@
 use eframe::Renderer;
 
 use super::ViewerApp;
+use super::painter_priority::{lower_painter_threads, painter_nice_of_environment};
 use crate::cli::ViewerRequest;
 
 /// The environment variable that chooses the renderer: `glow` (OpenGL, the default) or `wgpu`.
@@ -32,10 +33,14 @@ pub(crate) fn renderer_asked(value: Option<&std::ffi::OsStr>) -> Result<Option<R
     }
 }
 
-/// Why the environment's renderer choice cannot be followed, if it cannot: one line for the
-/// user, naming the choices (checked before anything else of the viewer starts).
-pub fn renderer_problem() -> Option<String> {
-    renderer_of_environment().err()
+/// Why the environment's choices for the window (its renderer, [`RENDERER_VARIABLE`]; its
+/// painter's priority,
+/// [`super::painter_priority::PAINTER_NICE_VARIABLE`]) cannot be followed, if they cannot: one line for
+/// the user, naming what may be chosen (checked before anything else of the viewer starts).
+pub fn environment_problem() -> Option<String> {
+    renderer_of_environment()
+        .err()
+        .or_else(|| painter_nice_of_environment().err())
 }
 
 /// [`renderer_asked`] by this process's [`RENDERER_VARIABLE`].
@@ -90,7 +95,14 @@ fn run_with(
         options,
         Box::new(|cc| {
             opened.set(true);
-            Ok(Box::new(ViewerApp::new(cc, request)))
+            // The painter's threads exist once its context does: they give way to the renderer.
+            let raise = painter_nice_of_environment().unwrap_or(0);
+            let lowered = lower_painter_threads(raise);
+            let mut app = ViewerApp::new(cc, request);
+            if let Some(log) = &mut app.frame_log {
+                log.painter_threads(lowered, raise);
+            }
+            Ok(Box::new(app))
         }),
     )
 }
