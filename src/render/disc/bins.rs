@@ -159,29 +159,41 @@ const MIN_BIN_CHUNK: usize = 16_384;
 /// Lists each disc in the bands its rows touch: chunks in parallel, each in two passes (count,
 /// then fill).
 pub(crate) fn bin_discs(discs: &[Disc], grid: &PixelGrid) -> Bands {
+    bin_by_rows(discs, grid, |disc| row_span(grid, disc))
+}
+
+/// Lists each of `items` in the bands of the image rows `rows` gives it (top row first, `None`:
+/// off the image), in the order they come: chunks in parallel, each in two passes (count, then
+/// fill).
+pub(crate) fn bin_by_rows<T: Sync>(
+    items: &[T],
+    grid: &PixelGrid,
+    rows: impl Fn(&T) -> Option<(usize, usize)> + Sync,
+) -> Bands {
     let band_count = (grid.height_px as usize).div_ceil(BAND_ROWS);
-    let chunk_len = discs
+    let chunk_len = items
         .len()
         .div_ceil(4 * rayon::current_num_threads())
         .max(MIN_BIN_CHUNK);
-    let chunks = discs
+    let chunks = items
         .par_chunks(chunk_len)
         .enumerate()
         .map(|(chunk_index, chunk)| {
             // Sphere counts fit u32 (the parser's limit), so do disc indices.
             let first_index = u32::try_from(chunk_index * chunk_len).unwrap_or(u32::MAX);
-            bin_chunk(chunk, first_index, grid, band_count)
+            let spans: Vec<Option<(usize, usize)>> = chunk
+                .iter()
+                .map(|item| rows(item).map(|(first, last)| (first / BAND_ROWS, last / BAND_ROWS)))
+                .collect();
+            bin_chunk(&spans, first_index, band_count)
         })
         .collect();
     Bands { chunks }
 }
 
-/// Bins `discs` (the first has index `first_index`) into `band_count` bands.
-fn bin_chunk(discs: &[Disc], first_index: u32, grid: &PixelGrid, band_count: usize) -> ChunkBands {
-    let spans: Vec<Option<(usize, usize)>> = discs
-        .iter()
-        .map(|disc| row_span(grid, disc).map(|(first, last)| (first / BAND_ROWS, last / BAND_ROWS)))
-        .collect();
+/// Bins items by their band spans (the first item has index `first_index`) into `band_count`
+/// bands.
+fn bin_chunk(spans: &[Option<(usize, usize)>], first_index: u32, band_count: usize) -> ChunkBands {
     let mut offsets = vec![0usize; band_count + 1];
     for &(first, last) in spans.iter().flatten() {
         for count in &mut offsets[first + 1..=last + 1] {
@@ -193,7 +205,7 @@ fn bin_chunk(discs: &[Disc], first_index: u32, grid: &PixelGrid, band_count: usi
     }
     let mut cursor = offsets.clone();
     let mut indices = vec![0u32; offsets[band_count]];
-    for (index, span) in (first_index..).zip(&spans) {
+    for (index, span) in (first_index..).zip(spans) {
         if let &Some((first, last)) = span {
             for band in first..=last {
                 indices[cursor[band]] = index;

@@ -70,9 +70,6 @@ pub(super) struct BandDisc {
     pub(super) disc: Disc,
     /// Its centre's column coordinate (`u / s + width/2 − ½`).
     pub(super) centre_column: f64,
-    /// The nearest t it can have anywhere: `w − r`, never above the t of any pixel it covers
-    /// (correctly rounded square root and subtraction are monotonic).
-    pub(super) front_t: f64,
     /// Its radius, `√r²`.
     pub(super) radius: f64,
 }
@@ -91,7 +88,6 @@ pub(super) fn gather_band_discs(
         BandDisc {
             disc,
             centre_column: disc.u * inverse_pixel + centre_column_offset,
-            front_t: disc.front_t(),
             radius: disc.radius_sq.sqrt(),
         }
     })

@@ -1,7 +1,7 @@
 //! A frame-wide, coarse depth test: once the nearest discs are drawn, the farthest t in each
 //! square tile of pixels bounds what a disc behind can still change, so discs hidden everywhere
 //! they could reach are culled before they are binned (hierarchical z over the frame in two
-//! levels, tiles and blocks of tiles, beside the one per band in [`super::occlusion`]).
+//! levels, tiles and blocks of tiles, beside the per-tile stop of the tile rasteriser).
 
 use rayon::prelude::*;
 

@@ -21,7 +21,8 @@
 //! * [`chord`]: the per-pixel primitives (a disc's test at a pixel, its chord on a row)
 //! * [`depth_order`]: discs sorted front to back, and the nearest ones that cover the image
 //! * [`coarse_depth`]: discs behind what the nearest ones drew, culled frame-wide
-//! * [`occlusion`]: dense scenes drawn front to back, hidden discs skipped per band
+//! * [`tiles`]: dense scenes drawn front to back tile by tile, each tile stopping where the rest
+//!   is hidden
 //! * [`raster`]: filling a band's pixels, and a whole frame
 //! * [`shade`]: colours from the visible spheres
 
@@ -29,9 +30,9 @@ mod bins;
 mod chord;
 mod coarse_depth;
 mod depth_order;
-mod occlusion;
 mod raster;
 mod shade;
+mod tiles;
 
 pub(crate) use bins::pixel_span;
 pub(crate) use depth_order::Depths;

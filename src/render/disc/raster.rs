@@ -11,8 +11,8 @@ use super::chord::{
 };
 use super::coarse_depth::CoarseDepth;
 use super::depth_order::{Depths, Plan};
-use super::occlusion::rasterise_band_front_to_back;
 use super::shade::frame_from_hits;
+use super::tiles::rasterise_discs_in_tiles;
 use crate::geometry::camera::PixelGrid;
 use crate::render::{Frame, NO_HIT, View};
 use crate::scene::Scene;
@@ -25,14 +25,9 @@ fn rasterise_band(
     grid: &PixelGrid,
     first_row: usize,
     (t, sphere): (&mut [f64], &mut [u32]),
-    front_to_back: bool,
 ) -> u64 {
     let band_discs = gather_band_discs(discs, list, grid);
-    if front_to_back {
-        rasterise_band_front_to_back(&band_discs, grid, first_row, t, sphere)
-    } else {
-        rasterise_band_in_order(&band_discs, grid, first_row, t, sphere)
-    }
+    rasterise_band_in_order(&band_discs, grid, first_row, t, sphere)
 }
 
 /// [`rasterise_band`] in file order, row by row (frames with few discs, or fewer than six over a
@@ -102,8 +97,9 @@ const FIRST_PASS_LAYERS: f64 = 4.0;
 /// [`super::depth_order::CULL_MIN_DISCS_PER_PIXEL`]) go in passes of depth slices, front to back:
 /// the first draws the nearest discs that cover the image [`FIRST_PASS_LAYERS`] times; each later
 /// one the next slices, covering twice as many layers as all before it, but only the discs that
-/// the coarse depth of what is drawn so far does not hide ([`CoarseDepth`]). Within a pass, bands
-/// cull again, finer. Ties still go to the first sphere in the file whatever the order.
+/// the coarse depth of what is drawn so far does not hide ([`CoarseDepth`]). Within a pass, each
+/// tile stops where the discs still to come lie behind it ([`super::tiles`]). Ties still go to
+/// the first sphere in the file whatever the order.
 pub(crate) fn rasterise_frame(
     scene: &Scene,
     view: &View,
@@ -125,8 +121,8 @@ pub(crate) fn rasterise_frame(
         .collect();
     let mut out = (t.as_mut_slice(), sphere.as_mut_slice());
     let disc_tests = match Plan::of(discs, depths, &grid, FIRST_PASS_LAYERS) {
-        Plan::FileOrder => rasterise_discs(discs, &grid, false, &mut out),
-        Plan::AnyOrder => rasterise_discs(discs, &grid, true, &mut out),
+        Plan::FileOrder => rasterise_discs(discs, &grid, Order::File, &mut out),
+        Plan::AnyOrder => rasterise_discs(discs, &grid, Order::FrontToBack, &mut out),
         Plan::Passes(mut passes) => {
             let mut disc_tests = 0;
             for pass in 0..passes.count() {
@@ -135,7 +131,7 @@ pub(crate) fn rasterise_frame(
                 }
                 let drawn = (pass > 0).then(|| CoarseDepth::of(out.0, &grid));
                 let discs = passes.take(pass, drawn.as_ref());
-                disc_tests += rasterise_discs(&discs, &grid, true, &mut out);
+                disc_tests += rasterise_discs(&discs, &grid, Order::FrontToBack, &mut out);
             }
             disc_tests
         }
@@ -145,14 +141,27 @@ pub(crate) fn rasterise_frame(
     frame
 }
 
-/// Draws `discs` into `t` and `sphere` (kept where already nearer), band by band in parallel;
-/// `front_to_back` when they come in that order, to cull per band. Returns the pixel–disc tests.
+/// The order discs come in to [`rasterise_discs`].
+#[derive(Clone, Copy)]
+enum Order {
+    /// File order: drawn row by row.
+    File,
+    /// Front to back: drawn tile by tile, each tile stopping where the rest is hidden
+    /// ([`super::tiles`]).
+    FrontToBack,
+}
+
+/// Draws `discs`, coming in `order`, into `t` and `sphere` (kept where already nearer), band by
+/// band in parallel. Returns the pixel–disc tests.
 fn rasterise_discs(
     discs: &[Disc],
     grid: &PixelGrid,
-    front_to_back: bool,
+    order: Order,
     (t, sphere): &mut (&mut [f64], &mut [u32]),
 ) -> u64 {
+    if let Order::FrontToBack = order {
+        return rasterise_discs_in_tiles(discs, grid, (t, sphere));
+    }
     let width = grid.width_px as usize;
     let bands = bin_discs(discs, grid);
     t.par_chunks_mut(width * BAND_ROWS)
@@ -160,7 +169,7 @@ fn rasterise_discs(
         .enumerate()
         .map(|(band, out)| {
             let first_row = band * BAND_ROWS;
-            rasterise_band(discs, bands.band(band), grid, first_row, out, front_to_back)
+            rasterise_band(discs, bands.band(band), grid, first_row, out)
         })
         .sum()
 }
