@@ -38,6 +38,17 @@ impl Bands {
         })
     }
 
+    /// How many discs band `band` lists.
+    pub(crate) fn band_len(&self, band: usize) -> usize {
+        self.chunks
+            .iter()
+            .map(|chunk| match chunk.offsets.get(band..=band + 1) {
+                Some(&[start, end]) => end - start,
+                _ => 0,
+            })
+            .sum()
+    }
+
     #[cfg(test)]
     /// How many (disc, band) entries the lists hold.
     pub(crate) fn listed(&self) -> usize {

@@ -13,7 +13,7 @@
 //! come in (the nearer t, and on an equal t the sphere first in the file).
 
 use rayon::prelude::*;
-use wide::f64x4;
+use wide::{f64x4, u32x4};
 
 use super::Disc;
 use super::bins::{BAND_ROWS, bin_by_rows, column_span, rows_of};
@@ -25,6 +25,23 @@ const TILE_COLUMNS: usize = 8;
 
 /// Pixels per SIMD group.
 const LANES: usize = 4;
+
+/// Per set of lanes (bit `i` for lane `i`), a mask of all ones in those lanes.
+const LANE_MASKS: [[u32; LANES]; 1 << LANES] = {
+    let mut masks = [[0; LANES]; 1 << LANES];
+    let mut set = 0;
+    while set < 1 << LANES {
+        let mut lane = 0;
+        while lane < LANES {
+            if set >> lane & 1 == 1 {
+                masks[set][lane] = u32::MAX;
+            }
+            lane += 1;
+        }
+        set += 1;
+    }
+    masks
+};
 
 /// A disc placed on the image: its nearest t and the image rows (top first) and columns its
 /// pixels may lie in, conservative (the exact test decides).
@@ -98,10 +115,12 @@ pub(super) fn rasterise_discs_in_tiles(
         .zip(sphere.par_chunks_mut(width * BAND_ROWS))
         .enumerate()
         .map(|(band, (t, sphere))| {
-            let band_discs: Vec<Placed> = bands
-                .band(band)
-                .map(|index| placed.get(index as usize).copied().unwrap_or(Placed::NONE))
-                .collect();
+            let mut band_discs = Vec::with_capacity(bands.band_len(band));
+            band_discs.extend(
+                bands
+                    .band(band)
+                    .map(|index| placed.get(index as usize).copied().unwrap_or(Placed::NONE)),
+            );
             let pixels = BandPixels {
                 t,
                 sphere,
@@ -116,6 +135,7 @@ pub(super) fn rasterise_discs_in_tiles(
 
 /// Draws a band's discs (in the order listed) into the band's `pixels`, its first row
 /// `first_row` of the image. Returns the pixel–disc tests made.
+#[inline(never)]
 fn rasterise_band(
     band_discs: &[Placed],
     grid: &PixelGrid,
@@ -134,25 +154,36 @@ fn rasterise_band(
     for (at, placed) in band_discs.iter().enumerate().rev() {
         nearest_to_come[at] = placed.front_t.min(nearest_to_come[at + 1]);
     }
-    // Per tile, the discs that reach it, in the order listed (a counting sort).
+    // Per tile, the discs that reach it, in the order listed (a counting sort). Most discs reach
+    // one or two tiles: the first two are written without a branch on how many, a write past a
+    // disc's last tile landing in a slot of that tile that a later disc overwrites, or in the
+    // one spare slot each tile's list has (never read); a tile past the last takes such writes.
     let tiles = width.div_ceil(TILE_COLUMNS);
-    let mut starts = vec![0u32; tiles + 1];
+    let tile_of = |column: u32| column as usize / TILE_COLUMNS;
+    // Discs per tile from a difference array: +1 at a disc's first tile, −1 after its last.
+    let mut reach = vec![0i32; tiles + 1];
     for placed in band_discs {
-        let (first, last) = placed.columns;
-        for count in
-            &mut starts[first as usize / TILE_COLUMNS + 1..=last as usize / TILE_COLUMNS + 1]
-        {
-            *count += 1;
-        }
+        reach[tile_of(placed.columns.0)] += 1;
+        reach[tile_of(placed.columns.1) + 1] -= 1;
     }
-    for tile in 0..tiles {
-        starts[tile + 1] += starts[tile];
+    let (mut starts, mut counts) = (vec![0u32; tiles + 1], vec![0u32; tiles + 1]);
+    let (mut count, mut start) = (0i32, 0u32);
+    for tile in 0..=tiles {
+        count += reach[tile];
+        // A count never falls below zero: every −1 follows its +1.
+        counts[tile] = count.unsigned_abs();
+        starts[tile] = start;
+        start += counts[tile] + 1;
     }
-    let mut lists = vec![0u32; starts[tiles] as usize];
+    let mut lists = vec![0u32; start as usize];
     let mut cursors = starts.clone();
     for (at, placed) in (0u32..).zip(band_discs) {
-        let (first, last) = placed.columns;
-        for cursor in &mut cursors[first as usize / TILE_COLUMNS..=last as usize / TILE_COLUMNS] {
+        let (first, last) = (tile_of(placed.columns.0), tile_of(placed.columns.1));
+        lists[cursors[first] as usize] = at;
+        cursors[first] += 1;
+        lists[cursors[first + 1] as usize] = at;
+        cursors[first + 1] += u32::from(last > first);
+        for cursor in &mut cursors[(first + 2).min(last + 1)..=last] {
             lists[*cursor as usize] = at;
             *cursor += 1;
         }
@@ -165,7 +196,7 @@ fn rasterise_band(
     };
     let mut disc_tests = 0;
     for tile in 0..tiles {
-        let list = &lists[starts[tile] as usize..starts[tile + 1] as usize];
+        let list = &lists[starts[tile] as usize..][..counts[tile] as usize];
         let columns = (
             tile * TILE_COLUMNS,
             ((tile + 1) * TILE_COLUMNS).min(width) - 1,
@@ -219,7 +250,11 @@ fn draw_tile(band: &Band, list: &[u32], columns: (usize, usize), pixels: &mut Ba
             (placed.columns.0 as usize).max(columns.0),
             (placed.columns.1 as usize).min(columns.1),
         );
-        let (tests, taken) = draw_disc(placed, rows, span, columns.0, pixels);
+        let (tests, taken) = if columns.1 + 1 - columns.0 == TILE_COLUMNS {
+            draw_disc_on_whole_tile(placed, rows, columns.0, pixels)
+        } else {
+            draw_disc(placed, rows, span, columns.0, pixels)
+        };
         disc_tests += tests;
         stale |= taken != 0;
         uncovered &= !taken;
@@ -234,8 +269,28 @@ const _: () = assert!(BAND_ROWS * TILE_COLUMNS <= TilePixels::BITS as usize);
 
 /// The farthest t among a tile's pixels (+∞ when one is uncovered), and its uncovered pixels.
 fn tile_depth(pixels: &BandPixels, (first, last): (usize, usize)) -> (f64, TilePixels) {
-    let mut farthest = f64::NEG_INFINITY;
     let mut uncovered: TilePixels = 0;
+    if last + 1 - first == TILE_COLUMNS {
+        // A whole tile: its rows in groups of four.
+        let infinity = f64x4::splat(f64::INFINITY);
+        let mut farthest = f64x4::splat(f64::NEG_INFINITY);
+        for (row, t_row) in pixels.t.chunks_exact(pixels.width).enumerate() {
+            for (group, t) in t_row[first..=last].chunks_exact(LANES).enumerate() {
+                let t = f64x4::new([t[0], t[1], t[2], t[3]]);
+                farthest = farthest.max(t);
+                let bit = row * TILE_COLUMNS + group * LANES;
+                uncovered |= TilePixels::from(t.simd_eq(infinity).to_bitmask()) << bit;
+            }
+        }
+        let farthest = farthest.to_array();
+        return (
+            farthest[0]
+                .max(farthest[1])
+                .max(farthest[2].max(farthest[3])),
+            uncovered,
+        );
+    }
+    let mut farthest = f64::NEG_INFINITY;
     for (row, t_row) in pixels.t.chunks_exact(pixels.width).enumerate() {
         for (column, &t) in t_row[first..=last].iter().enumerate() {
             farthest = if t > farthest { t } else { farthest };
@@ -243,6 +298,78 @@ fn tile_depth(pixels: &BandPixels, (first, last): (usize, usize)) -> (f64, TileP
         }
     }
     (farthest, uncovered)
+}
+
+/// [`draw_disc`] over a whole tile's width (from column `tile_column`): every row of `rows`
+/// takes the same two groups of four, without branches but for ties (rare) — a mispredicted
+/// branch costs more than the arithmetic it would save on these few pixels.
+#[inline]
+fn draw_disc_on_whole_tile(
+    placed: &Placed,
+    (first_row, last_row): (usize, usize),
+    tile_column: usize,
+    pixels: &mut BandPixels,
+) -> (u64, TilePixels) {
+    const _: () = assert!(TILE_COLUMNS == 2 * LANES);
+    let disc = &placed.disc;
+    let width = pixels.width;
+    let (radius_sq, centre_w) = (f64x4::splat(disc.radius_sq), f64x4::splat(disc.w));
+    let zero = f64x4::ZERO;
+    let u = &pixels.u_of_column[tile_column..tile_column + TILE_COLUMNS];
+    let centre_u = f64x4::splat(disc.u);
+    let du = [
+        f64x4::new([u[0], u[1], u[2], u[3]]) - centre_u,
+        f64x4::new([u[4], u[5], u[6], u[7]]) - centre_u,
+    ];
+    let du_sq = [du[0] * du[0], du[1] * du[1]];
+    let mut took: TilePixels = 0;
+    for row in first_row..=last_row {
+        let dv = pixels.v_of_row[row] - disc.v;
+        let dv_sq = f64x4::splat(dv * dv);
+        let at = row * width + tile_column..row * width + tile_column + TILE_COLUMNS;
+        let (Some(t_px), Some(sphere_px)) =
+            (pixels.t.get_mut(at.clone()), pixels.sphere.get_mut(at))
+        else {
+            continue;
+        };
+        let mut taken: u32 = 0;
+        let mut tied: u32 = 0;
+        let mut t_new = [0.0; TILE_COLUMNS];
+        let mut t_hit = [0.0; TILE_COLUMNS];
+        for (group, &du_sq) in du_sq.iter().enumerate() {
+            let lanes = group * LANES..(group + 1) * LANES;
+            let o = &t_px[lanes.clone()];
+            let t_old = f64x4::new([o[0], o[1], o[2], o[3]]);
+            let distance_sq = du_sq + dv_sq;
+            let inside = distance_sq.simd_le(radius_sq);
+            let t = centre_w - (radius_sq - distance_sq).max(zero).sqrt();
+            let nearer = inside & t.simd_lt(t_old);
+            taken |= nearer.to_bitmask() << lanes.start;
+            tied |= (inside & t.simd_eq(t_old)).to_bitmask() << lanes.start;
+            t_new[lanes.clone()].copy_from_slice(&nearer.select(t, t_old).to_array());
+            t_hit[lanes].copy_from_slice(&t.to_array());
+        }
+        if tied != 0 {
+            // Ties (rare): the sphere first in the file, with its own t (which differs from an
+            // equal one at most in the sign of a zero).
+            for (lane, &sphere) in sphere_px.iter().enumerate() {
+                if tied >> lane & 1 == 1 && disc.sphere < sphere {
+                    taken |= 1 << lane;
+                    t_new[lane] = t_hit[lane];
+                }
+            }
+        }
+        t_px.copy_from_slice(&t_new);
+        let sphere = u32x4::splat(disc.sphere);
+        for (group, sphere_px) in sphere_px.chunks_exact_mut(LANES).enumerate() {
+            let take = u32x4::new(LANE_MASKS[(taken >> (group * LANES) & 0b1111) as usize]);
+            let old = u32x4::new([sphere_px[0], sphere_px[1], sphere_px[2], sphere_px[3]]);
+            sphere_px.copy_from_slice(&(old ^ ((old ^ sphere) & take)).to_array());
+        }
+        took |= TilePixels::from(taken) << (row * TILE_COLUMNS);
+    }
+    let rows = (last_row + 1).saturating_sub(first_row) as u64;
+    (rows * TILE_COLUMNS as u64, took)
 }
 
 /// Draws one disc on `rows` of the band over columns `first..=last` of the tile whose first
@@ -269,71 +396,78 @@ fn draw_disc(
     let mut tests = 0;
     let mut took: TilePixels = 0;
     for row in first_row..=last_row {
-        let row_bit = row * TILE_COLUMNS;
         let dv = pixels.v_of_row[row] - disc.v;
         let dv_sq_scalar = dv * dv;
         let dv_sq = f64x4::splat(dv_sq_scalar);
         let t_row = &mut pixels.t[row * width..(row + 1) * width];
         let sphere_row = &mut pixels.sphere[row * width..(row + 1) * width];
-        let mut group = first / LANES * LANES;
-        while group <= last {
-            if group >= whole_groups_end {
-                // The row's last, partial group: one pixel at a time.
-                for column in group.max(first)..=last {
-                    tests += 1;
-                    let PixelHit { distance_sq, t } =
-                        pixel_hit(disc, pixels.u_of_column[column], dv_sq_scalar);
-                    let (t_px, sphere_px) = (&mut t_row[column], &mut sphere_row[column]);
-                    if distance_sq <= disc.radius_sq
-                        && (t < *t_px || (t == *t_px && disc.sphere < *sphere_px))
-                    {
-                        *t_px = t;
-                        *sphere_px = disc.sphere;
-                        took |= 1 << (row_bit + column - tile_column);
+        // Whole groups from the span's first to its last, then what lies beyond the row's whole
+        // groups one pixel at a time.
+        let start = first / LANES * LANES;
+        let end = ((last / LANES + 1) * LANES).min(whole_groups_end);
+        let mut bit = row * TILE_COLUMNS + start - tile_column;
+        if start < end {
+            let groups = t_row[start..end]
+                .chunks_exact_mut(LANES)
+                .zip(sphere_row[start..end].chunks_exact_mut(LANES))
+                .zip(pixels.u_of_column[start..end].chunks_exact(LANES));
+            for ((t_px, sphere_px), u) in groups {
+                let group_bit = bit;
+                bit += LANES;
+                let t_old = f64x4::new([t_px[0], t_px[1], t_px[2], t_px[3]]);
+                // Pixels already nearer than the disc can come are final for it.
+                let open = t_old.simd_ge(front_t);
+                if !open.any() {
+                    continue;
+                }
+                tests += LANES as u64;
+                let du = f64x4::new([u[0], u[1], u[2], u[3]]) - centre_u;
+                let distance_sq = du * du + dv_sq;
+                let live = distance_sq.simd_le(radius_sq) & open;
+                if !live.any() {
+                    continue;
+                }
+                let t = centre_w - (radius_sq - distance_sq).max(zero).sqrt();
+                let nearer = live & t.simd_lt(t_old);
+                let mut taken = nearer.to_bitmask();
+                let mut t_new = nearer.select(t, t_old).to_array();
+                let tied = (live & t.simd_eq(t_old)).to_bitmask();
+                if tied != 0 {
+                    // Ties (rare): the sphere first in the file (with its own t, which differs
+                    // from an equal one at most in the sign of a zero).
+                    let t = t.to_array();
+                    for (lane, &sphere) in sphere_px.iter().enumerate() {
+                        if tied >> lane & 1 == 1 && disc.sphere < sphere {
+                            taken |= 1 << lane;
+                            t_new[lane] = t[lane];
+                        }
                     }
                 }
-                break;
-            }
-            let at = group..group + LANES;
-            group += LANES;
-            let t_old: [f64; LANES] = t_row[at.clone()].try_into().unwrap_or([0.0; LANES]);
-            let t_old = f64x4::new(t_old);
-            // Four pixels already nearer than the disc can come.
-            if t_old.simd_lt(front_t).all() {
-                continue;
-            }
-            tests += LANES as u64;
-            let u: [f64; LANES] = pixels.u_of_column[at.clone()]
-                .try_into()
-                .unwrap_or([0.0; LANES]);
-            let du = f64x4::new(u) - centre_u;
-            let distance_sq = du * du + dv_sq;
-            let inside = distance_sq.simd_le(radius_sq);
-            if !inside.any() {
-                continue;
-            }
-            let t = centre_w - (radius_sq - distance_sq).max(zero).sqrt();
-            let mut taken = (inside & t.simd_lt(t_old)).to_bitmask();
-            let tied = (inside & t.simd_eq(t_old)).to_bitmask();
-            let sphere_px = &mut sphere_row[at.clone()];
-            if tied != 0 {
-                // Ties (rare): the sphere first in the file.
-                for (lane, &sphere) in sphere_px.iter().enumerate() {
-                    if tied >> lane & 1 == 1 && disc.sphere < sphere {
-                        taken |= 1 << lane;
-                    }
+                if taken == 0 {
+                    continue;
+                }
+                took |= TilePixels::from(taken) << group_bit;
+                t_px.copy_from_slice(&t_new);
+                for (lane, sphere) in sphere_px.iter_mut().enumerate() {
+                    *sphere = if taken >> lane & 1 == 1 {
+                        disc.sphere
+                    } else {
+                        *sphere
+                    };
                 }
             }
-            if taken == 0 {
-                continue;
-            }
-            took |= TilePixels::from(taken) << (row_bit + at.start - tile_column);
-            let t = t.to_array();
-            let t_px = &mut t_row[at];
-            for lane in 0..LANES {
-                let take = taken >> lane & 1 == 1;
-                t_px[lane] = if take { t[lane] } else { t_px[lane] };
-                sphere_px[lane] = if take { disc.sphere } else { sphere_px[lane] };
+        }
+        for column in first.max(whole_groups_end)..=last {
+            tests += 1;
+            let PixelHit { distance_sq, t } =
+                pixel_hit(disc, pixels.u_of_column[column], dv_sq_scalar);
+            let (t_px, sphere_px) = (&mut t_row[column], &mut sphere_row[column]);
+            if distance_sq <= disc.radius_sq
+                && (t < *t_px || (t == *t_px && disc.sphere < *sphere_px))
+            {
+                *t_px = t;
+                *sphere_px = disc.sphere;
+                took |= 1 << (row * TILE_COLUMNS + column - tile_column);
             }
         }
     }
@@ -471,6 +605,13 @@ mod tests {
         let centre = (8 - 1 - 4) * 8 + 3;
         assert_eq!((t[centre], sphere[centre]), (5.0, 3));
         assert_eq!(sphere.iter().filter(|&&s| s == 3).count(), 1);
+        // A tie between zeros of both signs: the winner's own t, −0, as the pixel-by-pixel
+        // rule gives it (w = −0, and on the rim two pixels right of the centre √0 = 0).
+        let (mut t, mut sphere) = (vec![0.0; 64], vec![10; 64]);
+        let disc = Disc { w: -0.0, ..disc };
+        rasterise_discs_in_tiles(&[disc], &grid, (&mut t, &mut sphere));
+        let rim = centre + 2;
+        assert_eq!((t[rim].to_bits(), sphere[rim]), ((-0.0f64).to_bits(), 3));
     }
 
     #[test]
