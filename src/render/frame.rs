@@ -90,7 +90,18 @@ impl Frame {
             .filter(|(grey_range, _)| *grey_range == range)
             .map(|(_, grey)| grey);
         if filtered.is_none() {
-            // The common case on its own, over the t alone (no index, no per-pixel match).
+            if map == DepthColourMap::Grey
+                && let Some(greys) = grey_levels(&self.t, range)
+            {
+                return greys
+                    .par_iter()
+                    .map(|&grey| match u8::try_from(grey) {
+                        Ok(grey) => pixel([grey; 3]),
+                        Err(_) => pixel(no_hit),
+                    })
+                    .collect();
+            }
+            // The other maps, over the t alone (no index, no per-pixel match).
             return self
                 .t
                 .par_iter()
@@ -135,4 +146,76 @@ fn image_from_pixels(width: u32, height: u32, pixels: Vec<[u8; 3]>) -> RgbImage 
     // would only stand in for a broken frame.
     RgbImage::from_raw(width, height, pixels.into_flattened())
         .unwrap_or_else(|| RgbImage::new(width, height))
+}
+
+/// The 8-bit grey of every t over `range` (`DepthRange::grey_u8`), 256 where there is no hit;
+/// `None` for a range without a finite, non-zero width (left to the general mapping). Written
+/// without branches, so that it runs several pixels at a time: the same operations, each
+/// correctly rounded, as the general mapping, so the same greys.
+fn grey_levels(t: &[f64], range: DepthRange) -> Option<Vec<u16>> {
+    let width = range.max_t - range.min_t;
+    if !(width.is_finite() && width != 0.0 && range.max_t.is_finite()) {
+        return None;
+    }
+    let mut greys = vec![0u16; t.len()];
+    greys
+        .par_chunks_mut(GREY_CHUNK)
+        .zip(t.par_chunks(GREY_CHUNK))
+        .for_each(|(greys, t)| {
+            for (grey, &t) in greys.iter_mut().zip(t) {
+                let hit = t < f64::INFINITY;
+                // clamp((max − t) / width, 0, 1) (no NaN here: t is finite or −∞), then
+                // truncated to 0..=255.
+                let level = ((range.max_t - t) / width).clamp(0.0, 1.0) * 255.0;
+                *grey = if hit { level as u16 } else { 256 };
+            }
+        });
+    Some(greys)
+}
+
+/// Pixels per parallel task of [`grey_levels`].
+const GREY_CHUNK: usize = 1 << 14;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::rng::SplitMix64;
+
+    #[test]
+    fn grey_levels_are_the_greys_of_the_general_mapping() {
+        // t all over the range and beyond it, on the edges of grey levels (t at min + k·width/255),
+        // infinite and NaN; ramps of either direction, narrow and far away.
+        let mut rng = SplitMix64::new(12);
+        let ranges = [
+            DepthRange::new(9.0, 10.0),
+            DepthRange::new(10.0, 9.0),
+            DepthRange::new(-3.0, 250.0),
+            DepthRange::new(1e7, 1e7 + 1e-3),
+        ];
+        for range in ranges {
+            let width = range.max_t - range.min_t;
+            let mut t: Vec<f64> = (0..20_000)
+                .map(|_| range.min_t + width * rng.uniform(-0.2, 1.2))
+                .collect();
+            t.extend((0..=255).map(|k| range.min_t + width * f64::from(k) / 255.0));
+            t.extend([
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+                f64::NAN,
+                range.min_t,
+                range.max_t,
+            ]);
+            let greys = grey_levels(&t, range).expect("a finite, non-zero width");
+            for (&t, &grey) in t.iter().zip(&greys) {
+                let wanted = if t == f64::INFINITY || t.is_nan() {
+                    256
+                } else {
+                    u16::from(range.grey_u8(t))
+                };
+                assert_eq!(grey, wanted, "t {t} over {range:?}");
+            }
+        }
+        assert!(grey_levels(&[1.0], DepthRange::new(2.0, 2.0)).is_none());
+        assert!(grey_levels(&[1.0], DepthRange::new(0.0, f64::INFINITY)).is_none());
+    }
 }
