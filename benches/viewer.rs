@@ -1,7 +1,8 @@
 //! Viewer latency: the work between a slider change and a frame ready to upload — rendering a
 //! 1024×1024 view and preparing both texture images (what the viewer's worker does) — for each
 //! course scene and for generated scenes of 1,000 and 100,000 spheres; and, alone, the depth
-//! histogram of a dense frame (the part of that work that counts every pixel's t).
+//! histogram of a dense frame (the part of that work that counts every pixel's t) and the grey
+//! depth image (the part that maps every pixel's t).
 
 use std::hint::black_box;
 use std::path::Path;
@@ -70,5 +71,30 @@ fn depth_histogram_1024x1024(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, viewer_frame_1024x1024, depth_histogram_1024x1024);
+/// The grey depth image of a 1024×1024 frame (what the depth texture and a depth file start
+/// from), of the course's scene1_02 and of the dense 100,000-sphere scene.
+fn depth_image_1024x1024(c: &mut Criterion) {
+    let mut group = c.benchmark_group("depth_image_1024x1024");
+    group.sample_size(50);
+    let course = load_scene(&Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_02.txt"))
+        .expect("the course scene");
+    for (name, scene) in [
+        ("scene1_02", course),
+        ("dense_100000", raytracer::oracle::dense_scene(7, 100_000)),
+    ] {
+        let job = job_1024x1024(scene);
+        let frame = raytracer::render::render(&job.scene, &job.view).expect("renders");
+        group.bench_function(name, |b| {
+            b.iter(|| black_box(&frame).depth_image(job.view.depth_range));
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(
+    benches,
+    viewer_frame_1024x1024,
+    depth_histogram_1024x1024,
+    depth_image_1024x1024
+);
 criterion_main!(benches);

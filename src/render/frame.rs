@@ -90,14 +90,18 @@ impl Frame {
             .filter(|(grey_range, _)| *grey_range == range)
             .map(|(_, grey)| grey);
         if filtered.is_none() {
+            let width = range.max_t - range.min_t;
             if map == DepthColourMap::Grey
-                && let Some(greys) = grey_levels(&self.t, range)
+                && width.is_finite()
+                && width != 0.0
+                && range.max_t.is_finite()
             {
-                return greys
+                return self
+                    .t
                     .par_iter()
-                    .map(|&grey| match u8::try_from(grey) {
-                        Ok(grey) => pixel([grey; 3]),
-                        Err(_) => pixel(no_hit),
+                    .map(|&t| match grey_level(t, range.max_t, width) {
+                        Some(grey) => pixel([grey; 3]),
+                        None => pixel(no_hit),
                     })
                     .collect();
             }
@@ -148,33 +152,17 @@ fn image_from_pixels(width: u32, height: u32, pixels: Vec<[u8; 3]>) -> RgbImage 
         .unwrap_or_else(|| RgbImage::new(width, height))
 }
 
-/// The 8-bit grey of every t over `range` (`DepthRange::grey_u8`), 256 where there is no hit;
-/// `None` for a range without a finite, non-zero width (left to the general mapping). Written
-/// without branches, so that it runs several pixels at a time: the same operations, each
-/// correctly rounded, as the general mapping, so the same greys.
-fn grey_levels(t: &[f64], range: DepthRange) -> Option<Vec<u16>> {
-    let width = range.max_t - range.min_t;
-    if !(width.is_finite() && width != 0.0 && range.max_t.is_finite()) {
-        return None;
-    }
-    let mut greys = vec![0u16; t.len()];
-    greys
-        .par_chunks_mut(GREY_CHUNK)
-        .zip(t.par_chunks(GREY_CHUNK))
-        .for_each(|(greys, t)| {
-            for (grey, &t) in greys.iter_mut().zip(t) {
-                let hit = t < f64::INFINITY;
-                // clamp((max − t) / width, 0, 1) (no NaN here: t is finite or −∞), then
-                // truncated to 0..=255.
-                let level = ((range.max_t - t) / width).clamp(0.0, 1.0) * 255.0;
-                *grey = if hit { level as u16 } else { 256 };
-            }
-        });
-    Some(greys)
+/// The 8-bit grey ([`DepthRange::grey_u8`]) of a hit at `t` over a range ending at `max_t`,
+/// `width` wide (finite, not zero); `None` for no hit. Without branches on t (which pixels hit,
+/// and where they fall on the ramp, is unpredictable in a dense frame): the same correctly
+/// rounded operations as the general mapping, so the same greys.
+#[inline]
+fn grey_level(t: f64, max_t: f64, width: f64) -> Option<u8> {
+    // clamp((max − t) / width, 0, 1) (no NaN: t is finite or −∞ where it counts), truncated to
+    // 0..=255.
+    let level = ((max_t - t) / width).clamp(0.0, 1.0) * 255.0;
+    (t < f64::INFINITY).then_some(level as u8)
 }
-
-/// Pixels per parallel task of [`grey_levels`].
-const GREY_CHUNK: usize = 1 << 14;
 
 #[cfg(test)]
 mod tests {
@@ -205,17 +193,14 @@ mod tests {
                 range.min_t,
                 range.max_t,
             ]);
-            let greys = grey_levels(&t, range).expect("a finite, non-zero width");
-            for (&t, &grey) in t.iter().zip(&greys) {
-                let wanted = if t == f64::INFINITY || t.is_nan() {
-                    256
-                } else {
-                    u16::from(range.grey_u8(t))
-                };
-                assert_eq!(grey, wanted, "t {t} over {range:?}");
+            for &t in &t {
+                let wanted = (t != f64::INFINITY && !t.is_nan()).then(|| range.grey_u8(t));
+                assert_eq!(
+                    grey_level(t, range.max_t, width),
+                    wanted,
+                    "t {t} over {range:?}"
+                );
             }
         }
-        assert!(grey_levels(&[1.0], DepthRange::new(2.0, 2.0)).is_none());
-        assert!(grey_levels(&[1.0], DepthRange::new(0.0, f64::INFINITY)).is_none());
     }
 }
