@@ -10,7 +10,11 @@
 //! x86-64). Every lane computes exactly what the one-pixel test computes — `du = u − c_u`,
 //! `du² + dv² ≤ r²`, `t = w − √(r² − du² − dv²)`, each operation correctly rounded — so the
 //! picture is the same bit for bit; the choice between spheres does not depend on the order they
-//! come in (the nearer t, and on an equal t the sphere first in the file).
+//! come in (the nearer t, and on an equal t the sphere first in the file). On a whole tile a disc
+//! takes both groups of every row it may cover without a branch (which pixels a disc wins is
+//! unpredictable, and a mispredicted branch costs more than the arithmetic it saves); on the
+//! image's last, narrower tile, the groups its columns reach, each skipped when all its pixels
+//! are already nearer than the disc can come.
 
 use rayon::prelude::*;
 use wide::{f64x4, u32x4};
