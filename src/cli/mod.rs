@@ -1,6 +1,7 @@
 //! The course-compatible command line: one flag table ([`flags`]) from which parsing, the usage
 //! text and writing a request back to arguments all come; the typed requests ([`request`]);
-//! usage errors ([`error`]); running a render request without a window ([`run`]) and its
+//! usage errors ([`error`]); running a render request without a window ([`run`]; the course's
+//! own command strip by strip, [`streamed`]) and its
 //! progress bars on a terminal ([`progress`]); comparing the user's images with the exact ones
 //! ([`compare`]).
 //!
@@ -16,6 +17,7 @@ pub(crate) mod progress;
 mod raw_args;
 mod request;
 pub mod run;
+mod streamed;
 mod system;
 #[cfg(test)]
 mod tests;

@@ -95,14 +95,17 @@ pub fn handle_termination_signals(on_signal: OnSignal) {
     // A file-size limit makes writes fail (EFBIG) instead of killing the program.
     let _ = signal_hook::flag::register(SIGXFSZ, Arc::new(AtomicBool::new(false)));
     // The handlers are registered on the thread that serves them, so that they never exist
-    // without it.
-    let _ = std::thread::Builder::new()
+    // without it; the program goes on once they are (a signal that came before would end it
+    // the default way, or not at all where the parent ignores it).
+    let (registered, ready) = std::sync::mpsc::channel();
+    let spawned = std::thread::Builder::new()
         .name("signals".into())
         .spawn(move || {
             let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP])
             else {
                 return;
             };
+            let _ = registered.send(());
             for signal in signals.forever() {
                 let first = STOP_SIGNAL.swap(signal, Ordering::AcqRel) == 0;
                 if on_signal == OnSignal::CloseViewer && first {
@@ -116,6 +119,10 @@ pub fn handle_termination_signals(on_signal: OnSignal) {
                 std::process::exit(i32::from(exit_status_of(signal)));
             }
         });
+    if spawned.is_ok() {
+        // An error: the thread ended without registering them.
+        let _ = ready.recv();
+    }
 }
 
 /// How a write to standard output or error ended.

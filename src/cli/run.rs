@@ -13,6 +13,7 @@ use super::compare::{CompareError, CompareReport, TheirImages, compare, read_the
 use super::error::UsageError;
 use super::flags::Flag;
 use super::progress::StepProgress;
+use super::streamed::{StreamedError, render_streamed, streams};
 use super::system::{available_memory_bytes, peak_memory_bytes};
 use crate::cli::RenderRequest;
 use crate::output::WriteError;
@@ -59,6 +60,15 @@ pub enum RunError {
     /// An image to compare could not be read or has the wrong size.
     #[error(transparent)]
     Compare(#[from] CompareError),
+}
+
+impl From<StreamedError> for RunError {
+    fn from(error: StreamedError) -> Self {
+        match error {
+            StreamedError::View(error) => Self::View(error),
+            StreamedError::Write(error) => Self::Write(error),
+        }
+    }
 }
 
 impl RunError {
@@ -307,8 +317,23 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
     );
     let memory_bound = check_memory(request, render_bound)?.max(load_bound);
 
-    let started = Instant::now();
     let view = request_view(&scene, request);
+    if streams(request) {
+        let streamed = render_streamed(request, &scene, &view)?;
+        return Ok(RunReport {
+            sphere_count: scene.spheres.len(),
+            parse,
+            render: streamed.render,
+            write: streamed.write,
+            size_px: (request.width_px, request.height_px),
+            samples_per_pixel: 1,
+            threads: rayon::current_num_threads(),
+            disc_tests: streamed.disc_tests,
+            memory_bound,
+            compare: None,
+        });
+    }
+    let started = Instant::now();
     let frame = {
         let bar = StepProgress::start("rendering");
         render_with_progress(&scene, &view, &request.quality, &|share| bar.report(share))?

@@ -132,10 +132,57 @@ impl Drop for Temporary {
     }
 }
 
-/// One staged file: its complete content in a temporary file, and where it goes.
-struct Staged {
+/// One staged file: its complete content in a temporary file, synced, and where it goes.
+pub(crate) struct Staged {
     temporary: Temporary,
     destination: PathBuf,
+}
+
+/// A file being staged a piece at a time: [`Staging::begin`], write to [`Staging::file`], then
+/// [`Staging::finish`] and [`FileSet::push`]. Dropped unfinished, its temporary file is removed.
+pub(crate) struct Staging {
+    staged: Staged,
+}
+
+impl Staging {
+    /// Creates the temporary file for `destination` (with `mode` before the umask).
+    pub(crate) fn begin(destination: &Path, mode: u32) -> Result<Self, WriteError> {
+        let error = |source| io_error(destination, source);
+        if destination.is_dir() {
+            return Err(error(is_a_folder()));
+        }
+        let temporary = Temporary::create(folder_of(destination), mode).map_err(error)?;
+        Ok(Self {
+            staged: Staged {
+                temporary,
+                destination: destination.to_path_buf(),
+            },
+        })
+    }
+
+    /// The temporary file, to write the content to.
+    pub(crate) fn file(&mut self) -> Result<&mut File, WriteError> {
+        let destination = &self.staged.destination;
+        match self.staged.temporary.file.as_mut() {
+            Some(file) => Ok(file),
+            None => Err(io_error(
+                destination,
+                std::io::Error::other("the temporary file is closed"),
+            )),
+        }
+    }
+
+    /// `source` as the error of writing this file.
+    pub(crate) fn error(&self, source: std::io::Error) -> WriteError {
+        io_error(&self.staged.destination, source)
+    }
+
+    /// Syncs the content to disk: the file is complete.
+    pub(crate) fn finish(mut self) -> Result<Staged, WriteError> {
+        let synced = self.file()?.sync_all();
+        synced.map_err(|source| self.error(source))?;
+        Ok(self.staged)
+    }
 }
 
 /// Files written all or nothing: [`FileSet::stage`] each, then [`FileSet::commit`].
@@ -183,24 +230,19 @@ impl FileSet {
         mode: u32,
         write: impl FnOnce(&mut dyn Write) -> Result<(), WriteError>,
     ) -> Result<(), WriteError> {
-        let error = |source| io_error(destination, source);
-        if destination.is_dir() {
-            return Err(error(is_a_folder()));
-        }
-        let mut temporary = Temporary::create(folder_of(destination), mode).map_err(error)?;
-        let Some(file) = temporary.file.as_mut() else {
-            return Err(error(std::io::Error::other("the temporary file is closed")));
-        };
-        let mut out = BufWriter::new(&mut *file);
+        let mut staging = Staging::begin(destination, mode)?;
+        let mut out = BufWriter::new(staging.file()?);
         write(&mut out)?;
-        out.flush().map_err(error)?;
+        let flushed = out.flush();
         drop(out);
-        file.sync_all().map_err(error)?;
-        self.staged.push(Staged {
-            temporary,
-            destination: destination.to_path_buf(),
-        });
+        flushed.map_err(|source| staging.error(source))?;
+        self.push(staging.finish()?);
         Ok(())
+    }
+
+    /// Adds a file staged a piece at a time ([`Staging`]).
+    pub(crate) fn push(&mut self, staged: Staged) {
+        self.staged.push(staged);
     }
 
     /// Adds the files `other` staged after this set's.

@@ -1,11 +1,11 @@
 //! 8-bit image files: the format is chosen by the file's extension (`.tga`: uncompressed 24-bit
-//! with the top row first; `.png`); every write is atomic ([`super::atomic`]).
+//! with the top row first, written by [`super::tga`]; `.png`); every write is atomic
+//! ([`super::atomic`]).
 
 use std::io::Write;
 use std::path::Path;
 
 use image::codecs::png::PngEncoder;
-use image::codecs::tga::TgaEncoder;
 use image::{ExtendedColorType, ImageEncoder, RgbImage};
 
 use super::atomic::{FileSet, WriteError, check_folder_writable};
@@ -48,12 +48,10 @@ pub(crate) fn encode_into(
 ) -> Result<(), image::ImageError> {
     let (width, height) = image.dimensions();
     match format {
-        ImageFormat::Tga => TgaEncoder::new(out).disable_rle().write_image(
-            image.as_raw(),
-            width,
-            height,
-            ExtendedColorType::Rgb8,
-        ),
+        ImageFormat::Tga => {
+            let (pixels, _) = image.as_raw().as_chunks::<3>();
+            super::tga::write_tga(out, width, height, pixels).map_err(image::ImageError::IoError)
+        }
         ImageFormat::Png => {
             PngEncoder::new(out).write_image(image.as_raw(), width, height, ExtendedColorType::Rgb8)
         }

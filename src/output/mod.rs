@@ -1,5 +1,5 @@
 //! Writing files: atomic writes ([`atomic`]), 8-bit image files chosen by extension
-//! ([`image_file`]), and lossless depth files (PFM, OpenEXR) and 16-bit depth PNGs
+//! ([`image_file`]; TGA written row by row by [`tga`]), and lossless depth files (PFM, OpenEXR) and 16-bit depth PNGs
 //! ([`depth_file`]), and text drawn into pictures ([`text`]). Nothing here knows about the
 //! command line or the viewer.
 
@@ -8,6 +8,8 @@ pub mod depth_file;
 pub(crate) mod identity;
 pub(crate) mod image_file;
 pub(crate) mod text;
+pub(crate) mod tga;
+pub(crate) mod writeback;
 
 pub use atomic::{WriteError, write_atomically};
 pub use depth_file::RawDepthFormat;

@@ -124,6 +124,88 @@ impl std::fmt::Display for DepthColourMap {
     }
 }
 
+/// How the t of a frame's pixels become their 8-bit depth colours: a range, a colour map and the
+/// colour of no-hit pixels. The one place where t becomes a depth colour, for whole frames and
+/// strips of them alike.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct DepthPainter {
+    range: DepthRange,
+    map: DepthColourMap,
+    no_hit: [u8; 3],
+    /// For the grey map over a range of finite, non-zero width: its far end and width, mapped
+    /// without branches ([`grey_level`]).
+    grey_ramp: Option<(f64, f64)>,
+}
+
+/// Pixels mapped per parallel task.
+const PIXELS_PER_TASK: usize = 16_384;
+
+impl DepthPainter {
+    /// Maps t over `range` through `map`; no-hit pixels get `no_hit`.
+    pub(crate) fn new(range: DepthRange, map: DepthColourMap, no_hit: [u8; 3]) -> Self {
+        let width = range.max_t - range.min_t;
+        let plain_grey = map == DepthColourMap::Grey
+            && width.is_finite()
+            && width != 0.0
+            && range.max_t.is_finite();
+        Self {
+            range,
+            map,
+            no_hit,
+            grey_ramp: plain_grey.then_some((range.max_t, width)),
+        }
+    }
+
+    /// The pixels of `t` (storage order), each made from its colour by `pixel` (the viewer
+    /// makes texture pixels), in parallel.
+    pub(crate) fn pixels<P: Send>(&self, t: &[f64], pixel: impl Fn([u8; 3]) -> P + Sync) -> Vec<P> {
+        use rayon::prelude::*;
+        let no_hit = self.no_hit;
+        let t = t.par_iter().with_min_len(PIXELS_PER_TASK);
+        match self.grey_ramp {
+            Some((max_t, width)) => t
+                .map(|&t| pixel(grey_level(t, max_t, width).map_or(no_hit, |grey| [grey; 3])))
+                .collect(),
+            None => t
+                .map(|&t| pixel(self.map.rgb(&self.range, t, no_hit)))
+                .collect(),
+        }
+    }
+
+    /// The colours of the pixels of `t` into `rgb` (as long), in parallel.
+    pub(crate) fn paint(&self, t: &[f64], rgb: &mut [[u8; 3]]) {
+        use rayon::prelude::*;
+        let no_hit = self.no_hit;
+        let pixels = rgb
+            .par_chunks_mut(PIXELS_PER_TASK)
+            .zip(t.par_chunks(PIXELS_PER_TASK));
+        match self.grey_ramp {
+            Some((max_t, width)) => pixels.for_each(|(rgb, t)| {
+                for (rgb, &t) in rgb.iter_mut().zip(t) {
+                    *rgb = grey_level(t, max_t, width).map_or(no_hit, |grey| [grey; 3]);
+                }
+            }),
+            None => pixels.for_each(|(rgb, t)| {
+                for (rgb, &t) in rgb.iter_mut().zip(t) {
+                    *rgb = self.map.rgb(&self.range, t, no_hit);
+                }
+            }),
+        }
+    }
+}
+
+/// The 8-bit grey ([`DepthRange::grey_u8`]) of a hit at `t` over a range ending at `max_t`,
+/// `width` wide (finite, not zero); `None` for no hit. Without branches on t (which pixels hit,
+/// and where they fall on the ramp, is unpredictable in a dense frame): the same correctly
+/// rounded operations as the general mapping, so the same greys.
+#[inline]
+fn grey_level(t: f64, max_t: f64, width: f64) -> Option<u8> {
+    // clamp((max − t) / width, 0, 1) (no NaN: t is finite or −∞ where it counts), truncated to
+    // 0..=255.
+    let level = ((max_t - t) / width).clamp(0.0, 1.0) * 255.0;
+    (t < f64::INFINITY).then_some(level as u8)
+}
+
 /// Where on colorous's turbo gradient the far end of the depth range lies.
 const TURBO_FAR_END: f64 = 0.1;
 
@@ -259,6 +341,81 @@ mod tests {
             assert_eq!(DepthColourMap::from_name(map.name()), Some(map));
         }
         assert_eq!(DepthColourMap::from_name("jet"), None);
+    }
+
+    #[test]
+    fn grey_levels_are_the_greys_of_the_general_mapping() {
+        // t all over the range and beyond it, on the edges of grey levels (t at min + k·width/255),
+        // infinite and NaN; ramps of either direction, narrow and far away.
+        let mut rng = crate::render::rng::SplitMix64::new(12);
+        let ranges = [
+            DepthRange::new(9.0, 10.0),
+            DepthRange::new(10.0, 9.0),
+            DepthRange::new(-3.0, 250.0),
+            DepthRange::new(1e7, 1e7 + 1e-3),
+        ];
+        for range in ranges {
+            let width = range.max_t - range.min_t;
+            let mut t: Vec<f64> = (0..20_000)
+                .map(|_| range.min_t + width * rng.uniform(-0.2, 1.2))
+                .collect();
+            t.extend((0..=255).map(|k| range.min_t + width * f64::from(k) / 255.0));
+            t.extend([
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+                f64::NAN,
+                range.min_t,
+                range.max_t,
+            ]);
+            for &t in &t {
+                let wanted = (t != f64::INFINITY && !t.is_nan()).then(|| range.grey_u8(t));
+                assert_eq!(
+                    grey_level(t, range.max_t, width),
+                    wanted,
+                    "t {t} over {range:?}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn painting_and_collecting_give_every_map_its_colours() {
+        // Past one parallel task, over the grey ramp, a step, a reversed range and colour maps.
+        let mut rng = crate::render::rng::SplitMix64::new(3);
+        let t: Vec<f64> = (0..40_000)
+            .map(|i| match i % 97 {
+                0 => f64::INFINITY,
+                1 => f64::NAN,
+                _ => rng.uniform(8.0, 11.0),
+            })
+            .collect();
+        // And every grey level's edge of the first range.
+        let t: Vec<f64> = t
+            .into_iter()
+            .chain((0..=255).map(|k| 9.0 + f64::from(k) / 255.0))
+            .collect();
+        for (range, map, no_hit) in [
+            (DepthRange::new(9.0, 10.0), DepthColourMap::Grey, [0; 3]),
+            (
+                DepthRange::new(10.0, 9.0),
+                DepthColourMap::Grey,
+                NO_HIT_MARK,
+            ),
+            (DepthRange::new(9.5, 9.5), DepthColourMap::Grey, [0; 3]),
+            (DepthRange::new(9.0, 10.0), DepthColourMap::Turbo, [0; 3]),
+            (
+                DepthRange::new(9.0, 10.0),
+                DepthColourMap::Viridis,
+                NO_HIT_MARK,
+            ),
+        ] {
+            let painter = DepthPainter::new(range, map, no_hit);
+            let wanted: Vec<[u8; 3]> = t.iter().map(|&t| map.rgb(&range, t, no_hit)).collect();
+            assert_eq!(painter.pixels(&t, |rgb| rgb), wanted, "{map} {range:?}");
+            let mut painted = vec![[7u8; 3]; t.len()];
+            painter.paint(&t, &mut painted);
+            assert_eq!(painted, wanted, "{map} {range:?}");
+        }
     }
 
     #[test]

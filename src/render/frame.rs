@@ -4,7 +4,7 @@
 use image::RgbImage;
 use rayon::prelude::*;
 
-use crate::render::depth_map::{DepthColourMap, DepthRange};
+use crate::render::depth_map::{DepthColourMap, DepthPainter, DepthRange};
 
 /// Sphere index of pixels that no sphere covers.
 pub const NO_HIT: u32 = u32::MAX;
@@ -90,27 +90,7 @@ impl Frame {
             .filter(|(grey_range, _)| *grey_range == range)
             .map(|(_, grey)| grey);
         if filtered.is_none() {
-            let width = range.max_t - range.min_t;
-            if map == DepthColourMap::Grey
-                && width.is_finite()
-                && width != 0.0
-                && range.max_t.is_finite()
-            {
-                return self
-                    .t
-                    .par_iter()
-                    .map(|&t| match grey_level(t, range.max_t, width) {
-                        Some(grey) => pixel([grey; 3]),
-                        None => pixel(no_hit),
-                    })
-                    .collect();
-            }
-            // The other maps, over the t alone (no index, no per-pixel match).
-            return self
-                .t
-                .par_iter()
-                .map(|&t| pixel(map.rgb(&range, t, no_hit)))
-                .collect();
+            return DepthPainter::new(range, map, no_hit).pixels(&self.t, pixel);
         }
         (0..self.t.len())
             .into_par_iter()
@@ -150,57 +130,4 @@ fn image_from_pixels(width: u32, height: u32, pixels: Vec<[u8; 3]>) -> RgbImage 
     // would only stand in for a broken frame.
     RgbImage::from_raw(width, height, pixels.into_flattened())
         .unwrap_or_else(|| RgbImage::new(width, height))
-}
-
-/// The 8-bit grey ([`DepthRange::grey_u8`]) of a hit at `t` over a range ending at `max_t`,
-/// `width` wide (finite, not zero); `None` for no hit. Without branches on t (which pixels hit,
-/// and where they fall on the ramp, is unpredictable in a dense frame): the same correctly
-/// rounded operations as the general mapping, so the same greys.
-#[inline]
-fn grey_level(t: f64, max_t: f64, width: f64) -> Option<u8> {
-    // clamp((max − t) / width, 0, 1) (no NaN: t is finite or −∞ where it counts), truncated to
-    // 0..=255.
-    let level = ((max_t - t) / width).clamp(0.0, 1.0) * 255.0;
-    (t < f64::INFINITY).then_some(level as u8)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::render::rng::SplitMix64;
-
-    #[test]
-    fn grey_levels_are_the_greys_of_the_general_mapping() {
-        // t all over the range and beyond it, on the edges of grey levels (t at min + k·width/255),
-        // infinite and NaN; ramps of either direction, narrow and far away.
-        let mut rng = SplitMix64::new(12);
-        let ranges = [
-            DepthRange::new(9.0, 10.0),
-            DepthRange::new(10.0, 9.0),
-            DepthRange::new(-3.0, 250.0),
-            DepthRange::new(1e7, 1e7 + 1e-3),
-        ];
-        for range in ranges {
-            let width = range.max_t - range.min_t;
-            let mut t: Vec<f64> = (0..20_000)
-                .map(|_| range.min_t + width * rng.uniform(-0.2, 1.2))
-                .collect();
-            t.extend((0..=255).map(|k| range.min_t + width * f64::from(k) / 255.0));
-            t.extend([
-                f64::INFINITY,
-                f64::NEG_INFINITY,
-                f64::NAN,
-                range.min_t,
-                range.max_t,
-            ]);
-            for &t in &t {
-                let wanted = (t != f64::INFINITY && !t.is_nan()).then(|| range.grey_u8(t));
-                assert_eq!(
-                    grey_level(t, range.max_t, width),
-                    wanted,
-                    "t {t} over {range:?}"
-                );
-            }
-        }
-    }
 }

@@ -56,6 +56,20 @@ pub fn render_with(scene: &Scene, view: &View, quality: &Quality) -> Result<Fram
     render_with_progress(scene, view, quality, &|_| {})
 }
 
+/// Renders `scene` through `view`, one sample at each pixel centre, a strip of rows at a time:
+/// `consume` gets each strip's t and spheres in order, top first ([`disc::Strip`]), the same
+/// pixels [`render`] makes. Returns the pixel–disc tests made.
+pub(crate) fn render_strips<E: From<ViewError> + Send>(
+    scene: &Scene,
+    view: &View,
+    consume: impl FnMut(disc::Strip<'_>) -> Result<(), E> + Send,
+) -> Result<u64, E> {
+    let basis = view.validate()?;
+    let grid = view.grid();
+    let (discs, depths) = disc::project_discs_with_depths(scene, view, &basis);
+    disc::rasterise_strips(&grid, &discs, &depths, consume)
+}
+
 /// [`render_with`], telling `progress` the share of the frame done (0 to 1): as bands of rows
 /// finish when supersampling (the long renders), once at the end otherwise.
 pub(crate) fn render_with_progress(

@@ -24,6 +24,7 @@
 //! * [`tiles`]: dense scenes drawn front to back tile by tile, each tile stopping where the rest
 //!   is hidden
 //! * [`raster`]: filling a band's pixels, and a whole frame
+//! * [`strips`]: a frame drawn and handed on a strip of rows at a time
 //! * [`shade`]: colours from the visible spheres
 
 mod bins;
@@ -32,13 +33,16 @@ mod coarse_depth;
 mod depth_order;
 mod raster;
 mod shade;
+mod strips;
 mod tiles;
 
 pub(crate) use bins::pixel_span;
 pub(crate) use depth_order::Depths;
 pub(crate) use raster::rasterise_frame;
+pub(crate) use shade::Palette;
 #[cfg(feature = "oracle")]
 pub(crate) use shade::frame_from_hits;
+pub(crate) use strips::{Strip, rasterise_strips};
 
 use crate::geometry::camera::CameraBasis;
 use crate::render::View;

@@ -19,7 +19,7 @@ use crate::scene::Scene;
 
 /// Fills one band (rows `first_row..first_row + rows`, top first) of t and sphere indices;
 /// returns the pixel–disc tests made.
-fn rasterise_band(
+pub(super) fn rasterise_band(
     discs: &[Disc],
     list: impl Iterator<Item = u32>,
     grid: &PixelGrid,
@@ -89,7 +89,7 @@ fn cover_chord_exact(disc: &Disc, columns: Columns, chord: Chord, row: &mut RowO
 
 /// How many times over the first pass's discs (the nearest) cover the image; each later pass
 /// ends where the passes so far cover it twice as many times as before.
-const FIRST_PASS_LAYERS: f64 = 4.0;
+pub(super) const FIRST_PASS_LAYERS: f64 = 4.0;
 
 /// Renders one centre sample per pixel from projected `discs` (with their `depths`).
 ///
@@ -107,38 +107,42 @@ pub(crate) fn rasterise_frame(
     discs: &[Disc],
     depths: &Depths,
 ) -> Frame {
-    let grid = *grid;
-    let width = view.width_px as usize;
-    let height = view.height_px as usize;
+    let plan = Plan::of(discs, depths, grid, FIRST_PASS_LAYERS);
+    let (t, sphere, disc_tests) = rasterise_hits(grid, discs, plan);
+    let mut frame = frame_from_hits(scene, view, t, sphere);
+    frame.disc_tests = disc_tests;
+    frame
+}
+
+/// The t and sphere of every pixel (top row first) of a frame drawn as `plan` says, and the
+/// pixel–disc tests made.
+pub(super) fn rasterise_hits(
+    grid: &PixelGrid,
+    discs: &[Disc],
+    plan: Plan,
+) -> (Vec<f64>, Vec<u32>, u64) {
+    let pixels = grid.width_px as usize * grid.height_px as usize;
     // "No hit" everywhere, written in parallel (a `vec![…; n]` fills serially).
-    let mut t: Vec<f64> = (0..width * height)
-        .into_par_iter()
-        .map(|_| f64::INFINITY)
-        .collect();
-    let mut sphere: Vec<u32> = (0..width * height)
-        .into_par_iter()
-        .map(|_| NO_HIT)
-        .collect();
+    let mut t: Vec<f64> = (0..pixels).into_par_iter().map(|_| f64::INFINITY).collect();
+    let mut sphere: Vec<u32> = (0..pixels).into_par_iter().map(|_| NO_HIT).collect();
     let mut out = (t.as_mut_slice(), sphere.as_mut_slice());
-    let disc_tests = match Plan::of(discs, depths, &grid, FIRST_PASS_LAYERS) {
-        Plan::FileOrder => rasterise_discs(discs, &grid, Order::File, &mut out),
-        Plan::AnyOrder => rasterise_discs(discs, &grid, Order::FrontToBack, &mut out),
+    let disc_tests = match plan {
+        Plan::FileOrder => rasterise_discs(discs, grid, Order::File, &mut out),
+        Plan::AnyOrder => rasterise_discs(discs, grid, Order::FrontToBack, &mut out),
         Plan::Passes(mut passes) => {
             let mut disc_tests = 0;
             for pass in 0..passes.count() {
                 if passes.is_empty(pass) {
                     continue;
                 }
-                let drawn = (pass > 0).then(|| CoarseDepth::of(out.0, &grid));
+                let drawn = (pass > 0).then(|| CoarseDepth::of(out.0, grid));
                 let discs = passes.take(pass, drawn.as_ref());
-                disc_tests += rasterise_discs(&discs, &grid, Order::FrontToBack, &mut out);
+                disc_tests += rasterise_discs(&discs, grid, Order::FrontToBack, &mut out);
             }
             disc_tests
         }
     };
-    let mut frame = frame_from_hits(scene, view, t, sphere);
-    frame.disc_tests = disc_tests;
-    frame
+    (t, sphere, disc_tests)
 }
 
 /// The order discs come in to [`rasterise_discs`].

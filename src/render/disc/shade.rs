@@ -1,52 +1,94 @@
-//! Shading: a frame's colours from its visible spheres — the material's flat colour, or the
-//! background — quantised to 8 bits once per material.
+//! Shading: pixels' colours from their visible spheres — the material's flat colour, or the
+//! background — quantised to 8 bits once per material ([`Palette`]), for a whole frame or for a
+//! strip of one.
 
 use rayon::prelude::*;
 
 use crate::render::depth_map::quantize_f32;
 use crate::render::{Frame, View};
-use crate::scene::Scene;
+use crate::scene::{Scene, Sphere};
 
 /// Pixels per sphere from which a frame colours its spheres once, in a table, rather than
 /// reading each pixel's sphere.
 const MIN_PIXELS_PER_SPHERE_FOR_TABLE: usize = 4;
 
+/// The 8-bit colour of every sphere index a pixel can hold ([`crate::render::NO_HIT`]: the
+/// background).
+pub(crate) struct Palette<'a> {
+    spheres: &'a [Sphere],
+    /// Each material's colour (few), looked up per sphere: the cost follows the pixels, not the
+    /// sphere count.
+    material_rgb: Vec<[u8; 3]>,
+    default_rgb: [u8; 3],
+    background_rgb: [u8; 3],
+    /// With far fewer spheres than pixels, each sphere's colour once, in a table small enough to
+    /// stay in cache, instead of a read of the sphere (scattered over the whole scene) per pixel.
+    sphere_rgb: Option<Vec<[u8; 3]>>,
+}
+
+impl<'a> Palette<'a> {
+    /// The palette of `scene` for frames of `pixel_count` pixels.
+    pub(crate) fn of(scene: &'a Scene, pixel_count: usize) -> Self {
+        let mut palette = Self {
+            spheres: &scene.spheres,
+            material_rgb: scene
+                .materials
+                .iter()
+                .map(|material| material.diffuse_colour.to_array().map(quantize_f32))
+                .collect(),
+            default_rgb: crate::scene::DEFAULT_DIFFUSE.to_array().map(quantize_f32),
+            background_rgb: scene.background.to_array().map(quantize_f32),
+            sphere_rgb: None,
+        };
+        if scene.spheres.len() <= pixel_count / MIN_PIXELS_PER_SPHERE_FOR_TABLE {
+            let table = scene
+                .spheres
+                .par_iter()
+                .map(|sphere| palette.rgb_of_sphere(sphere))
+                .collect();
+            palette.sphere_rgb = Some(table);
+        }
+        palette
+    }
+
+    fn rgb_of_sphere(&self, sphere: &Sphere) -> [u8; 3] {
+        sphere
+            .material
+            .and_then(|material| self.material_rgb.get(material as usize).copied())
+            .unwrap_or(self.default_rgb)
+    }
+
+    /// The colours of pixels whose visible spheres are `sphere`, into `rgb` (as long), in
+    /// parallel.
+    pub(crate) fn colour(&self, sphere: &[u32], rgb: &mut [[u8; 3]]) {
+        const PIXELS_PER_TASK: usize = 16_384;
+        let background = self.background_rgb;
+        let pixels = rgb
+            .par_chunks_mut(PIXELS_PER_TASK)
+            .zip(sphere.par_chunks(PIXELS_PER_TASK));
+        match &self.sphere_rgb {
+            Some(table) => pixels.for_each(|(rgb, sphere)| {
+                for (rgb, &index) in rgb.iter_mut().zip(sphere) {
+                    *rgb = *table.get(index as usize).unwrap_or(&background);
+                }
+            }),
+            None => pixels.for_each(|(rgb, sphere)| {
+                for (rgb, &index) in rgb.iter_mut().zip(sphere) {
+                    *rgb = self
+                        .spheres
+                        .get(index as usize)
+                        .map_or(background, |sphere| self.rgb_of_sphere(sphere));
+                }
+            }),
+        }
+    }
+}
+
 /// Completes a frame from per-pixel t and sphere indices: colour from the sphere's material or
 /// the background, quantised to 8 bits.
 pub(crate) fn frame_from_hits(scene: &Scene, view: &View, t: Vec<f64>, sphere: Vec<u32>) -> Frame {
-    // Colours per material (few), looked up per pixel: the cost follows the pixels, not the
-    // sphere count.
-    let material_rgb: Vec<[u8; 3]> = scene
-        .materials
-        .iter()
-        .map(|material| material.diffuse_colour.to_array().map(quantize_f32))
-        .collect();
-    let default_rgb = crate::scene::DEFAULT_DIFFUSE.to_array().map(quantize_f32);
-    let background = scene.background.to_array().map(quantize_f32);
-    let rgb_of_sphere = |hit: &crate::scene::Sphere| {
-        hit.material
-            .and_then(|material| material_rgb.get(material as usize).copied())
-            .unwrap_or(default_rgb)
-    };
-    // With far fewer spheres than pixels, each sphere's colour once, in a table small enough to
-    // stay in cache, instead of a read of the sphere (scattered over the whole scene) per pixel.
-    let colour = if scene.spheres.len() <= sphere.len() / MIN_PIXELS_PER_SPHERE_FOR_TABLE {
-        let sphere_rgb: Vec<[u8; 3]> = scene.spheres.par_iter().map(rgb_of_sphere).collect();
-        sphere
-            .par_iter()
-            .map(|&index| *sphere_rgb.get(index as usize).unwrap_or(&background))
-            .collect()
-    } else {
-        sphere
-            .par_iter()
-            .map(|&index| {
-                scene
-                    .spheres
-                    .get(index as usize)
-                    .map_or(background, rgb_of_sphere)
-            })
-            .collect()
-    };
+    let mut colour = vec![[0u8; 3]; sphere.len()];
+    Palette::of(scene, sphere.len()).colour(&sphere, &mut colour);
     Frame {
         width_px: view.width_px,
         height_px: view.height_px,
