@@ -2,7 +2,7 @@
 //! of its own syncs them whenever asked ([`Writeback::written`]), so the sync that completes a
 //! file ([`super::atomic::Staging::finish`]) finds little left to write. The guarantee is the
 //! final sync's, as before; only its wait moves earlier, beside work the processor does anyway.
-//! `scripts/command-vs-cpp.sh` measures what it saves.
+//! `scripts/command-vs-cpp.sh` measures what syncing costs the command.
 //!
 //! Errors of the early syncs are left to the final sync, which reports its own.
 

@@ -97,29 +97,28 @@ pub(crate) fn rasterise_strips<E: Send>(
             })
             .sum::<u64>()
     };
-    let mut disc_tests = draw(0, &mut drawn);
-    let mut consumed = Ok(());
-    for first_row in (0..height).step_by(STRIP_ROWS) {
-        let next_row = first_row + STRIP_ROWS;
-        let pixels = width * STRIP_ROWS.min(height - first_row);
-        let strip = Strip {
-            first_row,
-            t: &drawn.t[..pixels],
-            sphere: &drawn.sphere[..pixels],
-        };
-        let (result, tests) = rayon::join(
-            || consume(strip),
-            || (next_row < height).then(|| draw(next_row, &mut drawing)),
-        );
-        consumed = result;
-        if consumed.is_err() {
-            break;
+    // The loop runs on a thread of the pool: from outside it, every join would hand its work
+    // over to the pool and wait to be woken, twice a strip.
+    rayon::scope(|_| {
+        let mut disc_tests = draw(0, &mut drawn);
+        for first_row in (0..height).step_by(STRIP_ROWS) {
+            let next_row = first_row + STRIP_ROWS;
+            let pixels = width * STRIP_ROWS.min(height - first_row);
+            let strip = Strip {
+                first_row,
+                t: &drawn.t[..pixels],
+                sphere: &drawn.sphere[..pixels],
+            };
+            let (consumed, tests) = rayon::join(
+                || consume(strip),
+                || (next_row < height).then(|| draw(next_row, &mut drawing)),
+            );
+            consumed?;
+            disc_tests += tests.unwrap_or(0);
+            std::mem::swap(&mut drawn, &mut drawing);
         }
-        disc_tests += tests.unwrap_or(0);
-        std::mem::swap(&mut drawn, &mut drawing);
-    }
-    consumed?;
-    Ok(disc_tests)
+        Ok(disc_tests)
+    })
 }
 
 #[cfg(test)]
