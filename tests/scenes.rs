@@ -48,3 +48,20 @@ fn loading_reports_progress_up_to_one() {
     assert_eq!(seen.last(), Some(&1.0));
     assert!(seen.iter().all(|f| (0.0..=1.0).contains(f)));
 }
+
+#[test]
+fn a_big_file_read_in_two_halves_loads_to_the_scene_its_text_parses_to() {
+    // Over the size from which a file is read as two halves at once, with an odd length.
+    let scene = raytracer::oracle::random_scene(3, 90_000);
+    let mut text = raytracer::scene::scene_to_text(&scene);
+    if text.len().is_multiple_of(2) {
+        text.push('\n');
+    }
+    assert!(text.len() > 8 << 20, "{} bytes", text.len());
+    let folder = tempfile::tempdir().unwrap();
+    let path = folder.path().join("big.txt");
+    std::fs::write(&path, &text).unwrap();
+    let loaded = load_scene(&path).unwrap();
+    assert_eq!(loaded, parse_scene(&text).unwrap());
+    assert_eq!(loaded.spheres.len(), 90_000);
+}

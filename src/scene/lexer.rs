@@ -102,24 +102,27 @@ impl<'a> Iterator for Lexer<'a> {
         }
         let start = self.offset;
         let first = *bytes.get(start)?;
+        let location = self.here();
         let end = if first == b'{' || first == b'}' {
+            self.column_chars += 1;
             start + 1
         } else {
-            let rest = &bytes[start..];
-            start
-                + rest
-                    .iter()
-                    .position(|&b| ENDS_A_WORD[usize::from(b)])
-                    .unwrap_or(rest.len())
+            // One pass: where the word ends, and how many of its bytes continue a UTF-8
+            // sequence (columns count characters, and counting as the lexer moves keeps long
+            // lines linear).
+            let mut end = start;
+            let mut continuing = 0;
+            while let Some(&byte) = bytes.get(end) {
+                if ENDS_A_WORD[usize::from(byte)] {
+                    break;
+                }
+                continuing += usize::from((byte & 0xC0) == 0x80);
+                end += 1;
+            }
+            self.column_chars += end - start - continuing;
+            end
         };
-        let location = self.here();
         self.offset = end;
-        // Columns count characters: every byte that does not continue a UTF-8 sequence. Counting
-        // as the lexer moves keeps long lines linear.
-        self.column_chars += bytes[start..end]
-            .iter()
-            .filter(|&&b| (b & 0xC0) != 0x80)
-            .count();
         // Token boundaries are ASCII bytes, so they are char boundaries too.
         let text = self.text.get(start..end)?;
         Some(Token { text, location })
