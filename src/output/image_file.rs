@@ -60,7 +60,11 @@ pub(crate) fn encode_into(
 
 /// Encodes `image` in `format`.
 pub fn encode(image: &RgbImage, format: ImageFormat) -> Result<Vec<u8>, image::ImageError> {
-    let mut bytes = Vec::new();
+    // A TGA's size is known: room for it at once, not by doubling (each time a fresh copy).
+    let mut bytes = match format {
+        ImageFormat::Tga => Vec::with_capacity(super::tga::HEADER_BYTES + image.as_raw().len()),
+        ImageFormat::Png => Vec::new(),
+    };
     encode_into(image, format, &mut bytes)?;
     Ok(bytes)
 }
