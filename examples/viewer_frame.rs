@@ -1,10 +1,12 @@
 //! The benchmark figure for a view the real window showed: the viewer's work for one frame
 //! (render, both textures, histogram: `raytracer::app::job::prepare_frame`) of a scene file's own
-//! camera at WIDTH×HEIGHT pixels, median of RUNS, in milliseconds. `scripts/window-frame-times.sh`
-//! puts it beside the frame times the window logged:
+//! camera at WIDTH×HEIGHT pixels, median of RUNS, in milliseconds; with GAP_MS, each frame after
+//! that many milliseconds of idling, as frames come in a window (its threads asleep, its caches
+//! cooled by whatever else ran). `scripts/window-frame-times.sh` puts both beside the frame times
+//! the window logged:
 //!
 //! ```sh
-//! cargo run --release --example viewer_frame -- SCENE WIDTH HEIGHT [RUNS]
+//! cargo run --release --example viewer_frame -- SCENE WIDTH HEIGHT [RUNS [GAP_MS]]
 //! ```
 
 #[cfg(feature = "mimalloc")]
@@ -25,7 +27,8 @@ fn main() {
         scene,
         mut view,
         runs,
-    } = frame_args::frame_args("viewer_frame SCENE WIDTH HEIGHT [RUNS]", 31);
+        gap,
+    } = frame_args::frame_args("viewer_frame SCENE WIDTH HEIGHT [RUNS [GAP_MS]]", 31);
     view.depth_range = initial_depth_range(&scene, &view);
     let job = ViewerJob {
         scene: Arc::new(scene),
@@ -36,6 +39,7 @@ fn main() {
     };
     let mut times: Vec<f64> = (0..runs)
         .map(|_| {
+            std::thread::sleep(gap);
             let started = Instant::now();
             std::hint::black_box(prepare_frame(&job).expect("renders"));
             started.elapsed().as_secs_f64() * 1e3

@@ -5,7 +5,8 @@
 # 100,000 and 1,000,000 spheres (`generate --dense`), at the window size 453×522 and 1600×900.
 # The viewer logs every frame (RAYTRACER_FRAME_LOG, src/app/frame_log.rs): the render time the
 # status bar shows, the input-to-new-frame latency, and the UI thread's time per frame. Beside
-# them, the benchmark of the same view (examples/viewer_frame.rs). Writes
+# them, the benchmark of the same view (examples/viewer_frame.rs), back to back and paced
+# like the drag (30 ms of idling before each frame). Writes
 # docs/window-frame-times.md, or the file given as the first argument. Needs xvfb and xdotool
 # (scripts/test.sh installs them). It also reads the CPU time of the viewer's threads from /proc:
 # how much painting takes, per UI frame and of the two cores, beside the renderer's share. The
@@ -55,6 +56,8 @@ cpu_of() { awk -v g="$1" '$1 == g {print $2}' "$2"; }
 # Percentile P (0-100) of the numbers in file $2.
 percentile() { sort -g "$2" | awk -v p="$1" '{a[NR]=$1} END {i=int((NR-1)*p/100)+1; print a[i]}'; }
 
+# The paced benchmark idles this long before each frame, as the drag's pointer moves come.
+gap_ms=30
 rows=""
 renderers=""
 painters=""
@@ -119,10 +122,13 @@ for scene in scenes/scene1_02.txt "$work/dense_1e5.txt" "$work/dense_1e6.txt"; d
     other_share=$(echo "100 * $other_ms / ($cores * $wall_ms)" | bc -l)
     read -r frame_width frame_height <<<"$(grep '^frame' "$work/run.log" | tail -n 1 | awk '{print $4, $5}')"
     bench=$(target/release/examples/viewer_frame "$scene" "$frame_width" "$frame_height" 15)
+    paced=$(target/release/examples/viewer_frame "$scene" "$frame_width" "$frame_height" 15 "$gap_ms")
     render=$(percentile 50 "$work/render.txt")
     ratio=$(echo "$render / $bench" | bc -l)
-    rows+=$(printf '| %s | %s×%s | %s×%s | %d | %.1f | %.1f | %.2f× | %.1f | %.1f | %.1f | %.1f | %d | %s | %.0f %% | %.0f %% | %.0f %% |' \
+    paced_ratio=$(echo "$render / $paced" | bc -l)
+    rows+=$(printf '| %s | %s×%s | %s×%s | %d | %.1f | %.1f | %.2f× | %.1f | %.2f× | %.1f | %.1f | %.1f | %.1f | %d | %s | %.0f %% | %.0f %% | %.0f %% |' \
       "$name" "$width" "$height" "$frame_width" "$frame_height" "$frames" "$render" "$bench" "$ratio" \
+      "$paced" "$paced_ratio" \
       "$(percentile 50 "$work/latency.txt")" "$(percentile 95 "$work/latency.txt")" \
       "$(percentile 50 "$work/ui.txt")" "$(percentile 95 "$work/ui.txt")" \
       "$ui_frames" "$paint_per_frame" "$paint_share" "$render_share" "$other_share")$'\n'
@@ -137,7 +143,10 @@ done
   echo "drag across the colour image and 20 arrow-key presses, each scene and window size a run of"
   echo "its own. *frame*: the render time the status bar shows (render, both textures,"
   echo "histogram), median over the frames of the run; *benchmark*: the same work for the same view"
-  echo "size measured alone (\`examples/viewer_frame.rs\`, median of 15); *latency*: from the UI frame"
+  echo "size measured alone (\`examples/viewer_frame.rs\`, median of 15, frames back to back);"
+  echo "*paced*: the same benchmark with $gap_ms ms of idling before each frame, as the drag's pointer"
+  echo "moves come (the render's threads fall asleep between frames and must be woken, and what"
+  echo "else runs on the machine cools the caches); *latency*: from the UI frame"
   echo "that applied the input to the one that takes the new picture in; *UI*: the UI thread's time"
   echo "per frame (layout, tessellation, painting), as eframe measures it; *UI frames*: how many"
   echo "frames the UI drew in the run; *paint CPU per UI frame*: the CPU time of the UI thread and"
@@ -157,8 +166,8 @@ done
     echo "core."
   fi
   echo
-  echo "| scene | window px | image px | frames | frame ms (p50) | benchmark ms | frame / benchmark | latency ms p50 | latency ms p95 | UI ms p50 | UI ms p95 | UI frames | paint CPU ms per UI frame | paint share | render share | other share |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+  echo "| scene | window px | image px | frames | frame ms (p50) | benchmark ms | frame / benchmark | paced benchmark ms | frame / paced | latency ms p50 | latency ms p95 | UI ms p50 | UI ms p95 | UI frames | paint CPU ms per UI frame | paint share | render share | other share |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
   printf '%s' "$rows"
 } > "$output"
 cat "$output"

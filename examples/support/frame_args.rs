@@ -1,5 +1,5 @@
-//! The arguments the frame-timing examples share: `SCENE WIDTH HEIGHT [RUNS]`, the scene loaded
-//! and its own camera's view at that size.
+//! The arguments the frame-timing examples share: `SCENE WIDTH HEIGHT [RUNS [GAP_MS]]`, the
+//! scene loaded and its own camera's view at that size.
 
 use raytracer::render::View;
 use raytracer::render::depth_map::DepthRange;
@@ -10,10 +10,12 @@ pub(crate) struct FrameArgs {
     pub(crate) scene: Scene,
     pub(crate) view: View,
     pub(crate) runs: u32,
+    /// Idle time before each frame (0: frames back to back).
+    pub(crate) gap: std::time::Duration,
 }
 
-/// Reads `SCENE WIDTH HEIGHT [RUNS]` (RUNS `default_runs` when absent); exits with `usage` on
-/// anything else.
+/// Reads `SCENE WIDTH HEIGHT [RUNS [GAP_MS]]` (RUNS `default_runs` and GAP_MS 0 when absent);
+/// exits with `usage` on anything else.
 pub(crate) fn frame_args(usage: &str, default_runs: u32) -> FrameArgs {
     let arguments: Vec<String> = std::env::args().skip(1).collect();
     let [path, width, height, rest @ ..] = arguments.as_slice() else {
@@ -22,6 +24,7 @@ pub(crate) fn frame_args(usage: &str, default_runs: u32) -> FrameArgs {
     };
     let number = |text: &str| text.parse::<u32>().expect("a whole number");
     let runs = rest.first().map_or(default_runs, |r| number(r));
+    let gap_ms = rest.get(1).map_or(0, |gap| number(gap));
     let scene = raytracer::scene::load_scene(std::path::Path::new(path)).expect("a scene");
     let view = View::of_camera(
         &scene.camera,
@@ -29,5 +32,10 @@ pub(crate) fn frame_args(usage: &str, default_runs: u32) -> FrameArgs {
         number(height),
         DepthRange::new(0.0, 1.0),
     );
-    FrameArgs { scene, view, runs }
+    FrameArgs {
+        scene,
+        view,
+        runs,
+        gap: std::time::Duration::from_millis(u64::from(gap_ms)),
+    }
 }
