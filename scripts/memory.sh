@@ -19,6 +19,8 @@ requests=(
   "largest tile: 1024 samples, Gaussian 8|-input $scene -size 64 64 -uniform_samples 1024 -gaussian_filter 8 -output $work/c.png"
   "1,000,000 spheres (125 MB file)|-input $work/million.txt -size 1024 1024 -output $work/c.png -depth 0 100 $work/d.png"
   "1,000,000 spheres, dense (drawn in passes front to back)|-input $work/dense.txt -size 1024 1024 -output $work/c.png -depth 100 300 $work/d.png"
+  "the same, as the course's command (drawn whole, then streamed)|-input $work/dense.txt -size 1024 1024 -output $work/c.tga -depth 100 300 $work/d.tga"
+  "largest image of a dense scene, streamed|-input $work/dense.txt -size 8192 8192 -output $work/c.tga -depth 100 300 $work/d.tga"
 )
 {
   echo "# Memory: the stated bound against the measured peak"
@@ -48,6 +50,9 @@ requests=(
   echo "plus the larger of $(constant OUTPUT_BYTES_PER_PIXEL) B per pixel for the outputs being written and, when"
   echo "supersampling, one tile of samples per thread (at most 32 MB, or about"
   echo "57 MB at 1024 samples with the widest filter); loading a file takes its bytes plus the"
-  echo "spheres parsed from them."
+  echo "spheres parsed from them. The course's own command (one sample, \`-output\` and \`-depth\` as"
+  echo "TGA) is drawn and written strip by strip: its bound is the program and the spheres, $(constant STRIP_BYTES_PER_PIXEL) B"
+  echo "per pixel of a strip's width times its 128 rows, and, for a dense frame drawn whole before it"
+  echo "is streamed, $(constant HITS_BYTES_PER_PIXEL) B per pixel."
 } > docs/memory.md
 cat docs/memory.md

@@ -504,22 +504,21 @@ fn supersampling_memory_stays_within_the_stated_bound() {
 fn a_request_that_cannot_fit_in_memory_is_refused_with_the_figure() {
     let folder = tempfile::tempdir().unwrap();
     let scene = scene_path("scene1_02.txt");
-    // 600 MB of address space: the binary runs, a 64 Mpx frame (more than a gigabyte) cannot.
-    let output = Command::new("prlimit")
-        .arg("--as=600000000:600000000")
-        .arg(binary())
-        .current_dir(folder.path())
-        .args([
-            "-input",
-            scene.to_str().unwrap(),
-            "-size",
-            "8192",
-            "8192",
-            "-output",
-            "c.tga",
-        ])
-        .output()
-        .unwrap();
+    let scene = scene.to_str().unwrap();
+    // 600 MB of address space: the binary runs, a whole 64 Mpx frame (more than a gigabyte)
+    // cannot.
+    let limited = |arguments: &[&str]| {
+        Command::new("prlimit")
+            .arg("--as=600000000:600000000")
+            .arg(binary())
+            .current_dir(folder.path())
+            .args(["-input", scene, "-size", "8192", "8192"])
+            .args(arguments)
+            .output()
+            .unwrap()
+    };
+    // A PNG is encoded from the whole frame.
+    let output = limited(&["-output", "c.png"]);
     let text = assert_one_line_error(&output);
     assert_eq!(output.status.code(), Some(1), "{text}");
     assert!(
@@ -527,6 +526,15 @@ fn a_request_that_cannot_fit_in_memory_is_refused_with_the_figure() {
         "says the figure: {text}"
     );
     assert!(names_in(folder.path()).is_empty());
+    // The course's own command is drawn and written strip by strip: it fits, and writes both.
+    let output = limited(&["-output", "c.tga", "-depth", "8", "12", "d.tga"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(names_in(folder.path()), ["c.tga", "d.tga"]);
+    let tga_bytes = 18 + 8192 * 8192 * 3;
+    for name in ["c.tga", "d.tga"] {
+        let length = std::fs::metadata(folder.path().join(name)).unwrap().len();
+        assert_eq!(length, tga_bytes, "{name}");
+    }
 }
 
 // --- 11. No thread can be created -----------------------------------------------------------

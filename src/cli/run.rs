@@ -22,8 +22,10 @@ use crate::output::depth_file::{check_writable_raw, stage_depth_png16, stage_raw
 use crate::output::identity::{FileIdentity, identity};
 use crate::output::image_file::{check_writable, stage_image};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
-use crate::render::memory::{load_bound_bytes, render_bound_bytes};
-use crate::render::{Frame, Quality, View, ViewError, render_with_progress};
+use crate::render::memory::{load_bound_bytes, render_bound_bytes, streamed_bound_bytes};
+use crate::render::{
+    Frame, Quality, View, ViewError, render_with_progress, renders_strip_by_strip,
+};
 use crate::scene::{LoadError, Scene, load_scene_with_progress};
 
 /// Why a headless render failed: a usage error (exit status 2) or a scene, view, memory or file
@@ -308,22 +310,37 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
         load_scene_with_progress(&request.input, &|share| bar.report(share))?
     };
     let parse = started.elapsed();
-    let render_bound = render_bound_bytes(
-        request.width_px,
-        request.height_px,
-        scene.spheres.len(),
-        request.quality.sampling.as_ref(),
-        rayon::current_num_threads(),
-    );
+    let view = request_view(&scene, request);
+    let streamed = streams(request);
+    let measuring = Instant::now();
+    let render_bound = if streamed {
+        // A dense frame is drawn whole before it is streamed.
+        let whole_frame = !renders_strip_by_strip(&scene, &view)?;
+        streamed_bound_bytes(
+            request.width_px,
+            request.height_px,
+            scene.spheres.len(),
+            whole_frame,
+        )
+    } else {
+        render_bound_bytes(
+            request.width_px,
+            request.height_px,
+            scene.spheres.len(),
+            request.quality.sampling.as_ref(),
+            rayon::current_num_threads(),
+        )
+    };
+    let measured = measuring.elapsed();
     let memory_bound = check_memory(request, render_bound)?.max(load_bound);
 
-    let view = request_view(&scene, request);
-    if streams(request) {
+    if streamed {
         let streamed = render_streamed(request, &scene, &view)?;
         return Ok(RunReport {
             sphere_count: scene.spheres.len(),
             parse,
-            render: streamed.render,
+            // Measuring the frame's density is part of rendering it.
+            render: measured + streamed.render,
             write: streamed.write,
             size_px: (request.width_px, request.height_px),
             samples_per_pixel: 1,

@@ -10,6 +10,10 @@
 //! * the larger of the supersampler's working memory (a bounded tile of samples per thread) and
 //!   the outputs being encoded ([`OUTPUT_BYTES_PER_PIXEL`] per pixel: two outputs at a time).
 //!
+//! The course's own command, drawn and written strip by strip, holds far less
+//! ([`streamed_bound_bytes`]): two strips and their outputs' pixels, and the whole frame's t and
+//! spheres only when a dense frame is drawn whole first.
+//!
 //! Loading a scene file is bounded separately: the file's bytes and the spheres parsed from them.
 
 use super::Sampling;
@@ -53,6 +57,35 @@ pub fn render_bound_bytes(
     let supersampled = sampling.map_or(0, |_| pixels * SUPERSAMPLED_BYTES_PER_PIXEL);
     let working = sampling.map_or(0, |sampling| working_bytes(sampling, threads) as u64);
     BASELINE_BYTES + spheres + frame + supersampled + working.max(output)
+}
+
+/// Per pixel of a frame drawn whole before it is streamed (a dense frame): t as f64 (8), the
+/// sphere index (4) and, rounded up to a byte, the coarse depth of what is drawn between passes
+/// (8 bytes per tile of 8×8 pixels, and per block of tiles).
+pub const HITS_BYTES_PER_PIXEL: u64 = 13;
+
+/// Per pixel of a strip streamed: the t and sphere of the strip drawn and of the one being
+/// written (2 × 12), and the two outputs' pixels being written (2 × 3) and swapped (2 × 3).
+pub const STRIP_BYTES_PER_PIXEL: u64 = 36;
+
+/// The bound, in bytes, of the streamed command ([`super::render_strips`]) for a
+/// `width_px × height_px` picture of `sphere_count` spheres; `whole_frame` when the frame is
+/// dense and drawn whole first ([`super::renders_strip_by_strip`] says).
+pub fn streamed_bound_bytes(
+    width_px: u32,
+    height_px: u32,
+    sphere_count: usize,
+    whole_frame: bool,
+) -> u64 {
+    let pixels = u64::from(width_px) * u64::from(height_px);
+    let spheres = sphere_count as u64 * SPHERE_BYTES;
+    let strip_pixels = u64::from(width_px) * super::disc::STRIP_ROWS as u64;
+    let hits = if whole_frame {
+        pixels * HITS_BYTES_PER_PIXEL
+    } else {
+        0
+    };
+    BASELINE_BYTES + spheres + hits + strip_pixels * STRIP_BYTES_PER_PIXEL
 }
 
 /// The bound, in bytes, of loading a scene file of `file_bytes` bytes: the bytes, and the

@@ -70,6 +70,14 @@ pub(crate) fn render_strips<E: From<ViewError> + Send>(
     disc::rasterise_strips(&grid, &discs, &depths, consume)
 }
 
+/// Whether [`render_strips`] draws `scene` through `view` strip by strip (`true`) or draws the
+/// whole frame first (a dense frame, drawn front to back): what its memory bound needs to know
+/// ([`memory::streamed_bound_bytes`]).
+pub(crate) fn renders_strip_by_strip(scene: &Scene, view: &View) -> Result<bool, ViewError> {
+    let basis = view.validate()?;
+    Ok(disc::draws_in_file_order(scene, view, &basis))
+}
+
 /// [`render_with`], telling `progress` the share of the frame done (0 to 1): as bands of rows
 /// finish when supersampling (the long renders), once at the end otherwise.
 pub(crate) fn render_with_progress(

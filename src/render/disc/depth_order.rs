@@ -47,6 +47,13 @@ fn covered_pixels(disc: &Disc, radius_px: f64, grid: &PixelGrid, pixels: f64) ->
     }
 }
 
+/// Whether `disc_count` discs with these `depths` on `grid` are drawn in file order
+/// ([`Plan::FileOrder`]: few discs, or fewer than [`CULL_MIN_DISCS_PER_PIXEL`] over a pixel).
+pub(super) fn in_file_order(disc_count: usize, depths: &Depths, grid: &PixelGrid) -> bool {
+    let pixels = f64::from(grid.width_px) * f64::from(grid.height_px);
+    disc_count < CULL_MIN_DISCS || depths.covered_px < CULL_MIN_DISCS_PER_PIXEL * pixels
+}
+
 /// How a frame's discs are drawn.
 pub(super) enum Plan {
     /// In file order, no culling: few discs, or fewer than [`CULL_MIN_DISCS_PER_PIXEL`] over a
@@ -62,8 +69,7 @@ impl Plan {
     /// The plan for `discs` (with their `depth`) on `grid`; with passes, the first covers the
     /// image `first_layers` times over.
     pub(super) fn of(discs: &[Disc], depth: &Depths, grid: &PixelGrid, first_layers: f64) -> Self {
-        let pixels = f64::from(grid.width_px) * f64::from(grid.height_px);
-        if discs.len() < CULL_MIN_DISCS || depth.covered_px < CULL_MIN_DISCS_PER_PIXEL * pixels {
+        if in_file_order(discs.len(), depth, grid) {
             return Self::FileOrder;
         }
         let span = depth.farthest_front - depth.nearest_front;

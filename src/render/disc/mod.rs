@@ -42,11 +42,11 @@ pub(crate) use raster::rasterise_frame;
 pub(crate) use shade::Palette;
 #[cfg(feature = "oracle")]
 pub(crate) use shade::frame_from_hits;
-pub(crate) use strips::{Strip, rasterise_strips};
+pub(crate) use strips::{STRIP_ROWS, Strip, rasterise_strips};
 
 use crate::geometry::camera::CameraBasis;
 use crate::render::View;
-use crate::scene::Scene;
+use crate::scene::{Scene, Sphere};
 
 /// A sphere projected into camera space.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -118,20 +118,45 @@ pub(crate) fn project_discs_with_depths(
             let first = (chunk * PROJECT_CHUNK) as u32;
             let mut depths = Depths::NONE;
             for ((disc, sphere), index) in discs.iter_mut().zip(spheres).zip(first..) {
-                let center_camera = basis.to_camera(sphere.center_world - view.center_world);
-                *disc = Disc {
-                    u: center_camera.x,
-                    v: center_camera.y,
-                    w: center_camera.z,
-                    radius_sq: sphere.radius_world * sphere.radius_world,
-                    sphere: index,
-                };
+                *disc = project_sphere(sphere, index, view, basis);
                 depths = depths.with(disc, &grid);
             }
             depths
         })
         .reduce(|| Depths::NONE, Depths::merge);
     (discs, depths)
+}
+
+/// `sphere`, the `index`th of its scene, projected into the camera space of `view`.
+#[inline]
+fn project_sphere(sphere: &Sphere, index: u32, view: &View, basis: &CameraBasis) -> Disc {
+    let center_camera = basis.to_camera(sphere.center_world - view.center_world);
+    Disc {
+        u: center_camera.x,
+        v: center_camera.y,
+        w: center_camera.z,
+        radius_sq: sphere.radius_world * sphere.radius_world,
+        sphere: index,
+    }
+}
+
+/// Whether `scene` through `view` (basis from [`View::validate`]) is drawn in file order, strip
+/// by strip when streamed ([`strips`]), rather than front to back over the whole frame: the
+/// spheres' discs are projected and measured, not kept.
+pub(crate) fn draws_in_file_order(scene: &Scene, view: &View, basis: &CameraBasis) -> bool {
+    use rayon::prelude::*;
+    let grid = view.grid();
+    let depths = scene
+        .spheres
+        .par_chunks(PROJECT_CHUNK)
+        .map(|spheres| {
+            spheres.iter().fold(Depths::NONE, |depths, sphere| {
+                // The index does not count here.
+                depths.with(&project_sphere(sphere, 0, view, basis), &grid)
+            })
+        })
+        .reduce(|| Depths::NONE, Depths::merge);
+    depth_order::in_file_order(scene.spheres.len(), &depths, &grid)
 }
 
 /// The visible hit at screen (u, v) among `discs`: (t, sphere), smallest t, first in file order
@@ -146,4 +171,69 @@ pub fn nearest_hit(discs: &[Disc], u: f64, v: f64) -> Option<(f64, u32)> {
         }
     }
     best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::depth_map::DepthRange;
+    use crate::render::rng::SplitMix64;
+    use crate::scene::OrthographicCamera;
+    use glam::{DVec3, Vec3};
+
+    /// `count` spheres of radius up to `max_radius` in a 100-unit cube, seen whole.
+    fn scene(count: usize, max_radius: f64) -> Scene {
+        let mut rng = SplitMix64::new(count as u64);
+        Scene {
+            camera: OrthographicCamera {
+                center_world: DVec3::new(0.0, 0.0, 200.0),
+                direction_world: DVec3::NEG_Z,
+                up_world: DVec3::Y,
+                size_world: 100.0,
+            },
+            background: Vec3::ZERO,
+            materials: Vec::new(),
+            spheres: (0..count)
+                .map(|_| Sphere {
+                    center_world: DVec3::new(
+                        rng.uniform(-50.0, 50.0),
+                        rng.uniform(-50.0, 50.0),
+                        rng.uniform(-50.0, 50.0),
+                    ),
+                    radius_world: rng.uniform(0.1, max_radius),
+                    material: None,
+                })
+                .collect(),
+        }
+    }
+
+    #[test]
+    fn file_order_is_told_without_keeping_the_discs_as_the_plan_decides() {
+        // Few discs, discs one or two deep, and discs many deep; a view zoomed in on a corner.
+        let mut outcomes = Vec::new();
+        for (count, max_radius, zoom) in [
+            (20, 30.0, 1.0),
+            (2_000, 2.0, 1.0),
+            (20_000, 2.0, 1.0),
+            (20_000, 2.0, 0.05),
+        ] {
+            let scene = scene(count, max_radius);
+            let mut view = View::of_camera(&scene.camera, 120, 90, DepthRange::new(0.0, 1.0));
+            view.size_world *= zoom;
+            let basis = view.validate().unwrap();
+            let (discs, depths) = project_discs_with_depths(&scene, &view, &basis);
+            let plan = depth_order::Plan::of(&discs, &depths, &view.grid(), 4.0);
+            let in_file_order = matches!(plan, depth_order::Plan::FileOrder);
+            assert_eq!(
+                draws_in_file_order(&scene, &view, &basis),
+                in_file_order,
+                "{count} spheres up to {max_radius}, zoom {zoom}"
+            );
+            outcomes.push(in_file_order);
+        }
+        assert!(
+            outcomes.contains(&true) && outcomes.contains(&false),
+            "{outcomes:?}"
+        );
+    }
 }

@@ -22,7 +22,7 @@ use crate::render::NO_HIT;
 
 /// Rows per strip: sixteen bands, so that both cores have bands to draw (of 4, 8 and 16 bands,
 /// 16 made the course command quickest at 2000×2000).
-pub(super) const STRIP_ROWS: usize = 16 * BAND_ROWS;
+pub(crate) const STRIP_ROWS: usize = 16 * BAND_ROWS;
 
 /// Rows of a frame, top row first: the t and the visible sphere ([`NO_HIT`] where none) of each
 /// pixel, row-major.
