@@ -76,9 +76,10 @@ cd - >/dev/null
   printf '| raytracer | %.1f |\n' "$mine"
   printf '| **speed-up** | **%.1f×** |\n' "$(echo "$cpp / $mine" | bc -l)"
   echo
-  echo "The command draws the frame a strip of 128 rows at a time and writes each strip's colours"
-  echo "and depth greys into the two files while the next strip is drawn, so it never holds the"
-  echo "frame or either image: its own \`-stats\` (medians) give a peak memory of $(printf '%.1f' "$peak") MB,"
+  strip_rows=$(sed -n 's/^pub(crate) const STRIP_ROWS: usize = \([0-9]*\);/\1/p' src/render/disc/strips.rs)
+  echo "The command draws the frame a strip of $strip_rows rows at a time on both cores, and the thread that"
+  echo "draws a strip writes its colours and depth greys at their place in the two files, so it never"
+  echo "holds the frame or either image: its own \`-stats\` (medians) give a peak memory of $(printf '%.1f' "$peak") MB,"
   printf 'render %.1f ms (drawing and writing, at once) and write %.1f ms (what follows the last\n' "$render" "$write"
   echo "strip: completing the files on disk and renaming them into place)."
   echo

@@ -50,9 +50,10 @@ requests=(
   echo "plus the larger of $(constant OUTPUT_BYTES_PER_PIXEL) B per pixel for the outputs being written and, when"
   echo "supersampling, one tile of samples per thread (at most 32 MB, or about"
   echo "57 MB at 1024 samples with the widest filter); loading a file takes its bytes plus the"
+  strip_rows=$(sed -n 's/^pub(crate) const STRIP_ROWS: usize = \([0-9]*\);/\1/p' src/render/disc/strips.rs)
   echo "spheres parsed from them. The course's own command (one sample, \`-output\` and \`-depth\` as"
-  echo "TGA) is drawn and written strip by strip: its bound is the program and the spheres, $(constant STRIP_BYTES_PER_PIXEL) B"
-  echo "per pixel of a strip's width times its 128 rows, and, for a dense frame drawn whole before it"
-  echo "is streamed, $(constant HITS_BYTES_PER_PIXEL) B per pixel."
+  echo "TGA) is drawn and written strip by strip: its bound is the program and the spheres, per thread"
+  echo "$(constant STRIP_BYTES_PER_PIXEL) B per pixel of a strip's width times its $strip_rows rows, and, for a dense frame"
+  echo "drawn whole before it is streamed, $(constant HITS_BYTES_PER_PIXEL) B per pixel."
 } > docs/memory.md
 cat docs/memory.md

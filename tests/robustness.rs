@@ -187,6 +187,47 @@ fn when_one_output_cannot_be_written_no_earlier_file_is_replaced() {
     );
 }
 
+#[test]
+fn a_streamed_command_that_cannot_write_its_files_replaces_none() {
+    // The course's command writes its two TGA files strip by strip, at their places: a limit
+    // met midway (as a disk that fills up) fails the run, and neither old file is touched.
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_02.txt");
+    std::fs::write(folder.path().join("c.tga"), b"old colour").unwrap();
+    std::fs::write(folder.path().join("d.tga"), b"old depth").unwrap();
+    let output = Command::new("prlimit")
+        .arg("--fsize=100000:100000")
+        .arg(binary())
+        .current_dir(folder.path())
+        .args(["-input", scene.to_str().unwrap(), "-size", "640", "640"])
+        .args(["-output", "c.tga", "-depth", "8", "12", "d.tga"])
+        .output()
+        .unwrap();
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(1), "{text}");
+    assert!(
+        text.contains("c.tga") || text.contains("d.tga"),
+        "the message names a file: {text}"
+    );
+    assert!(
+        !text.contains(".raytracer-"),
+        "no temporary file named: {text}"
+    );
+    assert_eq!(
+        std::fs::read(folder.path().join("c.tga")).unwrap(),
+        b"old colour"
+    );
+    assert_eq!(
+        std::fs::read(folder.path().join("d.tga")).unwrap(),
+        b"old depth"
+    );
+    assert_eq!(
+        names_in(folder.path()),
+        ["c.tga", "d.tga"],
+        "no temporary file left"
+    );
+}
+
 // --- 3. Modes -----------------------------------------------------------------------------
 
 #[test]

@@ -11,7 +11,9 @@
 //!   strips afterwards), and a sparse one of many spheres (drawn strip by strip);
 //! * the files of the course's command equal, byte for byte, what the whole-frame path writes
 //!   for the same pixels (the same command with a lossless depth file as well), and replacing
-//!   files leaves no temporary file behind.
+//!   files leaves no temporary file behind;
+//! * the course's command never holds a whole frame (its peak memory, by `-stats`, is below
+//!   what the frame alone takes), so it is the streamed path these tests run.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -201,4 +203,42 @@ fn the_files_are_the_whole_frame_paths_bytes_and_replacing_them_leaves_nothing_b
         .collect();
     names.sort();
     assert_eq!(names, ["s.tga", "sd.tga", "w.pfm", "w.tga", "wd.tga"]);
+}
+
+/// The peak memory `-stats` reports of `arguments`, in MB.
+fn peak_memory_mb(folder: &Path, arguments: &[&str]) -> f64 {
+    let output = Command::new(env!("CARGO_BIN_EXE_raytracer"))
+        .current_dir(folder)
+        .args(arguments)
+        .arg("-stats")
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{arguments:?}");
+    let stats = String::from_utf8(output.stdout).unwrap();
+    let line = stats
+        .lines()
+        .find_map(|line| line.strip_prefix("peak_memory_mb: "))
+        .unwrap_or_else(|| panic!("no peak in {stats}"));
+    line.parse().unwrap()
+}
+
+#[test]
+fn the_course_command_never_holds_a_whole_frame() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_02.txt");
+    let input = scene.to_str().unwrap();
+    let size = ["-size", "2000", "2000"];
+    // t, sphere and colour per pixel: 15 bytes, 60 MB at 2000×2000.
+    let frame_mb = 15.0 * 2000.0 * 2000.0 / 1e6;
+    let mut streamed = vec!["-input", input];
+    streamed.extend(size);
+    streamed.extend(["-output", "c.tga", "-depth", "9", "10", "d.tga"]);
+    let peak = peak_memory_mb(folder.path(), &streamed);
+    assert!(peak < frame_mb, "streamed: {peak} MB");
+    // The same frame written as PNG holds it whole: the measure tells the two apart.
+    let mut whole = vec!["-input", input];
+    whole.extend(size);
+    whole.extend(["-output", "c.png"]);
+    let peak = peak_memory_mb(folder.path(), &whole);
+    assert!(peak > frame_mb, "whole: {peak} MB");
 }

@@ -90,9 +90,11 @@ pub struct RunReport {
     pub(crate) sphere_count: usize,
     /// Time to read and parse the scene.
     pub(crate) parse: Duration,
-    /// Time to render the frame.
+    /// Time to render the frame; for the course's own command, streamed, the time to draw the
+    /// strips and, at once, to colour, map and write them.
     pub(crate) render: Duration,
-    /// Time to encode and write the images.
+    /// Time to encode and write the images; for the streamed command, what follows the last
+    /// strip (completing the files on disk, renaming them into place).
     pub(crate) write: Duration,
     /// Image size.
     pub(crate) size_px: (u32, u32),
@@ -321,6 +323,7 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
             request.height_px,
             scene.spheres.len(),
             whole_frame,
+            rayon::current_num_threads(),
         )
     } else {
         render_bound_bytes(

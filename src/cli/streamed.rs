@@ -1,13 +1,15 @@
 //! The course's own command — one sample per pixel, `-output` and `-depth` as TGA — rendered and
-//! written a strip of rows at a time ([`crate::render::disc::Strip`]): each strip's colours and
-//! depth greys go straight into the two files, so the command never holds the whole frame or
-//! either image. On a fresh process that memory is what costs most (the kernel hands over and
+//! written a strip of rows at a time ([`crate::render::disc::Strip`]): the thread that draws a
+//! strip colours it, maps its depth greys and writes both at their place in the two files, so
+//! the command never holds the whole frame or either image. On a fresh process that memory is what costs most (the kernel hands over and
 //! zeroes every page on first touch); the files are the bytes the whole-frame path writes.
 //!
 //! Everything else (supersampling, comparisons, PNG, 16-bit and raw depth) renders the whole
 //! frame first.
 
+use std::cell::RefCell;
 use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 use super::progress::StepProgress;
@@ -15,7 +17,7 @@ use crate::cli::RenderRequest;
 use crate::output::WriteError;
 use crate::output::atomic::{FileSet, Staged, Staging};
 use crate::output::image_file::ImageFormat;
-use crate::output::tga::TgaWriter;
+use crate::output::tga::TgaFile;
 use crate::output::writeback::Writeback;
 use crate::render::depth_map::{DepthColourMap, DepthPainter};
 use crate::render::disc::{Palette, Strip};
@@ -56,40 +58,31 @@ pub(super) struct Streamed {
     /// Time spent drawing the strips and, at once, colouring, mapping and writing them
     /// (projection and binning included).
     pub(super) render: Duration,
-    /// Time spent after the last strip: completing the files on disk and renaming them.
+    /// Time spent after the last strip: waiting for the early sync under way, completing the
+    /// files on disk and renaming them into place.
     pub(super) write: Duration,
     /// Pixel–disc tests made.
     pub(super) disc_tests: u64,
 }
 
-/// One TGA being written strip by strip, with the pixels of the current strip.
+/// One TGA being written strip by strip, each strip at its place.
 struct Output {
     staging: Staging,
-    tga: TgaWriter,
-    rgb: Vec<[u8; 3]>,
+    tga: TgaFile,
 }
 
 impl Output {
     fn begin(path: &Path, view: &View) -> Result<Self, StreamedError> {
         let mut staging = Staging::begin(path, 0o666)?;
-        let tga = TgaWriter::begin(staging.file()?, view.width_px, view.height_px);
+        let tga = TgaFile::begin(staging.file()?, view.width_px, view.height_px);
         let tga = tga.map_err(|source| staging.error(source))?;
-        Ok(Self {
-            staging,
-            tga,
-            rgb: Vec::new(),
-        })
+        Ok(Self { staging, tga })
     }
 
-    /// Makes the strip's `pixels` with `make` and writes them.
-    fn write(
-        &mut self,
-        pixels: usize,
-        make: impl FnOnce(&mut [[u8; 3]]),
-    ) -> Result<(), StreamedError> {
-        self.rgb.resize(pixels, [0; 3]);
-        make(&mut self.rgb);
-        let written = (self.tga).write_pixels_in_place(self.staging.file()?, &mut self.rgb);
+    /// Writes `rgb`, the pixels from index `first_pixel` on.
+    fn write(&self, first_pixel: usize, rgb: &mut [[u8; 3]]) -> Result<(), StreamedError> {
+        let file = self.staging.file_to_share()?;
+        let written = self.tga.write_pixels_at(file, first_pixel, rgb);
         written.map_err(|source| self.staging.error(source).into())
     }
 
@@ -102,6 +95,23 @@ impl Output {
     }
 }
 
+thread_local! {
+    /// Each thread's pixels of the strip it is writing, kept from strip to strip.
+    static STRIP_RGB: RefCell<Vec<[u8; 3]>> = const { RefCell::new(Vec::new()) };
+}
+
+/// Runs `write` on this thread's pixel buffer, `pixels` long (or on a new one, should it be in
+/// use already).
+fn with_strip_rgb<R>(pixels: usize, write: impl FnOnce(&mut [[u8; 3]]) -> R) -> R {
+    STRIP_RGB.with(|rgb| match rgb.try_borrow_mut() {
+        Ok(mut rgb) => {
+            rgb.resize(pixels, [0; 3]);
+            write(&mut rgb[..pixels])
+        }
+        Err(_) => write(&mut vec![[0; 3]; pixels]),
+    })
+}
+
 /// Renders `request` (one that [`streams`]) of `scene` through `view` and writes its files all
 /// or nothing.
 pub(super) fn render_streamed(
@@ -109,56 +119,66 @@ pub(super) fn render_streamed(
     scene: &Scene,
     view: &View,
 ) -> Result<Streamed, StreamedError> {
-    let mut colour = request
+    let colour = request
         .colour_output
         .as_deref()
         .map(|path| Output::begin(path, view))
         .transpose()?;
-    let mut depth = request
+    let depth = request
         .depth_output
         .as_ref()
         .map(|depth| Output::begin(&depth.path, view))
         .transpose()?;
-    let palette = Palette::of(scene, view.width_px as usize * view.height_px as usize);
+    let width = view.width_px as usize;
+    let palette = Palette::of(scene, width * view.height_px as usize);
     let painter = DepthPainter::new(
         view.depth_range,
         request.depth_colour_map,
         DepthColourMap::FILE_NO_HIT,
     );
+    let outputs: Vec<&Output> = colour.iter().chain(depth.iter()).collect();
     let mut handles = Vec::new();
-    for output in colour.iter_mut().chain(depth.iter_mut()) {
-        let handle = output.staging.file()?.try_clone();
+    for output in &outputs {
+        let handle = output.staging.file_to_share()?.try_clone();
         handles.push(handle.map_err(|source| output.staging.error(source))?);
     }
     let bar = StepProgress::start("rendering");
+    let rows_written = AtomicUsize::new(0);
     let height = f64::from(view.height_px);
     let started = Instant::now();
-    let disc_tests = std::thread::scope(|scope| {
-        let mut writeback = Writeback::start(scope, handles);
+    let (disc_tests, render, synced_early) = std::thread::scope(|scope| {
+        let writeback = Writeback::start(scope, handles);
+        // Each strip coloured, mapped and written by the thread that drew it.
         let disc_tests = render_strips(scene, view, |strip: Strip<'_>| {
-            // The two files at once.
-            let (colour, depth) = rayon::join(
-                || {
-                    let colour = colour.as_mut()?;
-                    Some(colour.write(strip.sphere.len(), |rgb| palette.colour(strip.sphere, rgb)))
-                },
-                || {
-                    let depth = depth.as_mut()?;
-                    Some(depth.write(strip.t.len(), |rgb| painter.paint(strip.t, rgb)))
-                },
-            );
-            colour.transpose()?;
-            depth.transpose()?;
+            let first_pixel = strip.first_row * width;
+            with_strip_rgb(strip.t.len(), |rgb| {
+                if let Some(colour) = &colour {
+                    palette.colour_run(strip.sphere, rgb);
+                    colour.write(first_pixel, rgb)?;
+                }
+                if let Some(depth) = &depth {
+                    painter.paint(strip.t, rgb);
+                    depth.write(first_pixel, rgb)?;
+                }
+                Ok::<_, StreamedError>(())
+            })?;
             writeback.written();
-            let rows = strip.t.len() / view.width_px as usize;
-            bar.report((strip.first_row + rows) as f64 / height);
+            let rows = strip.t.len() / width;
+            let done = rows_written.fetch_add(rows, Ordering::Relaxed) + rows;
+            bar.report(done as f64 / height);
             Ok::<_, StreamedError>(())
         });
-        writeback.stop();
-        disc_tests
-    })?;
-    let render = started.elapsed();
-    let finishing = Instant::now();
+        let render = started.elapsed();
+        (disc_tests, render, writeback.stop())
+    });
+    let disc_tests = disc_tests?;
+    // A file an early sync could not put on the disk is not put in place.
+    if let Err((index, source)) = synced_early
+        && let Some(output) = outputs.get(index)
+    {
+        return Err(output.staging.error(source).into());
+    }
+    drop(outputs);
     // Both files synced at once.
     let (colour, depth) = rayon::join(
         || colour.map(Output::finish).transpose(),
@@ -171,7 +191,7 @@ pub(super) fn render_streamed(
     files.commit()?;
     Ok(Streamed {
         render,
-        write: finishing.elapsed(),
+        write: started.elapsed().saturating_sub(render),
         disc_tests,
     })
 }

@@ -263,3 +263,29 @@ fn a_request_written_back_to_arguments_parses_to_the_same_request() {
         );
     }
 }
+
+#[test]
+fn the_course_command_alone_is_streamed() {
+    let streams = |line: &str| match parse(line).unwrap() {
+        Command::Render(request) => streamed::streams(&request),
+        Command::View(_) | Command::Help => panic!("{line}: expected a render request"),
+    };
+    for line in [
+        "-input a.txt -output c.tga -depth 9 10 d.tga",
+        "-input a.txt -size 30 20 -output c.TGA",
+        "-input a.txt -depth 9 10 d.tga -depth_colormap turbo",
+    ] {
+        assert!(streams(line), "{line}");
+    }
+    for line in [
+        "-input a.txt -output c.png -depth 9 10 d.tga",
+        "-input a.txt -output c.tga -depth 9 10 d.png",
+        "-input a.txt -output c.tga -uniform_samples 4",
+        "-input a.txt -output c.tga -depth16 9 10 d.png",
+        "-input a.txt -output c.tga -depth_raw d.pfm",
+        "-input a.txt -output c.tga -compare_output theirs.tga",
+        "-input a.txt -depth_raw d.pfm",
+    ] {
+        assert!(!streams(line), "{line}");
+    }
+}

@@ -172,6 +172,15 @@ impl Staging {
         }
     }
 
+    /// The temporary file, to write the content to from several threads at once (positional
+    /// writes).
+    pub(crate) fn file_to_share(&self) -> Result<&File, WriteError> {
+        match self.staged.temporary.file.as_ref() {
+            Some(file) => Ok(file),
+            None => Err(self.error(std::io::Error::other("the temporary file is closed"))),
+        }
+    }
+
     /// `source` as the error of writing this file.
     pub(crate) fn error(&self, source: std::io::Error) -> WriteError {
         io_error(&self.staged.destination, source)

@@ -156,40 +156,33 @@ impl DepthPainter {
         }
     }
 
+    /// The colour of a pixel whose nearest hit is at `t` (`+∞`: no hit). On the grey ramp
+    /// without branches on t; which mapping applies is the same for every pixel, so that branch
+    /// is always predicted.
+    #[inline]
+    pub(crate) fn colour_of(&self, t: f64) -> [u8; 3] {
+        match self.grey_ramp {
+            Some((max_t, width)) => {
+                grey_level(t, max_t, width).map_or(self.no_hit, |grey| [grey; 3])
+            }
+            None => self.map.rgb(&self.range, t, self.no_hit),
+        }
+    }
+
     /// The pixels of `t` (storage order), each made from its colour by `pixel` (the viewer
     /// makes texture pixels), in parallel.
     pub(crate) fn pixels<P: Send>(&self, t: &[f64], pixel: impl Fn([u8; 3]) -> P + Sync) -> Vec<P> {
         use rayon::prelude::*;
-        let no_hit = self.no_hit;
-        let t = t.par_iter().with_min_len(PIXELS_PER_TASK);
-        match self.grey_ramp {
-            Some((max_t, width)) => t
-                .map(|&t| pixel(grey_level(t, max_t, width).map_or(no_hit, |grey| [grey; 3])))
-                .collect(),
-            None => t
-                .map(|&t| pixel(self.map.rgb(&self.range, t, no_hit)))
-                .collect(),
-        }
+        t.par_iter()
+            .with_min_len(PIXELS_PER_TASK)
+            .map(|&t| pixel(self.colour_of(t)))
+            .collect()
     }
 
-    /// The colours of the pixels of `t` into `rgb` (as long), in parallel.
+    /// The colours of the pixels of `t` into `rgb` (as long), on this thread.
     pub(crate) fn paint(&self, t: &[f64], rgb: &mut [[u8; 3]]) {
-        use rayon::prelude::*;
-        let no_hit = self.no_hit;
-        let pixels = rgb
-            .par_chunks_mut(PIXELS_PER_TASK)
-            .zip(t.par_chunks(PIXELS_PER_TASK));
-        match self.grey_ramp {
-            Some((max_t, width)) => pixels.for_each(|(rgb, t)| {
-                for (rgb, &t) in rgb.iter_mut().zip(t) {
-                    *rgb = grey_level(t, max_t, width).map_or(no_hit, |grey| [grey; 3]);
-                }
-            }),
-            None => pixels.for_each(|(rgb, t)| {
-                for (rgb, &t) in rgb.iter_mut().zip(t) {
-                    *rgb = self.map.rgb(&self.range, t, no_hit);
-                }
-            }),
+        for (rgb, &t) in rgb.iter_mut().zip(t) {
+            *rgb = self.colour_of(t);
         }
     }
 }

@@ -11,7 +11,7 @@
 //!   the outputs being encoded ([`OUTPUT_BYTES_PER_PIXEL`] per pixel: two outputs at a time).
 //!
 //! The course's own command, drawn and written strip by strip, holds far less
-//! ([`streamed_bound_bytes`]): two strips and their outputs' pixels, and the whole frame's t and
+//! ([`streamed_bound_bytes`]): a strip and its pixels per thread, and the whole frame's t and
 //! spheres only when a dense frame is drawn whole first.
 //!
 //! Loading a scene file is bounded separately: the file's bytes and the spheres parsed from them.
@@ -64,18 +64,19 @@ pub fn render_bound_bytes(
 /// (8 bytes per tile of 8×8 pixels, and per block of tiles).
 pub const HITS_BYTES_PER_PIXEL: u64 = 13;
 
-/// Per pixel of a strip streamed: the t and sphere of the strip drawn and of the one being
-/// written (2 × 12), and the two outputs' pixels being written (2 × 3) and swapped (2 × 3).
-pub const STRIP_BYTES_PER_PIXEL: u64 = 36;
+/// Per pixel of a strip streamed, per thread: its t and sphere (12) and its pixels being written
+/// (3), twice (a thread that starts another strip while its own waits takes fresh ones).
+pub const STRIP_BYTES_PER_PIXEL: u64 = 30;
 
 /// The bound, in bytes, of the streamed command ([`super::render_strips`]) for a
-/// `width_px × height_px` picture of `sphere_count` spheres; `whole_frame` when the frame is
-/// dense and drawn whole first ([`super::renders_strip_by_strip`] says).
+/// `width_px × height_px` picture of `sphere_count` spheres on `threads` threads; `whole_frame`
+/// when the frame is dense and drawn whole first ([`super::renders_strip_by_strip`] says).
 pub fn streamed_bound_bytes(
     width_px: u32,
     height_px: u32,
     sphere_count: usize,
     whole_frame: bool,
+    threads: usize,
 ) -> u64 {
     let pixels = u64::from(width_px) * u64::from(height_px);
     let spheres = sphere_count as u64 * SPHERE_BYTES;
@@ -85,7 +86,7 @@ pub fn streamed_bound_bytes(
     } else {
         0
     };
-    BASELINE_BYTES + spheres + hits + strip_pixels * STRIP_BYTES_PER_PIXEL
+    BASELINE_BYTES + spheres + hits + threads as u64 * strip_pixels * STRIP_BYTES_PER_PIXEL
 }
 
 /// The bound, in bytes, of loading a scene file of `file_bytes` bytes: the bytes, and the

@@ -57,12 +57,12 @@ pub fn render_with(scene: &Scene, view: &View, quality: &Quality) -> Result<Fram
 }
 
 /// Renders `scene` through `view`, one sample at each pixel centre, a strip of rows at a time:
-/// `consume` gets each strip's t and spheres in order, top first ([`disc::Strip`]), the same
-/// pixels [`render`] makes. Returns the pixel–disc tests made.
+/// `consume` gets each strip's t and spheres ([`disc::Strip`]), in parallel and in no fixed
+/// order, the same pixels [`render`] makes. Returns the pixel–disc tests made.
 pub(crate) fn render_strips<E: From<ViewError> + Send>(
     scene: &Scene,
     view: &View,
-    consume: impl FnMut(disc::Strip<'_>) -> Result<(), E> + Send,
+    consume: impl Fn(disc::Strip<'_>) -> Result<(), E> + Sync,
 ) -> Result<u64, E> {
     let basis = view.validate()?;
     let grid = view.grid();

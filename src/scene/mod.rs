@@ -169,6 +169,17 @@ pub fn load_scene_with_progress(
     progress: &(dyn Fn(f64) + Sync),
 ) -> Result<Scene, LoadError> {
     use std::io::{Read as _, Seek as _};
+    // Never backwards (halves report as they read, and a file may shrink meanwhile).
+    let reported = std::sync::Mutex::new(0.0f64);
+    let progress = &|share: f64| {
+        let mut reported = reported
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        if share >= *reported {
+            *reported = share;
+            progress(share);
+        }
+    };
     let name = path.display().to_string();
     let io_error = |source| LoadError::Io {
         path: name.clone(),

@@ -123,8 +123,16 @@ pub(crate) fn project_discs_with_depths(
             }
             depths
         })
-        .reduce(|| Depths::NONE, Depths::merge);
-    (discs, depths)
+        .collect::<Vec<Depths>>();
+    (discs, merge_in_order(&depths))
+}
+
+/// The chunks' [`Depths`] merged in file order: the same sum, bit for bit, however the chunks
+/// were shared out between threads (a plan decided at a threshold must not depend on it).
+fn merge_in_order(chunks: &[Depths]) -> Depths {
+    chunks
+        .iter()
+        .fold(Depths::NONE, |all, &chunk| all.merge(chunk))
 }
 
 /// `sphere`, the `index`th of its scene, projected into the camera space of `view`.
@@ -155,8 +163,9 @@ pub(crate) fn draws_in_file_order(scene: &Scene, view: &View, basis: &CameraBasi
                 depths.with(&project_sphere(sphere, 0, view, basis), &grid)
             })
         })
-        .reduce(|| Depths::NONE, Depths::merge);
-    depth_order::in_file_order(scene.spheres.len(), &depths, &grid)
+        .collect::<Vec<Depths>>();
+    // Summed as the render sums them, so that both decide alike.
+    depth_order::in_file_order(scene.spheres.len(), &merge_in_order(&depths), &grid)
 }
 
 /// The visible hit at screen (u, v) among `discs`: (t, sphere), smallest t, first in file order

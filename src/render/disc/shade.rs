@@ -62,24 +62,28 @@ impl<'a> Palette<'a> {
     /// parallel.
     pub(crate) fn colour(&self, sphere: &[u32], rgb: &mut [[u8; 3]]) {
         const PIXELS_PER_TASK: usize = 16_384;
+        rgb.par_chunks_mut(PIXELS_PER_TASK)
+            .zip(sphere.par_chunks(PIXELS_PER_TASK))
+            .for_each(|(rgb, sphere)| self.colour_run(sphere, rgb));
+    }
+
+    /// [`Self::colour`] on this thread alone.
+    pub(crate) fn colour_run(&self, sphere: &[u32], rgb: &mut [[u8; 3]]) {
         let background = self.background_rgb;
-        let pixels = rgb
-            .par_chunks_mut(PIXELS_PER_TASK)
-            .zip(sphere.par_chunks(PIXELS_PER_TASK));
         match &self.sphere_rgb {
-            Some(table) => pixels.for_each(|(rgb, sphere)| {
+            Some(table) => {
                 for (rgb, &index) in rgb.iter_mut().zip(sphere) {
                     *rgb = *table.get(index as usize).unwrap_or(&background);
                 }
-            }),
-            None => pixels.for_each(|(rgb, sphere)| {
+            }
+            None => {
                 for (rgb, &index) in rgb.iter_mut().zip(sphere) {
                     *rgb = self
                         .spheres
                         .get(index as usize)
                         .map_or(background, |sphere| self.rgb_of_sphere(sphere));
                 }
-            }),
+            }
         }
     }
 }
