@@ -4,7 +4,7 @@
 # program run as a process in a temporary folder, interleaved, ROUNDS times; medians and their
 # ratio. Beside them, the same command with syncing made a no-op (eatmydata, installed with
 # apt-get where missing): what durability costs; the release binary's own -stats (render, write,
-# peak memory); and the whole frame's render cold and warm (examples/render_time.rs). Writes
+# peak memory); and the command's render cold and warm (examples/command_time.rs). Writes
 # docs/command-vs-cpp.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,7 +14,7 @@ if ! command -v eatmydata >/dev/null; then
   $sudo apt-get install -y eatmydata >/dev/null
 fi
 cargo build --release --quiet
-cargo build --release --quiet --example render_time
+cargo build --release --quiet --example command_time
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 g++ -O2 -o "$work/raycast" bench/cpp/raycast.cpp
@@ -42,8 +42,8 @@ for _ in $(seq "$rounds"); do
   "$ours" -input "$scene" -size 2000 2000 -output c.tga -depth 9 10 d.tga -stats \
     | grep -E '^(render_ms|write_ms|peak_memory_mb):' | tr '\n' ' ' >> stats.txt
   echo >> stats.txt
-  # The frame rendered whole, five times in a new process: the first cold, the others warm.
-  read -r first_in_process warm_in_process < <("$repo/target/release/examples/render_time" "$scene" 2000 2000 5)
+  # The command five times in a new process: the first cold, the others warm.
+  read -r first_in_process warm_in_process < <("$repo/target/release/examples/command_time" "$scene" 2000 2000 9 10 5)
   echo "$first_in_process" >> cold.txt
   echo "$warm_in_process" >> warm.txt
 done
@@ -83,10 +83,11 @@ cd - >/dev/null
   printf 'render %.1f ms (drawing and writing, at once) and write %.1f ms (what follows the last\n' "$render" "$write"
   echo "strip: completing the files on disk and renaming them into place)."
   echo
-  echo "The frame rendered whole, five times in each of $rounds new processes"
-  echo "([examples/render_time.rs](../examples/render_time.rs)): the first frame of a process (its"
-  echo "memory fresh from the kernel) against the median of the other four, medians over the"
-  printf 'processes: %.1f ms cold, %.1f ms warm; the cold frame is **%.2f×** the warm one.\n' "$cold" "$warm" "$(echo "$cold / $warm" | bc -l)"
+  echo "The same command five times in each of $rounds new processes"
+  echo "([examples/command_time.rs](../examples/command_time.rs), the binary's own code): the first"
+  echo "run's render of a process (its memory fresh from the kernel) against the median of the other"
+  printf 'four, medians over the processes: %.1f ms cold, %.1f ms warm; the cold render is **%.2f×** the\n' "$cold" "$warm" "$(echo "$cold / $warm" | bc -l)"
+  echo "warm one."
   echo
   echo "## What durability costs"
   echo
