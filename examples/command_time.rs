@@ -20,7 +20,9 @@ fn main() {
         eprintln!("usage: command_time SCENE WIDTH HEIGHT DMIN DMAX [RUNS]");
         std::process::exit(2);
     };
-    let runs: usize = rest.first().map_or(21, |r| r.parse().expect("a whole number"));
+    let runs: usize = rest
+        .first()
+        .map_or(21, |r| r.parse().expect("a whole number"));
     let folder = tempfile::tempdir().expect("a temporary folder");
     let colour = folder.path().join("c.tga");
     let depth = folder.path().join("d.tga");

@@ -148,84 +148,60 @@ fn two_outputs_naming_one_file_by_different_spellings_are_refused_before_renderi
 
 // --- 2. All or nothing --------------------------------------------------------------------
 
-#[test]
-fn when_one_output_cannot_be_written_no_earlier_file_is_replaced() {
+/// Runs the course scene at 640×640 into `colour` and `depth` (in a temporary folder where
+/// both already exist) under a file-size limit of 100 kB, which a 1.2 MB TGA passes midway (the
+/// same as a disk that fills up); checks the run fails with one line naming one of `failing`,
+/// and leaves both old files as they were and nothing else.
+fn a_limit_midway_replaces_nothing(colour: &str, depth: &str, failing: &[&str]) {
     let folder = tempfile::tempdir().unwrap();
     let scene = scene_path("scene1_02.txt");
     // Old outputs the failed run must leave as they were.
-    std::fs::write(folder.path().join("c.png"), b"old colour").unwrap();
-    std::fs::write(folder.path().join("d.tga"), b"old depth").unwrap();
-    // A file-size limit of 100 kB: the small PNG fits, the 1.2 MB TGA does not (the same as a
-    // disk that fills up while the second file is written).
+    std::fs::write(folder.path().join(colour), b"old colour").unwrap();
+    std::fs::write(folder.path().join(depth), b"old depth").unwrap();
     let output = Command::new("prlimit")
         .arg("--fsize=100000:100000")
         .arg(binary())
         .current_dir(folder.path())
         .args(["-input", scene.to_str().unwrap(), "-size", "640", "640"])
-        .args(["-output", "c.png", "-depth", "8", "12", "d.tga"])
+        .args(["-output", colour, "-depth", "8", "12", depth])
         .output()
         .unwrap();
     let text = assert_one_line_error(&output);
     assert_eq!(output.status.code(), Some(1), "{text}");
-    assert!(text.contains("d.tga"), "the message names the file: {text}");
+    assert!(
+        failing.iter().any(|name| text.contains(name)),
+        "the message names the file: {text}"
+    );
     assert!(
         !text.contains(".raytracer-"),
         "no temporary file named: {text}"
     );
     assert_eq!(
-        std::fs::read(folder.path().join("c.png")).unwrap(),
+        std::fs::read(folder.path().join(colour)).unwrap(),
         b"old colour"
     );
     assert_eq!(
-        std::fs::read(folder.path().join("d.tga")).unwrap(),
+        std::fs::read(folder.path().join(depth)).unwrap(),
         b"old depth"
     );
     assert_eq!(
         names_in(folder.path()),
-        ["c.png", "d.tga"],
+        [colour, depth],
         "no temporary file left"
     );
 }
 
 #[test]
+fn when_one_output_cannot_be_written_no_earlier_file_is_replaced() {
+    // The small PNG fits, the TGA does not.
+    a_limit_midway_replaces_nothing("c.png", "d.tga", &["d.tga"]);
+}
+
+#[test]
 fn a_streamed_command_that_cannot_write_its_files_replaces_none() {
     // The course's command writes its two TGA files strip by strip, at their places: a limit
-    // met midway (as a disk that fills up) fails the run, and neither old file is touched.
-    let folder = tempfile::tempdir().unwrap();
-    let scene = scene_path("scene1_02.txt");
-    std::fs::write(folder.path().join("c.tga"), b"old colour").unwrap();
-    std::fs::write(folder.path().join("d.tga"), b"old depth").unwrap();
-    let output = Command::new("prlimit")
-        .arg("--fsize=100000:100000")
-        .arg(binary())
-        .current_dir(folder.path())
-        .args(["-input", scene.to_str().unwrap(), "-size", "640", "640"])
-        .args(["-output", "c.tga", "-depth", "8", "12", "d.tga"])
-        .output()
-        .unwrap();
-    let text = assert_one_line_error(&output);
-    assert_eq!(output.status.code(), Some(1), "{text}");
-    assert!(
-        text.contains("c.tga") || text.contains("d.tga"),
-        "the message names a file: {text}"
-    );
-    assert!(
-        !text.contains(".raytracer-"),
-        "no temporary file named: {text}"
-    );
-    assert_eq!(
-        std::fs::read(folder.path().join("c.tga")).unwrap(),
-        b"old colour"
-    );
-    assert_eq!(
-        std::fs::read(folder.path().join("d.tga")).unwrap(),
-        b"old depth"
-    );
-    assert_eq!(
-        names_in(folder.path()),
-        ["c.tga", "d.tga"],
-        "no temporary file left"
-    );
+    // met midway fails the run, and neither old file is touched.
+    a_limit_midway_replaces_nothing("c.tga", "d.tga", &["c.tga", "d.tga"]);
 }
 
 // --- 3. Modes -----------------------------------------------------------------------------

@@ -153,7 +153,7 @@ pub(super) fn render_streamed(
             let first_pixel = strip.first_row * width;
             with_strip_rgb(strip.t.len(), |rgb| {
                 if let Some(colour) = &colour {
-                    palette.colour_run(strip.sphere, rgb);
+                    palette.colour(strip.sphere, rgb);
                     colour.write(first_pixel, rgb)?;
                 }
                 if let Some(depth) = &depth {

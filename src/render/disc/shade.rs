@@ -58,32 +58,35 @@ impl<'a> Palette<'a> {
             .unwrap_or(self.default_rgb)
     }
 
-    /// The colours of pixels whose visible spheres are `sphere`, into `rgb` (as long), in
-    /// parallel.
-    pub(crate) fn colour(&self, sphere: &[u32], rgb: &mut [[u8; 3]]) {
-        const PIXELS_PER_TASK: usize = 16_384;
-        rgb.par_chunks_mut(PIXELS_PER_TASK)
-            .zip(sphere.par_chunks(PIXELS_PER_TASK))
-            .for_each(|(rgb, sphere)| self.colour_run(sphere, rgb));
+    /// The colour of a pixel whose visible sphere is `sphere` ([`crate::render::NO_HIT`]: none).
+    /// Whether the table is there is the same for every pixel, so that branch is always
+    /// predicted.
+    #[inline]
+    fn rgb_of_index(&self, sphere: u32) -> [u8; 3] {
+        match &self.sphere_rgb {
+            Some(table) => *table.get(sphere as usize).unwrap_or(&self.background_rgb),
+            None => self
+                .spheres
+                .get(sphere as usize)
+                .map_or(self.background_rgb, |sphere| self.rgb_of_sphere(sphere)),
+        }
     }
 
-    /// [`Self::colour`] on this thread alone.
-    pub(crate) fn colour_run(&self, sphere: &[u32], rgb: &mut [[u8; 3]]) {
-        let background = self.background_rgb;
-        match &self.sphere_rgb {
-            Some(table) => {
-                for (rgb, &index) in rgb.iter_mut().zip(sphere) {
-                    *rgb = *table.get(index as usize).unwrap_or(&background);
-                }
-            }
-            None => {
-                for (rgb, &index) in rgb.iter_mut().zip(sphere) {
-                    *rgb = self
-                        .spheres
-                        .get(index as usize)
-                        .map_or(background, |sphere| self.rgb_of_sphere(sphere));
-                }
-            }
+    /// The colours of pixels whose visible spheres are `sphere`, in parallel.
+    pub(crate) fn colours(&self, sphere: &[u32]) -> Vec<[u8; 3]> {
+        const PIXELS_PER_TASK: usize = 16_384;
+        sphere
+            .par_iter()
+            .with_min_len(PIXELS_PER_TASK)
+            .map(|&sphere| self.rgb_of_index(sphere))
+            .collect()
+    }
+
+    /// The colours of pixels whose visible spheres are `sphere` into `rgb` (as long), on this
+    /// thread.
+    pub(crate) fn colour(&self, sphere: &[u32], rgb: &mut [[u8; 3]]) {
+        for (rgb, &sphere) in rgb.iter_mut().zip(sphere) {
+            *rgb = self.rgb_of_index(sphere);
         }
     }
 }
@@ -91,8 +94,7 @@ impl<'a> Palette<'a> {
 /// Completes a frame from per-pixel t and sphere indices: colour from the sphere's material or
 /// the background, quantised to 8 bits.
 pub(crate) fn frame_from_hits(scene: &Scene, view: &View, t: Vec<f64>, sphere: Vec<u32>) -> Frame {
-    let mut colour = vec![[0u8; 3]; sphere.len()];
-    Palette::of(scene, sphere.len()).colour(&sphere, &mut colour);
+    let colour = Palette::of(scene, sphere.len()).colours(&sphere);
     Frame {
         width_px: view.width_px,
         height_px: view.height_px,
