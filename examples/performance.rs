@@ -89,6 +89,32 @@ fn viewer_frame_ms(scene: &Scene, runs: usize) -> f64 {
     })
 }
 
+/// The table of the last window report (`docs/window-frame-times.md`, which
+/// `scripts/window-frame-times.sh` writes: it needs Xvfb and xdotool, so it runs apart), as a
+/// section of this report: the same views in the real window beside this run's dense rows.
+fn in_window_section() -> String {
+    let source = "docs/window-frame-times.md";
+    let mut section = String::from("\n## In the real window\n\n");
+    match std::fs::read_to_string(source) {
+        Ok(report) => {
+            section.push_str(
+                "The same views in the real window, copied from the last run of `scripts/window-frame-times.sh` ([window-frame-times.md](window-frame-times.md), which says how each column is measured; it runs apart, under Xvfb, so its figures come from its own run, not this one):\n\n",
+            );
+            for line in report.lines().filter(|line| line.starts_with('|')) {
+                section.push_str(line);
+                section.push('\n');
+            }
+        }
+        Err(error) => {
+            let _ = writeln!(
+                section,
+                "No window report to copy ({source}: {error}); `scripts/window-frame-times.sh` makes one."
+            );
+        }
+    }
+    section
+}
+
 struct Course {
     name: String,
     /// The viewer's work for a 1024×1024 view (render, textures, histogram).
@@ -365,8 +391,9 @@ fn report(course: &[Course], generated: &[Generated], dense: &[Dense], peak_mb: 
     }
     let _ = writeln!(
         md,
-        "\nThe same views in the real window: [window-frame-times.md](window-frame-times.md). The whole command against a plain C++ ray caster: [command-vs-cpp.md](command-vs-cpp.md). The dense frames against an earlier revision, in one interleaved run: [dense-speedup.md](dense-speedup.md) (`scripts/dense-speedup.sh`).\n"
+        "\nThe whole command against a plain C++ ray caster: [command-vs-cpp.md](command-vs-cpp.md). The dense frames against an earlier revision, in one interleaved run: [dense-speedup.md](dense-speedup.md) (`scripts/dense-speedup.sh`).\n"
     );
+    md.push_str(&in_window_section());
     let _ = writeln!(md, "\n## Generated scenes at 1024×1024\n");
     let _ = writeln!(
         md,
