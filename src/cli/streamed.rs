@@ -1,8 +1,9 @@
 //! The course's own command — one sample per pixel, `-output` and `-depth` as TGA — rendered and
 //! written a strip of rows at a time ([`crate::render::disc::Strip`]): the thread that draws a
 //! strip colours it, maps its depth greys and writes both at their place in the two files, so
-//! the command never holds the whole frame or either image. On a fresh process that memory is what costs most (the kernel hands over and
-//! zeroes every page on first touch); the files are the bytes the whole-frame path writes.
+//! the command never holds the whole frame or either image. In a fresh process that memory is
+//! what costs most (the kernel hands over and zeroes every page on first touch); the files are
+//! the bytes the whole-frame path writes.
 //!
 //! Everything else (supersampling, comparisons, PNG, 16-bit and raw depth) renders the whole
 //! frame first.

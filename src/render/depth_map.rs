@@ -188,9 +188,9 @@ impl DepthPainter {
 }
 
 /// The 8-bit grey ([`DepthRange::grey_u8`]) of a hit at `t` over a range ending at `max_t`,
-/// `width` wide (finite, not zero); `None` for no hit. Without branches on t (which pixels hit,
-/// and where they fall on the ramp, is unpredictable in a dense frame): the same correctly
-/// rounded operations as the general mapping, so the same greys.
+/// `width` wide (finite, not zero); `None` for no hit. Without branches on t (which pixels
+/// hit, and where they fall on the ramp, is unpredictable in a dense frame): the same
+/// correctly rounded operations as the general mapping, so the same greys.
 #[inline]
 fn grey_level(t: f64, max_t: f64, width: f64) -> Option<u8> {
     // clamp((max − t) / width, 0, 1) (no NaN: t is finite or −∞ where it counts), truncated to
