@@ -15,6 +15,8 @@
 //! direction from the screen plane; ties go to the sphere first in the file.
 //!
 //! Layers, from the bottom; each imports only from the layers above it in this list:
+//! * [`platform`]: everything that differs by operating system (files, signals, console,
+//!   memory); no other module names `std::os::unix`, `std::os::windows` or a signal
 //! * [`geometry`]: camera basis and pixel grid, the careful ray–sphere routine
 //! * [`scene`]: model, lexer, parser (typed errors with line and column), writer
 //! * [`render`]: view, frame, the disc rasteriser, sampling, depth mapping, worker
@@ -52,6 +54,7 @@ pub mod geometry;
 #[cfg(feature = "oracle")]
 pub mod oracle;
 pub mod output;
+pub mod platform;
 pub mod render;
 pub mod scene;
 

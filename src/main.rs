@@ -7,14 +7,14 @@
 
 use std::process::ExitCode;
 
-#[cfg(feature = "mimalloc")]
+#[cfg(all(feature = "mimalloc", not(target_os = "macos")))]
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
-use raytracer::cli::process::{
-    OnSignal, PrintError, handle_termination_signals, print_err, print_out, start_thread_pool,
-};
 use raytracer::cli::{Command, parse_command, usage};
+use raytracer::output::atomic::remove_temporary_files;
+use raytracer::platform::console::{PrintError, print_err, print_out};
+use raytracer::platform::process::{OnSignal, handle_termination_signals, start_thread_pool};
 
 fn main() -> ExitCode {
     let command = match parse_command(std::env::args_os().skip(1)) {
@@ -36,7 +36,7 @@ fn main() -> ExitCode {
     match command {
         Command::Help => print_or_fail(&usage(), ExitCode::SUCCESS),
         Command::Render(request) => {
-            handle_termination_signals(OnSignal::Exit);
+            handle_termination_signals(OnSignal::Exit, remove_temporary_files);
             match raytracer::cli::run::run(&request) {
                 Ok(report) => {
                     let mut text = String::new();
@@ -93,11 +93,11 @@ fn open_viewer(request: raytracer::cli::ViewerRequest) -> ExitCode {
         print_err(&format!("raytracer: {reason}\n"));
         return ExitCode::from(1);
     }
-    handle_termination_signals(OnSignal::CloseViewer);
+    handle_termination_signals(OnSignal::CloseViewer, remove_temporary_files);
     let outcome = raytracer::app::run(request);
-    raytracer::output::atomic::remove_temporary_files();
-    if let Some(signal) = raytracer::cli::process::stop_requested() {
-        return ExitCode::from(raytracer::cli::process::exit_status_of(signal));
+    remove_temporary_files();
+    if let Some(signal) = raytracer::platform::process::stop_requested() {
+        return ExitCode::from(raytracer::platform::process::exit_status_of(signal));
     }
     match outcome {
         Ok(()) => ExitCode::SUCCESS,

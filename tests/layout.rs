@@ -1,15 +1,17 @@
 //! The source tree's house rules, checked on the files themselves: imports run downward through
 //! the layers (geometry, scene, render at the bottom; the viewer at the top), no two modules
 //! import each other, no file of `src/` is longer than 500 lines (unit-test files excepted) and
-//! the viewer's coordinator stays under 300.
+//! the viewer's coordinator stays under 300; what differs by operating system is named in
+//! `src/platform/` alone.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The layers, bottom first. A module may use its own layer and the layers before it; `oracle`
 /// (test and study support) may use the core, and nothing but tests may use it.
-const LAYERS: [&str; 10] = [
-    "geometry", "scene", "render", "oracle", "explore", "output", "compare", "cli", "export", "app",
+const LAYERS: [&str; 11] = [
+    "platform", "geometry", "scene", "render", "oracle", "explore", "output", "compare", "cli",
+    "export", "app",
 ];
 
 fn rust_files(folder: &Path, found: &mut Vec<PathBuf>) {
@@ -208,4 +210,42 @@ fn files_stay_short_and_the_coordinator_small() {
         }
     }
     assert!(long.is_empty(), "files over their limit:\n{long:#?}");
+}
+
+/// What names an operating system's own interface: its standard-library extensions, the crates
+/// that serve its signals and console events, and the signals themselves.
+const OPERATING_SYSTEM_NAMES: [&str; 9] = [
+    "std::os::",
+    "signal_hook",
+    "ctrlc",
+    "rustix",
+    "same_file::",
+    "SIGINT",
+    "SIGTERM",
+    "cfg(unix",
+    "cfg(windows",
+];
+
+#[test]
+fn only_the_platform_layer_names_an_operating_system() {
+    let mut found = Vec::new();
+    for file in source_files() {
+        let module = module_path(&file);
+        if module.first().is_some_and(|top| top == "platform") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&file).unwrap();
+        for (number, line) in text.lines().enumerate() {
+            let code = line.split("//").next().unwrap_or_default();
+            for name in OPERATING_SYSTEM_NAMES {
+                if code.contains(name) {
+                    found.push(format!("{}:{}: {name}", file.display(), number + 1));
+                }
+            }
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "operating-system names outside src/platform/:\n{found:#?}"
+    );
 }

@@ -13,7 +13,7 @@ use super::status::Status;
 use super::tasks::{Poll, Task};
 use crate::export::{ExportPlan, save_view_as_scene, write_export};
 use crate::output::ImageFormat;
-use crate::output::identity::same_file;
+use crate::platform::files::same_file;
 use crate::render::{View, check_image_size};
 
 /// Something the user asked for.

@@ -9,7 +9,7 @@ use egui::RichText;
 use super::ViewerApp;
 use super::actions::Action;
 use crate::export::{ExportFiles, ExportPlan};
-use crate::output::identity::same_file;
+use crate::platform::files::same_file;
 
 /// A write that waits for the user's yes.
 #[derive(Debug, Clone, PartialEq)]

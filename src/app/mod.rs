@@ -190,7 +190,7 @@ impl ViewerApp {
             ctx: cc.egui_ctx.clone(),
         };
         let ctx = cc.egui_ctx.clone();
-        crate::cli::process::set_wake(move || ctx.request_repaint());
+        crate::platform::process::set_wake(move || ctx.request_repaint());
         let startup_scene = request.input.or_else(|| app.settings.last_scene.clone());
         if let Some(path) = startup_scene {
             app.open(&path);
@@ -216,7 +216,7 @@ impl eframe::App for ViewerApp {
         if let Some(log) = &mut self.frame_log {
             log.ui(frame.info().cpu_usage);
         }
-        if crate::cli::process::stop_requested().is_some() {
+        if crate::platform::process::stop_requested().is_some() {
             // A termination signal: close (eframe saves the settings on the way out).
             ctx.send_viewport_cmd(egui::ViewportCommand::Close);
         }

@@ -17,8 +17,7 @@ pub(crate) const PAINTER_NICE_VARIABLE: &str = "RAYTRACER_PAINTER_NICE";
 /// the scheduler then gives a busy renderer thread about ten times the painter's share.
 pub(crate) const DEFAULT_PAINTER_NICE: i32 = 10;
 
-/// The largest nice value (the lowest priority).
-const MAX_NICE: i32 = 19;
+use crate::platform::threads::MAX_NICE;
 
 /// The prefix of the names Mesa gives its software painter's threads.
 const PAINTER_THREAD_PREFIX: &str = "llvmpipe-";
@@ -44,41 +43,9 @@ pub(crate) fn painter_nice_of_environment() -> Result<i32, String> {
 }
 
 /// Raises the nice value of this process's painter threads by `raise` (at most to 19; 0 leaves
-/// them as they are); returns how many painter threads there are, raised. A thread that ends
-/// meanwhile, or that the system does not let change, is not counted.
-#[cfg(target_os = "linux")]
+/// them as they are); returns how many painter threads there are, raised (none outside Linux).
 pub(crate) fn lower_painter_threads(raise: i32) -> usize {
-    use rustix::process::{Pid, getpriority_process, setpriority_process};
-    let Ok(tasks) = std::fs::read_dir("/proc/self/task") else {
-        return 0;
-    };
-    let mut lowered = 0;
-    for task in tasks.flatten() {
-        let is_painter = std::fs::read_to_string(task.path().join("comm"))
-            .is_ok_and(|name| name.starts_with(PAINTER_THREAD_PREFIX));
-        let thread = task
-            .file_name()
-            .to_str()
-            .and_then(|id| id.parse().ok())
-            .and_then(Pid::from_raw);
-        let (true, Some(thread)) = (is_painter, thread) else {
-            continue;
-        };
-        // On Linux the nice value belongs to the thread the id names.
-        let Ok(nice) = getpriority_process(Some(thread)) else {
-            continue;
-        };
-        if setpriority_process(Some(thread), (nice + raise).min(MAX_NICE)).is_ok() {
-            lowered += 1;
-        }
-    }
-    lowered
-}
-
-/// Elsewhere the painter's threads are not known by name: none is changed.
-#[cfg(not(target_os = "linux"))]
-pub(crate) fn lower_painter_threads(_raise: i32) -> usize {
-    0
+    crate::platform::threads::lower_threads_named(PAINTER_THREAD_PREFIX, raise)
 }
 
 #[cfg(test)]

@@ -59,10 +59,11 @@ pub fn run(request: ViewerRequest) -> eframe::Result {
     let outcome = run_with(first, request.clone(), &opened);
     // Another renderer only when OpenGL was not asked for, never came up (so no window was
     // shown or closed) and no termination signal has come meanwhile.
-    let retry = asked.is_none() && !opened.get() && crate::cli::process::stop_requested().is_none();
+    let retry =
+        asked.is_none() && !opened.get() && crate::platform::process::stop_requested().is_none();
     match outcome {
         Err(opengl_error) if retry => {
-            crate::cli::process::print_err(&format!(
+            crate::platform::console::print_err(&format!(
                 "raytracer: OpenGL could not start ({opengl_error}); painting with wgpu\n"
             ));
             run_with(Renderer::Wgpu, request, &opened).map_err(|wgpu_error| {
@@ -110,8 +111,7 @@ fn run_with(
 /// Why the viewer cannot open a window here (no display server to talk to), if it cannot: one
 /// line for the user, with what to do instead.
 pub fn no_display_reason() -> Option<&'static str> {
-    let set = |name| std::env::var_os(name).is_some_and(|value| !value.is_empty());
-    if set("DISPLAY") || set("WAYLAND_DISPLAY") || set("WAYLAND_SOCKET") {
+    if !crate::platform::display::display_server_missing() {
         None
     } else {
         Some(

@@ -12,13 +12,11 @@
 pub mod compare;
 mod error;
 mod flags;
-pub mod process;
 pub(crate) mod progress;
 mod raw_args;
 mod request;
 pub mod run;
 mod streamed;
-mod system;
 #[cfg(test)]
 mod tests;
 

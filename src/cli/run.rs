@@ -14,13 +14,13 @@ use super::error::UsageError;
 use super::flags::Flag;
 use super::progress::StepProgress;
 use super::streamed::{StreamedError, render_streamed, streams};
-use super::system::{available_memory_bytes, peak_memory_bytes};
 use crate::cli::RenderRequest;
 use crate::output::WriteError;
 use crate::output::atomic::FileSet;
 use crate::output::depth_file::{check_writable_raw, stage_depth_png16, stage_raw_depth};
-use crate::output::identity::{FileIdentity, identity};
 use crate::output::image_file::{check_writable, stage_image};
+use crate::platform::files::{FileIdentity, identity};
+use crate::platform::memory::{available_memory_bytes, peak_memory_bytes};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 use crate::render::memory::{load_bound_bytes, render_bound_bytes, streamed_bound_bytes};
 use crate::render::{

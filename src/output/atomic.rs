@@ -3,8 +3,8 @@
 //! * **All or nothing**: a [`FileSet`] writes every file of a run to a temporary file beside its
 //!   destination first (synced to disk), and only when all of them are complete renames them over
 //!   their destinations. A failure on any file leaves every old file as it was.
-//! * **Modes**: a new file gets the mode the umask gives (0644 under the usual 022); a replaced
-//!   file keeps the mode it had.
+//! * **Modes** (Unix): a new file gets the mode the umask gives (0644 under the usual 022); a
+//!   replaced file keeps the mode it had. Windows has no modes ([`crate::platform::files`]).
 //! * **Nothing left behind**: a temporary file is removed when its write fails or is abandoned;
 //!   [`remove_temporary_files`] removes the ones still open when the program is stopped by a
 //!   signal (the binary calls it from its signal handler thread).
@@ -12,12 +12,13 @@
 //! Also the check, made before any work, that a destination can be written.
 
 use std::collections::BTreeSet;
-use std::fs::{File, OpenOptions};
+use std::fs::File;
 use std::io::{BufWriter, Write};
-use std::os::unix::fs::OpenOptionsExt as _;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Mutex, PoisonError};
+
+use crate::platform::files;
 
 /// Why a file could not be written.
 #[derive(Debug, thiserror::Error)]
@@ -100,11 +101,7 @@ impl Temporary {
             );
             let path = folder.join(name);
             open_temporaries().insert(path.clone());
-            let opened = OpenOptions::new()
-                .write(true)
-                .create_new(true)
-                .mode(mode)
-                .open(&path);
+            let opened = files::create_new(&path, mode);
             match opened {
                 Ok(file) => {
                     return Ok(Self {
@@ -267,11 +264,10 @@ impl FileSet {
             let destination = staged.destination;
             let error = |source| io_error(&destination, source);
             if let Ok(existing) = std::fs::metadata(&destination) {
-                std::fs::set_permissions(&staged.temporary.path, existing.permissions())
-                    .map_err(error)?;
+                files::keep_mode(&existing, &staged.temporary.path).map_err(error)?;
             }
             drop(staged.temporary.file.take());
-            std::fs::rename(&staged.temporary.path, &destination).map_err(error)?;
+            files::rename_over(&staged.temporary.path, &destination).map_err(error)?;
             open_temporaries().remove(&staged.temporary.path);
             written.push(destination);
         }

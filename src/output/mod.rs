@@ -5,7 +5,6 @@
 
 pub mod atomic;
 pub mod depth_file;
-pub(crate) mod identity;
 pub(crate) mod image_file;
 pub(crate) mod text;
 pub(crate) mod tga;

@@ -7,7 +7,8 @@
 
 use std::fs::File;
 use std::io::Write;
-use std::os::unix::fs::FileExt as _;
+
+use crate::platform::files::write_all_at;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Bytes of the header before the pixels.
@@ -132,7 +133,7 @@ pub(crate) struct TgaFile {
 impl TgaFile {
     /// Writes the header of a `width_px × height_px` image at the start of `file`.
     pub(crate) fn begin(file: &File, width_px: u32, height_px: u32) -> std::io::Result<Self> {
-        file.write_all_at(&header(width_px, height_px)?, 0)?;
+        write_all_at(file, &header(width_px, height_px)?, 0)?;
         Ok(Self {
             pixel_count: width_px as usize * height_px as usize,
             written: AtomicUsize::new(0),
@@ -156,7 +157,7 @@ impl TgaFile {
         }
         to_bgr(rgb);
         let offset = HEADER_BYTES + 3 * first_pixel;
-        file.write_all_at(rgb.as_flattened(), offset as u64)?;
+        write_all_at(file, rgb.as_flattened(), offset as u64)?;
         self.written.fetch_add(rgb.len(), Ordering::Relaxed);
         Ok(())
     }

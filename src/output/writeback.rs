@@ -115,7 +115,7 @@ mod tests {
         let folder = tempfile::tempdir().unwrap();
         let good = File::create(folder.path().join("good")).unwrap();
         let (_reader, writer) = std::io::pipe().unwrap();
-        let pipe = File::from(std::os::fd::OwnedFd::from(writer));
+        let pipe = crate::platform::files::pipe_as_file(writer);
         let failure = std::thread::scope(|scope| {
             let writeback = Writeback::start(scope, vec![good, pipe]);
             for _ in 0..PIECES_PER_SYNC {

@@ -64,25 +64,13 @@ pub const MAX_SCENE_BYTES: u64 = 1 << 30;
 /// Refuses what is not a file that ends: devices, sockets, folders. Regular files and named
 /// pipes (a scene written by another program) are read.
 fn check_file_type(metadata: &std::fs::Metadata, name: &str) -> Result<(), LoadError> {
-    use std::os::unix::fs::FileTypeExt as _;
-    let file_type = metadata.file_type();
-    let kind = if file_type.is_file() || file_type.is_fifo() {
-        return Ok(());
-    } else if file_type.is_dir() {
-        "a folder"
-    } else if file_type.is_char_device() {
-        "a character device"
-    } else if file_type.is_block_device() {
-        "a block device"
-    } else if file_type.is_socket() {
-        "a socket"
-    } else {
-        "not a file"
-    };
-    Err(LoadError::NotAFile {
-        path: name.to_owned(),
-        kind,
-    })
+    match crate::platform::files::not_a_file_to_read(metadata) {
+        None => Ok(()),
+        Some(kind) => Err(LoadError::NotAFile {
+            path: name.to_owned(),
+            kind,
+        }),
+    }
 }
 
 /// Reads and parses a scene file; errors name the path as given.
@@ -110,7 +98,6 @@ fn read_in_halves(
     length: usize,
     progress: &(dyn Fn(usize) + Sync),
 ) -> std::io::Result<Vec<u8>> {
-    use std::os::unix::fs::FileExt as _;
     /// Fills `buffer` from `offset` on, a block at a time; returns how much was read (less at
     /// the end of the file).
     fn read_at(
@@ -122,7 +109,8 @@ fn read_in_halves(
         let mut read = 0;
         while read < buffer.len() {
             let block = (buffer.len() - read).min(READ_BLOCK_BYTES as usize);
-            match file.read_at(&mut buffer[read..read + block], (offset + read) as u64) {
+            let at = (offset + read) as u64;
+            match crate::platform::files::read_at(file, &mut buffer[read..read + block], at) {
                 Ok(0) => break,
                 Ok(n) => read += n,
                 Err(error) if error.kind() == std::io::ErrorKind::Interrupted => {}

@@ -2,20 +2,18 @@
 //! left behind:
 //! * [`start_thread_pool`]: rayon's pool, as large as the process may start, and the calling
 //!   thread alone where no thread can be started (a process limit);
-//! * [`handle_termination_signals`]: on SIGINT, SIGTERM or SIGHUP the temporary files being
-//!   written are removed and the program ends with 128 + the signal's number — at once on the
-//!   command line, after the viewer has saved its settings in the window. SIGXFSZ (a file-size
-//!   limit) is caught so that the write fails with an error instead of killing the program;
-//! * [`print_out`] and [`print_err`]: standard output and error that a closed pipe ends quietly
-//!   and a full device turns into a one-line error, never a panic.
+//! * [`handle_termination_signals`]: when the user or the system asks the program to stop, the
+//!   caller's clean-up runs (the command line removes the temporary files being written) and the
+//!   program ends — at once on the command line, after the viewer has saved its settings in the
+//!   window. On Unix that is SIGINT, SIGTERM or SIGHUP, and the program ends with 128 + the
+//!   signal's number, as shells report it; SIGXFSZ (a file-size limit) is caught so that the
+//!   write fails with an error instead of killing the program. On Windows it is the console's
+//!   control events (Ctrl-C, Ctrl-Break, the console window closed, log-off, shut-down, through
+//!   the `ctrlc` crate), all reported as an interrupt: status 130, as Ctrl-C gives on Unix.
+//!   Windows ends a process a few seconds after its console is closed, clean-up done or not.
 
-use std::io::Write as _;
-use std::sync::atomic::{AtomicBool, AtomicI32, Ordering};
+use std::sync::atomic::{AtomicI32, Ordering};
 use std::sync::{Arc, Mutex, PoisonError};
-
-use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM, SIGXFSZ};
-
-use crate::output::atomic::remove_temporary_files;
 
 /// Starts rayon's global pool with as many threads as the machine has cores and the process may
 /// start; where no thread can be started (a process limit), the calling thread does all the work.
@@ -54,13 +52,13 @@ fn count_startable_threads(wanted: usize) -> usize {
     count
 }
 
-/// What the program does when a termination signal arrives.
+/// What the program does when it is asked to stop.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum OnSignal {
-    /// Remove the temporary files and exit at once (the command line).
+    /// Clean up and exit at once (the command line).
     Exit,
-    /// Ask the viewer to close (it saves its settings) and exit once it has; a second signal
-    /// exits at once.
+    /// Ask the viewer to close (it saves its settings) and exit once it has; a second request
+    /// cleans up and exits at once.
     CloseViewer,
 }
 
@@ -71,7 +69,11 @@ static STOP_SIGNAL: AtomicI32 = AtomicI32::new(0);
 type Wake = Box<dyn Fn() + Send>;
 static WAKE: Mutex<Option<Wake>> = Mutex::new(None);
 
-/// The termination signal that asked the program to stop, if any.
+/// The signal number of an interrupt (Ctrl-C), the one every Windows stop is reported as.
+#[cfg(windows)]
+const SIGINT: i32 = 2;
+
+/// The signal that asked the program to stop, if any (on Windows, an interrupt).
 pub fn stop_requested() -> Option<i32> {
     match STOP_SIGNAL.load(Ordering::Acquire) {
         0 => None,
@@ -89,11 +91,29 @@ pub fn exit_status_of(signal: i32) -> u8 {
     u8::try_from(128 + signal).unwrap_or(u8::MAX)
 }
 
-/// Installs the handling of termination signals described in the module docs. Where no thread
-/// can be started for it, the signals keep their default action (the program ends at once).
-pub fn handle_termination_signals(on_signal: OnSignal) {
+/// A stop asked for by `signal`: the viewer is woken the first time; otherwise `clean_up` runs
+/// and the program exits.
+fn stop(signal: i32, on_signal: OnSignal, clean_up: fn()) {
+    let first = STOP_SIGNAL.swap(signal, Ordering::AcqRel) == 0;
+    if on_signal == OnSignal::CloseViewer && first {
+        if let Some(wake) = WAKE.lock().unwrap_or_else(PoisonError::into_inner).as_ref() {
+            wake();
+        }
+        return;
+    }
+    clean_up();
+    std::process::exit(i32::from(exit_status_of(signal)));
+}
+
+/// Installs the handling of stop requests described in the module docs; `clean_up` runs before
+/// the program exits on one. Where no thread can be started for it, the requests keep their
+/// default action (the program ends at once).
+#[cfg(unix)]
+pub fn handle_termination_signals(on_signal: OnSignal, clean_up: fn()) {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM, SIGXFSZ};
     // A file-size limit makes writes fail (EFBIG) instead of killing the program.
-    let _ = signal_hook::flag::register(SIGXFSZ, Arc::new(AtomicBool::new(false)));
+    let _ =
+        signal_hook::flag::register(SIGXFSZ, Arc::new(std::sync::atomic::AtomicBool::new(false)));
     // The handlers are registered on the thread that serves them, so that they never exist
     // without it; the program goes on once they are (a signal that came before would end it
     // the default way, or not at all where the parent ignores it).
@@ -107,16 +127,7 @@ pub fn handle_termination_signals(on_signal: OnSignal) {
             };
             let _ = registered.send(());
             for signal in signals.forever() {
-                let first = STOP_SIGNAL.swap(signal, Ordering::AcqRel) == 0;
-                if on_signal == OnSignal::CloseViewer && first {
-                    if let Some(wake) = WAKE.lock().unwrap_or_else(PoisonError::into_inner).as_ref()
-                    {
-                        wake();
-                    }
-                    continue;
-                }
-                remove_temporary_files();
-                std::process::exit(i32::from(exit_status_of(signal)));
+                stop(signal, on_signal, clean_up);
             }
         });
     if spawned.is_ok() {
@@ -125,27 +136,11 @@ pub fn handle_termination_signals(on_signal: OnSignal) {
     }
 }
 
-/// How a write to standard output or error ended.
-#[derive(Debug)]
-pub enum PrintError {
-    /// The reader went away (a closed pipe): end quietly.
-    Closed,
-    /// Another failure (a full device): worth a one-line message.
-    Failed(std::io::Error),
-}
-
-/// Writes `text` to standard output.
-pub fn print_out(text: &str) -> Result<(), PrintError> {
-    let mut out = std::io::stdout().lock();
-    out.write_all(text.as_bytes())
-        .and_then(|()| out.flush())
-        .map_err(|error| match error.kind() {
-            std::io::ErrorKind::BrokenPipe => PrintError::Closed,
-            _ => PrintError::Failed(error),
-        })
-}
-
-/// Writes `text` to standard error; a failure is ignored (there is nowhere left to say it).
-pub fn print_err(text: &str) {
-    let _ = std::io::stderr().lock().write_all(text.as_bytes());
+/// Installs the handling of stop requests described in the module docs; `clean_up` runs before
+/// the program exits on one. Where the handler cannot be set, the console's events keep their
+/// default action (the program ends at once).
+#[cfg(windows)]
+pub fn handle_termination_signals(on_signal: OnSignal, clean_up: fn()) {
+    // ctrlc serves the events on a thread of its own.
+    let _ = ctrlc::try_set_handler(move || stop(SIGINT, on_signal, clean_up));
 }

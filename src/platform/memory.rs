@@ -1,11 +1,14 @@
 //! What the operating system tells about memory (Linux `/proc`): how much the program may still
-//! use, and how much it has used at most. Elsewhere, or where `/proc` cannot be read, both are
-//! unknown and no request is refused for memory.
+//! use, and how much it has used at most. Elsewhere (Windows, macOS), or where `/proc` cannot be
+//! read, both are unknown and no request is refused for memory beforehand.
 
 /// Bytes the program may still allocate: the smallest of the memory available on the machine
 /// (`MemAvailable`) and what the address-space and data-size limits leave (`ulimit -v`,
 /// `ulimit -d`). `None` when none of them is known.
-pub(crate) fn available_memory_bytes() -> Option<u64> {
+pub fn available_memory_bytes() -> Option<u64> {
+    if !cfg!(target_os = "linux") {
+        return None;
+    }
     let meminfo = std::fs::read_to_string("/proc/meminfo").ok();
     let available = meminfo
         .as_deref()
@@ -28,7 +31,10 @@ pub(crate) fn available_memory_bytes() -> Option<u64> {
 }
 
 /// The program's peak resident memory so far (`VmHWM`), in bytes.
-pub(crate) fn peak_memory_bytes() -> Option<u64> {
+pub fn peak_memory_bytes() -> Option<u64> {
+    if !cfg!(target_os = "linux") {
+        return None;
+    }
     let status = std::fs::read_to_string("/proc/self/status").ok()?;
     kib_field(&status, "VmHWM:")
 }

@@ -1,0 +1,259 @@
+//! Files where Unix and Windows differ:
+//! * positional reads and writes ([`read_at`], [`write_all_at`]), so several threads read or
+//!   write one open file at their own offsets (`pread`/`pwrite` on Unix, `ReadFile`/`WriteFile`
+//!   with an offset on Windows);
+//! * what a path is when it is not a file to read ([`not_a_file_to_read`]): folders, devices,
+//!   sockets; named pipes are read (a scene written by another program);
+//! * modes ([`create_new`], [`keep_mode`]): on Unix a new file gets the mode asked for less the
+//!   umask, and a replaced file keeps its mode. Windows has no modes: a new file takes the
+//!   permissions its folder passes on, and nothing is copied from a replaced file (a read-only
+//!   attribute copied to a temporary file would stop it from being removed);
+//! * [`rename_over`]: on Windows a file another program holds open cannot be replaced, and the
+//!   error says so in words;
+//! * file identity ([`identity`], [`same_file`]): the same file by two names, links included.
+//!   On Unix the device and inode from the file's metadata (opening a named pipe to ask would
+//!   wait for a writer); on Windows the volume and file index through the `same-file` crate (the
+//!   standard library's are not stable). A file that does not exist yet is its canonical folder
+//!   and its name, the name compared without case on Windows and macOS, whose file systems
+//!   usually ignore it.
+
+use std::fs::File;
+use std::path::{Path, PathBuf};
+
+/// Reads into `buffer` from `offset` in `file`; returns how many bytes were read (0 at the end).
+pub fn read_at(file: &File, buffer: &mut [u8], offset: u64) -> std::io::Result<usize> {
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::FileExt::read_at(file, buffer, offset)
+    }
+    #[cfg(windows)]
+    {
+        std::os::windows::fs::FileExt::seek_read(file, buffer, offset)
+    }
+}
+
+/// Writes all of `bytes` at `offset` in `file`.
+pub fn write_all_at(file: &File, bytes: &[u8], offset: u64) -> std::io::Result<()> {
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::FileExt::write_all_at(file, bytes, offset)
+    }
+    #[cfg(windows)]
+    {
+        let (mut bytes, mut offset) = (bytes, offset);
+        while !bytes.is_empty() {
+            match std::os::windows::fs::FileExt::seek_write(file, bytes, offset) {
+                Ok(0) => return Err(std::io::ErrorKind::WriteZero.into()),
+                Ok(n) => {
+                    bytes = &bytes[n..];
+                    offset += n as u64;
+                }
+                Err(error) if error.kind() == std::io::ErrorKind::Interrupted => {}
+                Err(error) => return Err(error),
+            }
+        }
+        Ok(())
+    }
+}
+
+/// What `metadata` describes when it is not something a scene can be read from (a regular file
+/// or a named pipe): "a folder", "a character device", …; `None` when it can be read.
+pub fn not_a_file_to_read(metadata: &std::fs::Metadata) -> Option<&'static str> {
+    let file_type = metadata.file_type();
+    if file_type.is_file() {
+        return None;
+    }
+    if file_type.is_dir() {
+        return Some("a folder");
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt as _;
+        if file_type.is_fifo() {
+            return None;
+        }
+        if file_type.is_char_device() {
+            return Some("a character device");
+        }
+        if file_type.is_block_device() {
+            return Some("a block device");
+        }
+        if file_type.is_socket() {
+            return Some("a socket");
+        }
+    }
+    Some("not a file")
+}
+
+/// Creates `path`, which must not exist yet, for writing; on Unix with `mode` less the umask
+/// (Windows has no modes: the folder's permissions apply).
+pub fn create_new(path: &Path, mode: u32) -> std::io::Result<File> {
+    let mut options = std::fs::OpenOptions::new();
+    options.write(true).create_new(true);
+    #[cfg(unix)]
+    std::os::unix::fs::OpenOptionsExt::mode(&mut options, mode);
+    #[cfg(not(unix))]
+    let _ = mode;
+    options.open(path)
+}
+
+/// Gives `temporary`, about to replace a file described by `replaced`, that file's mode (Unix).
+/// Nothing on Windows (see the module docs).
+pub fn keep_mode(replaced: &std::fs::Metadata, temporary: &Path) -> std::io::Result<()> {
+    #[cfg(unix)]
+    {
+        std::fs::set_permissions(temporary, replaced.permissions())
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = (replaced, temporary);
+        Ok(())
+    }
+}
+
+/// Windows' `ERROR_SHARING_VIOLATION` and `ERROR_LOCK_VIOLATION`: another program holds the file.
+#[cfg(windows)]
+const HELD_BY_ANOTHER_PROGRAM: [i32; 2] = [32, 33];
+
+/// Renames `from` over `to` (replacing it). On Windows, a file that another program holds open
+/// cannot be replaced: the error says so in words.
+pub fn rename_over(from: &Path, to: &Path) -> std::io::Result<()> {
+    let renamed = std::fs::rename(from, to);
+    #[cfg(windows)]
+    if let Err(error) = &renamed
+        && error
+            .raw_os_error()
+            .is_some_and(|code| HELD_BY_ANOTHER_PROGRAM.contains(&code))
+    {
+        return Err(std::io::Error::new(
+            error.kind(),
+            "another program has the file open; close it there and try again",
+        ));
+    }
+    renamed
+}
+
+/// A file's identity; see the module docs.
+#[derive(Debug, PartialEq, Eq)]
+pub enum FileIdentity {
+    /// A file that exists, by device and inode.
+    #[cfg(unix)]
+    Existing {
+        /// Its device.
+        device: u64,
+        /// Its inode.
+        inode: u64,
+    },
+    /// A file that exists, by volume and file index.
+    #[cfg(not(unix))]
+    Existing(same_file::Handle),
+    /// A file to be created: its canonical folder joined with its name.
+    New(PathBuf),
+}
+
+/// The identity of the file `path` names; `None` when not even its folder exists.
+pub fn identity(path: &Path) -> Option<FileIdentity> {
+    if let Some(existing) = existing_identity(path) {
+        return Some(existing);
+    }
+    let parent = match path.parent() {
+        Some(parent) if !parent.as_os_str().is_empty() => parent,
+        _ => Path::new("."),
+    };
+    let folder = std::fs::canonicalize(parent).ok()?;
+    let name = path.file_name()?;
+    let name = if cfg!(any(windows, target_os = "macos")) {
+        name.to_string_lossy().to_lowercase().into()
+    } else {
+        name.to_owned()
+    };
+    Some(FileIdentity::New(folder.join(name)))
+}
+
+#[cfg(unix)]
+fn existing_identity(path: &Path) -> Option<FileIdentity> {
+    use std::os::unix::fs::MetadataExt as _;
+    let metadata = std::fs::metadata(path).ok()?;
+    Some(FileIdentity::Existing {
+        device: metadata.dev(),
+        inode: metadata.ino(),
+    })
+}
+
+#[cfg(not(unix))]
+fn existing_identity(path: &Path) -> Option<FileIdentity> {
+    std::fs::metadata(path).ok()?;
+    same_file::Handle::from_path(path)
+        .ok()
+        .map(FileIdentity::Existing)
+}
+
+/// Whether `a` and `b` name the same file.
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    matches!((identity(a), identity(b)), (Some(x), Some(y)) if x == y)
+}
+
+/// The writing end of an anonymous pipe as a [`File`] (a file that cannot be synced), for tests.
+#[cfg(test)]
+pub(crate) fn pipe_as_file(writer: std::io::PipeWriter) -> File {
+    #[cfg(unix)]
+    {
+        File::from(std::os::fd::OwnedFd::from(writer))
+    }
+    #[cfg(windows)]
+    {
+        File::from(std::os::windows::io::OwnedHandle::from(writer))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spellings_and_links_of_one_file_are_the_same_file() {
+        let folder = tempfile::tempdir().unwrap();
+        let file = folder.path().join("a.txt");
+        std::fs::write(&file, b"x").unwrap();
+        std::fs::create_dir(folder.path().join("sub")).unwrap();
+        #[cfg(unix)]
+        std::os::unix::fs::symlink(&file, folder.path().join("link")).unwrap();
+        #[cfg(not(unix))]
+        std::fs::hard_link(&file, folder.path().join("link")).unwrap();
+        std::fs::hard_link(&file, folder.path().join("hard")).unwrap();
+        for other in ["sub/../a.txt", "./a.txt", "link", "hard"] {
+            assert!(same_file(&file, &folder.path().join(other)), "{other}");
+        }
+        // Files that do not exist yet: by folder and name.
+        let new = folder.path().join("new.png");
+        assert!(same_file(&new, &folder.path().join("sub/../new.png")));
+        assert!(!same_file(&new, &folder.path().join("other.png")));
+        assert!(!same_file(&file, &new));
+    }
+
+    #[test]
+    fn positional_writes_and_reads_land_at_their_offsets() {
+        let folder = tempfile::tempdir().unwrap();
+        let path = folder.path().join("positions");
+        let file = create_new(&path, 0o600).unwrap();
+        write_all_at(&file, b"world", 6).unwrap();
+        write_all_at(&file, b"hello ", 0).unwrap();
+        assert_eq!(std::fs::read(&path).unwrap(), b"hello world");
+        let file = File::open(&path).unwrap();
+        let mut buffer = [0u8; 5];
+        assert_eq!(read_at(&file, &mut buffer, 6).unwrap(), 5);
+        assert_eq!(&buffer, b"world");
+        assert_eq!(read_at(&file, &mut buffer, 11).unwrap(), 0, "the end");
+        assert!(create_new(&path, 0o600).is_err(), "it exists");
+    }
+
+    #[test]
+    fn folders_are_not_files_to_read_and_files_are() {
+        let folder = tempfile::tempdir().unwrap();
+        let metadata = std::fs::metadata(folder.path()).unwrap();
+        assert_eq!(not_a_file_to_read(&metadata), Some("a folder"));
+        let file = folder.path().join("scene.txt");
+        std::fs::write(&file, b"x").unwrap();
+        assert_eq!(not_a_file_to_read(&std::fs::metadata(&file).unwrap()), None);
+    }
+}
