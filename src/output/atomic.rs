@@ -286,13 +286,15 @@ fn is_a_folder() -> std::io::Error {
     std::io::Error::new(std::io::ErrorKind::IsADirectory, "is a folder")
 }
 
-/// `path` is not a folder and a temporary file can be created (and is removed) beside it.
+/// `path` is not a folder, a temporary file can be created (and is removed) beside it, and the
+/// file there, if any, can be replaced.
 pub(crate) fn check_folder_writable(path: &Path) -> Result<(), WriteError> {
     if path.is_dir() {
         return Err(io_error(path, is_a_folder()));
     }
     Temporary::create(folder_of(path), 0o600)
         .map(drop)
+        .and_then(|()| files::check_replaceable(path))
         .map_err(|source| io_error(path, source))
 }
 

@@ -9,7 +9,7 @@
 //!   permissions its folder passes on, and nothing is copied from a replaced file (a read-only
 //!   attribute copied to a temporary file would stop it from being removed);
 //! * [`rename_over`]: on Windows a file another program holds open cannot be replaced, and the
-//!   error says so in words;
+//!   error says so in words (the old file stays as it was);
 //! * file identity ([`identity`], [`same_file`]): the same file by two names, links included.
 //!   On Unix the device and inode from the file's metadata (opening a named pipe to ask would
 //!   wait for a writer); on Windows the volume and file index through the `same-file` crate (the
@@ -111,24 +111,47 @@ pub fn keep_mode(replaced: &std::fs::Metadata, temporary: &Path) -> std::io::Res
     }
 }
 
-/// Windows' `ERROR_SHARING_VIOLATION` and `ERROR_LOCK_VIOLATION`: another program holds the file.
-#[cfg(windows)]
-const HELD_BY_ANOTHER_PROGRAM: [i32; 2] = [32, 33];
+/// Whether an existing file at `path` can be replaced by a rename: on Windows a read-only file
+/// cannot (Unix replaces it, and [`keep_mode`] gives the new file its mode). Checked before any
+/// work, so that a run that could not replace it writes nothing.
+pub fn check_replaceable(path: &Path) -> std::io::Result<()> {
+    #[cfg(windows)]
+    if std::fs::metadata(path).is_ok_and(|metadata| metadata.permissions().readonly()) {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::PermissionDenied,
+            "the file is read-only, and Windows does not replace a read-only file",
+        ));
+    }
+    #[cfg(not(windows))]
+    let _ = path;
+    Ok(())
+}
 
-/// Renames `from` over `to` (replacing it). On Windows, a file that another program holds open
-/// cannot be replaced: the error says so in words.
+/// Renames `from` over `to` (replacing it). On Windows a file that another program holds open
+/// cannot be replaced (Windows reports a sharing violation, or denies access as it does for a
+/// read-only file): the error says so in words, with the system's code.
 pub fn rename_over(from: &Path, to: &Path) -> std::io::Result<()> {
     let renamed = std::fs::rename(from, to);
     #[cfg(windows)]
-    if let Err(error) = &renamed
-        && error
-            .raw_os_error()
-            .is_some_and(|code| HELD_BY_ANOTHER_PROGRAM.contains(&code))
-    {
-        return Err(std::io::Error::new(
-            error.kind(),
-            "another program has the file open; close it there and try again",
-        ));
+    if let Err(error) = &renamed {
+        let why = match error.raw_os_error() {
+            // ERROR_SHARING_VIOLATION, ERROR_LOCK_VIOLATION
+            Some(code @ (32 | 33)) => {
+                Some((code, "another program has the file open; close it there"))
+            }
+            // ERROR_ACCESS_DENIED, for a file that is there
+            Some(code @ 5) if to.exists() => Some((
+                code,
+                "access denied: another program has the file open, or the file is read-only",
+            )),
+            _ => None,
+        };
+        if let Some((code, why)) = why {
+            return Err(std::io::Error::new(
+                error.kind(),
+                format!("{why} (os error {code})"),
+            ));
+        }
     }
     renamed
 }

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# The Windows build, checked under Wine on Linux (Debian's mingw-w64 and wine64).
+#   bash scripts/windows.sh build   the command line's release .exe for x86_64-pc-windows-gnu
+#                                   (without the viewer) and the test scaffolding beside it
+#   bash scripts/windows.sh test    build, then tests/windows_exe.rs against the .exe under Wine
+#   bash scripts/windows.sh viewer  the whole program (viewer included) for Windows
+# Installs what is missing (the Rust target, mingw-w64, wine64; needs root or sudo).
+# The scaffolding (tests/windows/*.c) is never shipped: bcryptprimitives.dll stands in for the
+# one Wine 8 lacks (Rust's standard library calls its ProcessPrng at start-up), hold_open.exe
+# holds a file open as another Windows program would.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+target=x86_64-pc-windows-gnu
+out="target/$target/release"
+
+install() {
+  rustup target list --installed 2>/dev/null | grep -qx "$target" || rustup target add "$target"
+  local packages=(gcc-mingw-w64-x86-64 wine64 wine)
+  local missing=()
+  for package in "${packages[@]}"; do
+    dpkg -s "$package" >/dev/null 2>&1 || missing+=("$package")
+  done
+  if [ ${#missing[@]} -gt 0 ]; then
+    local sudo=""
+    [ "$(id -u)" -ne 0 ] && sudo="sudo"
+    echo "installing: ${missing[*]}"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  fi
+}
+
+scaffolding() {
+  x86_64-w64-mingw32-gcc -O2 -shared -o "$out/bcryptprimitives.dll" tests/windows/processprng.c -ladvapi32
+  x86_64-w64-mingw32-gcc -O2 -o "$out/hold_open.exe" tests/windows/hold_open.c
+}
+
+wine_prefix() {
+  # A prefix of our own, made once; no Mono or Gecko installer prompts.
+  export WINEPREFIX="$PWD/target/wine-prefix" WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml="
+  if [ ! -f "$WINEPREFIX/system.reg" ]; then
+    wineboot -i >/dev/null 2>&1 || true
+    wineserver -w
+  fi
+}
+
+case "${1:-}" in
+  build)
+    install
+    cargo build --release --target "$target" --no-default-features --features mimalloc
+    scaffolding
+    ls -l "$out/raytracer.exe"
+    ;;
+  test)
+    install
+    cargo build --release --target "$target" --no-default-features --features mimalloc
+    scaffolding
+    wine_prefix
+    # One server for the whole run (each test starts several programs).
+    wineserver -p 60 2>/dev/null || true  # (already running: fine)
+    RAYTRACER_WINDOWS_EXE="$PWD/$out/raytracer.exe" cargo test --test windows_exe -- --ignored
+    ;;
+  viewer)
+    install
+    cargo build --release --target "$target"
+    scaffolding
+    ls -l "$out/raytracer.exe"
+    ;;
+  *)
+    echo "usage: bash scripts/windows.sh build|test|viewer" >&2
+    exit 2
+    ;;
+esac
