@@ -71,8 +71,8 @@ const COURSE_RUNS: [(u32, &str, &str); 7] = [
     (7, "-2", "2"),
 ];
 
-#[test]
 #[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
 fn the_course_commands_write_the_linux_binarys_bytes_and_the_courses_colours() {
     let windows = tempfile::tempdir().unwrap();
     let linux = tempfile::tempdir().unwrap();
@@ -118,8 +118,8 @@ fn the_course_commands_write_the_linux_binarys_bytes_and_the_courses_colours() {
     }
 }
 
-#[test]
 #[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
 fn a_malformed_scene_is_refused_with_its_line_and_column() {
     let folder = tempfile::tempdir().unwrap();
     std::fs::write(
@@ -146,8 +146,8 @@ fn a_malformed_scene_is_refused_with_its_line_and_column() {
     assert_eq!(names_in(folder.path()), ["broken.txt"]);
 }
 
-#[test]
 #[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
 fn usage_errors_exit_two_with_one_line_and_write_nothing() {
     let folder = tempfile::tempdir().unwrap();
     scene_in(folder.path(), "scene1_01.txt");
@@ -174,8 +174,8 @@ fn usage_errors_exit_two_with_one_line_and_write_nothing() {
     assert_eq!(names_in(folder.path()), [scene]);
 }
 
-#[test]
 #[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
 fn comparing_exits_zero_on_the_courses_image_and_three_on_another() {
     let folder = tempfile::tempdir().unwrap();
     scene_in(folder.path(), "scene1_02.txt");
@@ -204,8 +204,8 @@ fn comparing_exits_zero_on_the_courses_image_and_three_on_another() {
     }
 }
 
-#[test]
 #[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
 fn an_output_that_names_the_input_or_another_output_is_refused() {
     let folder = tempfile::tempdir().unwrap();
     scene_in(folder.path(), "scene1_02.txt");
@@ -265,8 +265,8 @@ fn an_output_that_names_the_input_or_another_output_is_refused() {
     );
 }
 
-#[test]
 #[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
 fn an_unwritable_destination_leaves_every_old_file_as_it_was() {
     let folder = tempfile::tempdir().unwrap();
     scene_in(folder.path(), "scene1_01.txt");
@@ -312,8 +312,8 @@ fn an_unwritable_destination_leaves_every_old_file_as_it_was() {
     }
 }
 
-#[test]
 #[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
 fn a_file_another_program_holds_open_is_not_replaced_and_the_error_says_why() {
     let folder = tempfile::tempdir().unwrap();
     scene_in(folder.path(), "scene1_02.txt");
@@ -373,8 +373,8 @@ fn a_file_another_program_holds_open_is_not_replaced_and_the_error_says_why() {
     );
 }
 
-#[test]
 #[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
 fn a_closed_pipe_ends_the_program_quietly() {
     let folder = tempfile::tempdir().unwrap();
     scene_in(folder.path(), "scene1_02.txt");

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The Windows viewer under Wine, in a real window under Xvfb: builds the whole program for
+# x86_64-pc-windows-gnu (scripts/windows.sh viewer), starts it on the embedded default scene,
+# waits, and takes a screenshot of the screen.
+#   bash scripts/windows-viewer-screenshot.sh [OUT.png] [SECONDS]   (default docs/windows-viewer.png, 25)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out="${1:-docs/windows-viewer.png}"
+wait_s="${2:-25}"
+bash scripts/windows.sh viewer >/dev/null
+for package in xvfb imagemagick; do
+  dpkg -s "$package" >/dev/null 2>&1 || { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "$package"; }
+done
+export WINEPREFIX="$PWD/target/wine-prefix" WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml="
+[ -f "$WINEPREFIX/system.reg" ] || { wineboot -i >/dev/null 2>&1 || true; wineserver -w; }
+Xvfb -displayfd 1 -screen 0 1280x800x24 > "$WINEPREFIX/display" 2>/dev/null &
+xvfb=$!
+for _ in $(seq 100); do [ -s "$WINEPREFIX/display" ] && break; sleep 0.1; done
+export DISPLAY=":$(cat "$WINEPREFIX/display")"
+wine target/x86_64-pc-windows-gnu/release/raytracer.exe > "$WINEPREFIX/viewer.log" 2>&1 &
+viewer=$!
+sleep "$wait_s"
+import -window root "$out"
+kill "$viewer" 2>/dev/null || true
+wineserver -k 2>/dev/null || true
+kill "$xvfb" 2>/dev/null || true
+echo "screenshot: $out (the viewer said: $(tr '\n' ' ' < "$WINEPREFIX/viewer.log"))"
