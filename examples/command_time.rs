@@ -8,7 +8,7 @@
 //! cargo run --release --example command_time -- SCENE WIDTH HEIGHT DMIN DMAX [RUNS]
 //! ```
 
-#[cfg(feature = "mimalloc")]
+#[cfg(all(feature = "mimalloc", not(target_os = "macos")))]
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 

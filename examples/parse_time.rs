@@ -7,7 +7,7 @@
 //! cargo run --release --example parse_time -- SCENE [RUNS]
 //! ```
 
-#[cfg(feature = "mimalloc")]
+#[cfg(all(feature = "mimalloc", not(target_os = "macos")))]
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 

@@ -9,7 +9,7 @@
 //! cargo run --release --example viewer_frame -- SCENE WIDTH HEIGHT [RUNS [GAP_MS]]
 //! ```
 
-#[cfg(feature = "mimalloc")]
+#[cfg(all(feature = "mimalloc", not(target_os = "macos")))]
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 

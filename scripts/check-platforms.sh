@@ -4,7 +4,9 @@
 # Windows (the GNU toolchain CI runs under Wine, and MSVC, rustup's default on Windows) and for
 # both Macs. Nothing links for macOS or MSVC here; the check catches code and dependencies that
 # do not build there. The MSVC check leaves out mimalloc, whose C needs Microsoft's compiler.
-# Installs the Rust targets where they are missing.
+# Tests, benchmarks and examples are not checked for macOS: criterion, a dependency of all of
+# them, compiles C (alloca) for the target, which nothing here can. Installs the Rust targets, and mingw-w64 (mimalloc's C for the GNU
+# Windows build), where they are missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # target, then the features of its viewer build ("default": the default features)
@@ -14,6 +16,12 @@ checks=(
   "aarch64-apple-darwin default"
   "x86_64-apple-darwin default"
 )
+if ! command -v x86_64-w64-mingw32-gcc >/dev/null; then
+  sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends gcc-mingw-w64-x86-64
+fi
 installed=$(rustup target list --installed 2>/dev/null || true)
 for check in "${checks[@]}"; do
   read -r target features <<<"$check"

@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 runs="${1:-11}"
 report=docs/windows.md
 bash scripts/windows.sh build >/dev/null
-cargo build --release --no-default-features --features mimalloc 2>/dev/null
+cargo build --release --no-default-features --features mimalloc >&2
 folder=$(mktemp -d)
 trap 'rm -rf "$folder"' EXIT
 cp target/x86_64-pc-windows-gnu/release/raytracer.exe target/x86_64-pc-windows-gnu/release/bcryptprimitives.dll "$folder/"

@@ -8,20 +8,21 @@ cd "$(dirname "$0")/.."
 out="${1:-docs/windows-viewer.png}"
 wait_s="${2:-25}"
 bash scripts/windows.sh viewer >/dev/null
+sudo=""
+[ "$(id -u)" -ne 0 ] && sudo="sudo"
 for package in xvfb imagemagick; do
-  dpkg -s "$package" >/dev/null 2>&1 || { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "$package"; }
+  dpkg -s "$package" >/dev/null 2>&1 || { $sudo apt-get update -qq && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "$package"; }
 done
 export WINEPREFIX="$PWD/target/wine-prefix" WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml="
 [ -f "$WINEPREFIX/system.reg" ] || { wineboot -i >/dev/null 2>&1 || true; wineserver -w; }
+rm -f "$WINEPREFIX/display"
 Xvfb -displayfd 1 -screen 0 1280x800x24 > "$WINEPREFIX/display" 2>/dev/null &
 xvfb=$!
+trap 'wineserver -k 2>/dev/null || true; kill "$xvfb" 2>/dev/null || true' EXIT
 for _ in $(seq 100); do [ -s "$WINEPREFIX/display" ] && break; sleep 0.1; done
+[ -s "$WINEPREFIX/display" ] || { echo "Xvfb did not start" >&2; exit 1; }
 export DISPLAY=":$(cat "$WINEPREFIX/display")"
 wine target/x86_64-pc-windows-gnu/release/raytracer.exe > "$WINEPREFIX/viewer.log" 2>&1 &
-viewer=$!
 sleep "$wait_s"
 import -window root "$out"
-kill "$viewer" 2>/dev/null || true
-wineserver -k 2>/dev/null || true
-kill "$xvfb" 2>/dev/null || true
 echo "screenshot: $out (the viewer said: $(tr '\n' ' ' < "$WINEPREFIX/viewer.log"))"

@@ -15,7 +15,9 @@ target=x86_64-pc-windows-gnu
 out="target/$target/release"
 
 install() {
-  rustup target list --installed 2>/dev/null | grep -qx "$target" || rustup target add "$target"
+  local installed
+  installed=$(rustup target list --installed 2>/dev/null || true)
+  grep -qx "$target" <<<"$installed" || rustup target add "$target"
   local packages=(gcc-mingw-w64-x86-64 wine64 wine)
   local missing=()
   for package in "${packages[@]}"; do

@@ -212,18 +212,29 @@ fn files_stay_short_and_the_coordinator_small() {
     assert!(long.is_empty(), "files over their limit:\n{long:#?}");
 }
 
-/// What names an operating system's own interface: its standard-library extensions, the crates
-/// that serve its signals and console events, and the signals themselves.
-const OPERATING_SYSTEM_NAMES: [&str; 9] = [
-    "std::os::",
+/// What names an operating system's own interface: its standard-library extensions (however
+/// imported), the crates that serve its signals, console events and system calls, the signals
+/// themselves, and conditions on the target system.
+const OPERATING_SYSTEM_NAMES: [&str; 19] = [
+    "std::os",
+    "os::unix",
+    "os::windows",
+    "os::fd",
     "signal_hook",
     "ctrlc",
     "rustix",
+    "libc::",
+    "windows_sys",
+    "winapi",
     "same_file::",
     "SIGINT",
     "SIGTERM",
-    "cfg(unix",
-    "cfg(windows",
+    "SIGHUP",
+    "SIGXFSZ",
+    "(unix",
+    "(windows",
+    "target_os",
+    "target_family",
 ];
 
 #[test]
@@ -236,7 +247,12 @@ fn only_the_platform_layer_names_an_operating_system() {
         }
         let text = std::fs::read_to_string(&file).unwrap();
         for (number, line) in text.lines().enumerate() {
-            let code = line.split("//").next().unwrap_or_default();
+            let code = line.trim_start();
+            // Comments may speak of systems. The one allowed condition: the binary's allocator
+            // follows its target-specific dependency (Cargo.toml: not on macOS).
+            if code.starts_with("//") || code.contains("feature = \"mimalloc\"") {
+                continue;
+            }
             for name in OPERATING_SYSTEM_NAMES {
                 if code.contains(name) {
                     found.push(format!("{}:{}: {name}", file.display(), number + 1));

@@ -53,9 +53,12 @@ impl PendingDialog {
 pub(crate) const NO_DIALOG: &str = "no file dialog is available (no desktop portal on a session bus, no zenity): \
      type a path in the field instead";
 
-/// Why no native dialog can be shown here, or `None` if one probably can: rfd needs a desktop
-/// portal on the session bus, or zenity.
+/// Why no native dialog can be shown here, or `None` if one probably can: on Linux rfd needs a
+/// desktop portal on the session bus, or zenity; Windows and macOS have their own.
 pub(crate) fn dialog_unavailable_reason() -> Option<&'static str> {
+    if !crate::platform::display::dialogs_need_a_desktop_portal() {
+        return None;
+    }
     let has_session_bus = std::env::var_os("DBUS_SESSION_BUS_ADDRESS").is_some();
     let has_zenity = std::env::var_os("PATH").is_some_and(|paths| {
         std::env::split_paths(&paths).any(|folder| folder.join("zenity").is_file())

@@ -259,6 +259,12 @@ impl FileSet {
     /// Renames every staged file over its destination, in the order staged. A replaced file's
     /// mode is kept. Returns the destinations.
     pub fn commit(self) -> Result<Vec<PathBuf>, WriteError> {
+        // Every destination can be replaced now, or none is (on Windows, a file another
+        // program holds open or a read-only one).
+        for staged in &self.staged {
+            files::check_replaceable(&staged.destination)
+                .map_err(|source| io_error(&staged.destination, source))?;
+        }
         let mut written = Vec::with_capacity(self.staged.len());
         for mut staged in self.staged {
             let destination = staged.destination;

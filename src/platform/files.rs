@@ -111,20 +111,57 @@ pub fn keep_mode(replaced: &std::fs::Metadata, temporary: &Path) -> std::io::Res
     }
 }
 
-/// Whether an existing file at `path` can be replaced by a rename: on Windows a read-only file
-/// cannot (Unix replaces it, and [`keep_mode`] gives the new file its mode). Checked before any
-/// work, so that a run that could not replace it writes nothing.
+/// Whether an existing file at `path` can be replaced by a rename now. On Windows it cannot be
+/// when it is read-only (the user marked it so; Windows programs do not replace such a file
+/// unasked) or when another program holds it open without letting others delete it (as editors
+/// and image viewers do): the file is opened for deletion, sharing everything, and closed again,
+/// which fails exactly then. Unix replaces a file whatever its mode and whoever has it open.
+/// Checked before any work and again just before the renames, so that a run that could not
+/// replace every file replaces none (a program that opens a file between that check and the
+/// rename is not caught).
 pub fn check_replaceable(path: &Path) -> std::io::Result<()> {
     #[cfg(windows)]
-    if std::fs::metadata(path).is_ok_and(|metadata| metadata.permissions().readonly()) {
-        return Err(std::io::Error::new(
-            std::io::ErrorKind::PermissionDenied,
-            "the file is read-only, and Windows does not replace a read-only file",
-        ));
+    {
+        use std::os::windows::fs::OpenOptionsExt as _;
+        /// `DELETE` access; `FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE`.
+        const DELETE: u32 = 0x0001_0000;
+        const SHARE_ALL: u32 = 0x1 | 0x2 | 0x4;
+        let Ok(metadata) = std::fs::metadata(path) else {
+            return Ok(()); // nothing there to replace
+        };
+        if metadata.permissions().readonly() {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::PermissionDenied,
+                "the file is read-only; clear its read-only attribute to replace it",
+            ));
+        }
+        if metadata.is_file()
+            && let Err(error) = std::fs::OpenOptions::new()
+                .access_mode(DELETE)
+                .share_mode(SHARE_ALL)
+                .open(path)
+        {
+            return Err(held_open(&error).unwrap_or(error));
+        }
     }
     #[cfg(not(windows))]
     let _ = path;
     Ok(())
+}
+
+/// `error` in words when it says that another program holds the file (Windows'
+/// `ERROR_SHARING_VIOLATION` or `ERROR_LOCK_VIOLATION`).
+#[cfg(windows)]
+fn held_open(error: &std::io::Error) -> Option<std::io::Error> {
+    let code = error
+        .raw_os_error()
+        .filter(|code| [32, 33].contains(code))?;
+    Some(std::io::Error::new(
+        error.kind(),
+        format!(
+            "another program has the file open; close it there and try again (os error {code})"
+        ),
+    ))
 }
 
 /// Renames `from` over `to` (replacing it). On Windows a file that another program holds open
@@ -134,22 +171,15 @@ pub fn rename_over(from: &Path, to: &Path) -> std::io::Result<()> {
     let renamed = std::fs::rename(from, to);
     #[cfg(windows)]
     if let Err(error) = &renamed {
-        let why = match error.raw_os_error() {
-            // ERROR_SHARING_VIOLATION, ERROR_LOCK_VIOLATION
-            Some(code @ (32 | 33)) => {
-                Some((code, "another program has the file open; close it there"))
-            }
-            // ERROR_ACCESS_DENIED, for a file that is there
-            Some(code @ 5) if to.exists() => Some((
-                code,
-                "access denied: another program has the file open, or the file is read-only",
-            )),
-            _ => None,
-        };
-        if let Some((code, why)) = why {
+        if let Some(held) = held_open(error) {
+            return Err(held);
+        }
+        // ERROR_ACCESS_DENIED for a file that is there.
+        if error.raw_os_error() == Some(5) && to.exists() {
             return Err(std::io::Error::new(
                 error.kind(),
-                format!("{why} (os error {code})"),
+                "access denied: another program has the file open, or the file is read-only \
+                 (os error 5)",
             ));
         }
     }

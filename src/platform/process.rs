@@ -8,9 +8,9 @@
 //!   window. On Unix that is SIGINT, SIGTERM or SIGHUP, and the program ends with 128 + the
 //!   signal's number, as shells report it; SIGXFSZ (a file-size limit) is caught so that the
 //!   write fails with an error instead of killing the program. On Windows it is the console's
-//!   control events (Ctrl-C, Ctrl-Break, the console window closed, log-off, shut-down, through
-//!   the `ctrlc` crate), all reported as an interrupt: status 130, as Ctrl-C gives on Unix.
-//!   Windows ends a process a few seconds after its console is closed, clean-up done or not.
+//!   Ctrl-C and Ctrl-Break (through the `ctrlc` crate), both reported as an interrupt: status
+//!   130, as Ctrl-C gives on Unix. Closing the console window ends the program at once (Windows
+//!   gives a handler no time to clean up once it has answered), as does `taskkill /F`.
 
 use std::sync::atomic::{AtomicI32, Ordering};
 use std::sync::{Arc, Mutex, PoisonError};
@@ -137,7 +137,7 @@ pub fn handle_termination_signals(on_signal: OnSignal, clean_up: fn()) {
 }
 
 /// Installs the handling of stop requests described in the module docs; `clean_up` runs before
-/// the program exits on one. Where the handler cannot be set, the console's events keep their
+/// the program exits on one. Where the handler cannot be set, Ctrl-C and Ctrl-Break keep their
 /// default action (the program ends at once).
 #[cfg(windows)]
 pub fn handle_termination_signals(on_signal: OnSignal, clean_up: fn()) {
