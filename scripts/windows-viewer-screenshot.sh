@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The Windows viewer under Wine, in a real window under Xvfb: builds the whole program for
 # x86_64-pc-windows-gnu (scripts/windows.sh viewer), starts it on the embedded default scene,
-# waits, and takes a screenshot of the screen.
+# waits, and takes a screenshot of the screen (OUT.png); then clicks Open…, types the path of
+# a copy of scenes/scene1_02.txt (C:\scenes\ in Wine's prefix) into the Windows file dialog,
+# presses Enter and takes another (OUT-opened.png).
 #   bash scripts/windows-viewer-screenshot.sh [OUT.png] [SECONDS]   (default docs/windows-viewer.png, 25)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -10,7 +12,7 @@ wait_s="${2:-25}"
 bash scripts/windows.sh viewer >/dev/null
 sudo=""
 [ "$(id -u)" -ne 0 ] && sudo="sudo"
-for package in xvfb imagemagick; do
+for package in xvfb imagemagick xdotool; do
   dpkg -s "$package" >/dev/null 2>&1 || { $sudo apt-get update -qq && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "$package"; }
 done
 export WINEPREFIX="$PWD/target/wine-prefix" WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml="
@@ -25,4 +27,13 @@ export DISPLAY=":$(cat "$WINEPREFIX/display")"
 wine target/x86_64-pc-windows-gnu/release/raytracer.exe > "$WINEPREFIX/viewer.log" 2>&1 &
 sleep "$wait_s"
 import -window root "$out"
-echo "screenshot: $out (the viewer said: $(tr '\n' ' ' < "$WINEPREFIX/viewer.log"))"
+# The toolbar's first button, Open…, at the window's top left (no window manager places it).
+xdotool mousemove 42 35 click 1
+sleep 8
+mkdir -p "$WINEPREFIX/drive_c/scenes"
+cp scenes/scene1_02.txt "$WINEPREFIX/drive_c/scenes/"
+xdotool type --delay 20 'C:\scenes\scene1_02.txt'
+xdotool key Return
+sleep 8
+import -window root "${out%.png}-opened.png"
+echo "screenshots: $out ${out%.png}-opened.png (the viewer said: $(tr '\n' ' ' < "$WINEPREFIX/viewer.log"))"
