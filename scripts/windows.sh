@@ -2,7 +2,8 @@
 # The Windows build, checked under Wine on Linux (Debian's mingw-w64 and wine64).
 #   bash scripts/windows.sh build   the command line's release .exe for x86_64-pc-windows-gnu
 #                                   (without the viewer) and the test scaffolding beside it
-#   bash scripts/windows.sh test    build, then tests/windows_exe.rs against the .exe under Wine
+#   bash scripts/windows.sh test    build, then tests/windows_exe.rs against the .exe under Wine,
+#                                   and the library's unit tests built for Windows, under Wine
 #   bash scripts/windows.sh viewer  the whole program (viewer included) for Windows
 # Installs what is missing (the Rust target, mingw-w64, wine64; needs root or sudo).
 # The scaffolding (tests/windows/*.c) is never shipped: bcryptprimitives.dll stands in for the
@@ -61,6 +62,11 @@ case "${1:-}" in
     # One server for the whole run (each test starts several programs).
     wineserver -p 60 2>/dev/null || true  # (already running: fine)
     RAYTRACER_WINDOWS_EXE="$PWD/$out/raytracer.exe" cargo test --test windows_exe -- --ignored
+    # The library's own unit tests (positional I/O, file identity, atomic writes, TGA files,
+    # reading in halves...) built for Windows and run under Wine, the DLL beside them.
+    cargo test --target "$target" --no-default-features --lib --no-run
+    cp "$out/bcryptprimitives.dll" "target/$target/debug/deps/"
+    CARGO_TARGET_X86_64_PC_WINDOWS_GNU_RUNNER=wine cargo test --target "$target" --no-default-features --lib
     ;;
   viewer)
     install

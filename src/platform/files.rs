@@ -246,16 +246,22 @@ pub fn same_file(a: &Path, b: &Path) -> bool {
     matches!((identity(a), identity(b)), (Some(x), Some(y)) if x == y)
 }
 
-/// The writing end of an anonymous pipe as a [`File`] (a file that cannot be synced), for tests.
+/// A file open for writing whose every sync fails, for tests: on Unix the writing end of a pipe
+/// (`fsync` refuses pipes); on Windows a file opened for reading only (`FlushFileBuffers` needs
+/// write access; a pipe's would wait for its reader).
 #[cfg(test)]
-pub(crate) fn pipe_as_file(writer: std::io::PipeWriter) -> File {
+pub(crate) fn file_that_cannot_sync(folder: &Path) -> File {
     #[cfg(unix)]
     {
+        let _ = folder;
+        let (_reader, writer) = std::io::pipe().unwrap();
         File::from(std::os::fd::OwnedFd::from(writer))
     }
     #[cfg(windows)]
     {
-        File::from(std::os::windows::io::OwnedHandle::from(writer))
+        let path = folder.join("cannot-sync");
+        std::fs::write(&path, b"").unwrap();
+        File::open(path).unwrap()
     }
 }
 
