@@ -58,14 +58,19 @@ case "${1:-}" in
     install
     cargo build --release --target "$target" --no-default-features --features mimalloc
     scaffolding
-    wine_prefix
-    # One server for the whole run (each test starts several programs).
-    wineserver -p 60 2>/dev/null || true  # (already running: fine)
-    RAYTRACER_WINDOWS_EXE="$PWD/$out/raytracer.exe" cargo test --test windows_exe -- --ignored
     # The library's own unit tests (positional I/O, file identity, atomic writes, TGA files,
-    # reading in halves...) built for Windows and run under Wine, the DLL beside them.
+    # reading in halves...) built for Windows, to run under Wine with the DLL beside them.
     cargo test --target "$target" --no-default-features --lib --no-run
     cp "$out/bcryptprimitives.dll" "target/$target/debug/deps/"
+    wine_prefix
+    # One server for the whole run (each test starts several programs), stopped at the end.
+    wineserver -p 300 2>/dev/null || true  # (already running: fine)
+    trap 'wineserver -k 2>/dev/null || true' EXIT
+    # Wine's first program starts its services (winedevice.exe), which inherit its standard
+    # output and error and keep them open: start them here, on /dev/null, so that no test's
+    # pipes are held open after its program has ended (a test waiting for them would hang).
+    wine "$out/raytracer.exe" -help </dev/null >/dev/null 2>&1
+    RAYTRACER_WINDOWS_EXE="$PWD/$out/raytracer.exe" cargo test --test windows_exe -- --ignored
     CARGO_TARGET_X86_64_PC_WINDOWS_GNU_RUNNER=wine cargo test --target "$target" --no-default-features --lib
     ;;
   viewer)
