@@ -18,7 +18,7 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Mutex, PoisonError};
 
-use crate::platform::files;
+use crate::platform::files::{self, folder_of};
 
 /// Why a file could not be written.
 #[derive(Debug, thiserror::Error)]
@@ -69,14 +69,6 @@ fn open_temporaries() -> std::sync::MutexGuard<'static, BTreeSet<PathBuf>> {
 pub fn remove_temporary_files() {
     for path in open_temporaries().iter() {
         let _ = std::fs::remove_file(path);
-    }
-}
-
-/// The folder a destination path writes into (`.` for a bare file name).
-pub(crate) fn folder_of(path: &Path) -> &Path {
-    match path.parent() {
-        Some(parent) if !parent.as_os_str().is_empty() => parent,
-        _ => Path::new("."),
     }
 }
 

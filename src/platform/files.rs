@@ -186,6 +186,14 @@ pub fn rename_over(from: &Path, to: &Path) -> std::io::Result<()> {
     renamed
 }
 
+/// The folder a path names a file in (`.` for a bare file name).
+pub fn folder_of(path: &Path) -> &Path {
+    match path.parent() {
+        Some(parent) if !parent.as_os_str().is_empty() => parent,
+        _ => Path::new("."),
+    }
+}
+
 /// A file's identity; see the module docs.
 #[derive(Debug, PartialEq, Eq)]
 pub enum FileIdentity {
@@ -209,11 +217,7 @@ pub fn identity(path: &Path) -> Option<FileIdentity> {
     if let Some(existing) = existing_identity(path) {
         return Some(existing);
     }
-    let parent = match path.parent() {
-        Some(parent) if !parent.as_os_str().is_empty() => parent,
-        _ => Path::new("."),
-    };
-    let folder = std::fs::canonicalize(parent).ok()?;
+    let folder = std::fs::canonicalize(folder_of(path)).ok()?;
     let name = path.file_name()?;
     let name = if cfg!(any(windows, target_os = "macos")) {
         name.to_string_lossy().to_lowercase().into()
