@@ -5,17 +5,34 @@
 
 #![deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
+#[cfg(not(target_arch = "wasm32"))]
 use std::process::ExitCode;
 
-#[cfg(all(feature = "mimalloc", not(target_os = "macos")))]
+#[cfg(all(
+    feature = "mimalloc",
+    not(any(target_os = "macos", target_arch = "wasm32"))
+))]
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
-use raytracer::cli::{Command, parse_command, usage};
-use raytracer::output::atomic::remove_temporary_files;
-use raytracer::platform::console::{PrintError, print_err, print_out};
-use raytracer::platform::process::{OnSignal, handle_termination_signals, start_thread_pool};
+#[cfg(not(target_arch = "wasm32"))]
+use raytracer::{
+    cli::{Command, parse_command, usage},
+    output::atomic::remove_temporary_files,
+    platform::console::{PrintError, print_err, print_out},
+    platform::process::{OnSignal, handle_termination_signals, start_thread_pool},
+};
 
+/// In a browser page the viewer is started by the page's script, through this handle
+/// (`scripts/web.sh` builds the page).
+#[cfg(all(target_arch = "wasm32", feature = "gui"))]
+pub use raytracer::app::web::WebHandle;
+
+/// In a browser page there is no command line: the page's script starts the viewer.
+#[cfg(target_arch = "wasm32")]
+fn main() {}
+
+#[cfg(not(target_arch = "wasm32"))]
 fn main() -> ExitCode {
     let command = match parse_command(std::env::args_os().skip(1)) {
         Ok(command) => command,
@@ -69,6 +86,7 @@ fn main() -> ExitCode {
     }
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 /// Prints `text` to standard output and ends with `status`: quietly if the reader has gone (a
 /// closed pipe), with a one-line error (status 1) if the output cannot be written.
 fn print_or_fail(text: &str, status: ExitCode) -> ExitCode {
@@ -83,7 +101,7 @@ fn print_or_fail(text: &str, status: ExitCode) -> ExitCode {
     }
 }
 
-#[cfg(feature = "gui")]
+#[cfg(all(feature = "gui", not(target_arch = "wasm32")))]
 fn open_viewer(request: raytracer::cli::ViewerRequest) -> ExitCode {
     if let Some(problem) = raytracer::app::environment_problem() {
         print_err(&format!("raytracer: {problem}\n"));
@@ -110,7 +128,7 @@ fn open_viewer(request: raytracer::cli::ViewerRequest) -> ExitCode {
     }
 }
 
-#[cfg(not(feature = "gui"))]
+#[cfg(all(not(feature = "gui"), not(target_arch = "wasm32")))]
 fn open_viewer(_request: raytracer::cli::ViewerRequest) -> ExitCode {
     print_err(
         "raytracer: this build has no viewer (built without feature 'gui'); \

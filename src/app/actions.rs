@@ -6,13 +6,18 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use super::ViewerApp;
-use super::dialogs::{DialogAnswer, DialogKind, spawn_dialog};
+#[cfg(not(target_arch = "wasm32"))]
+use super::dialogs::spawn_dialog;
+use super::dialogs::{DialogAnswer, DialogKind};
 use super::job::{DepthStyle, ViewerJob, prepare_frame};
 use super::state::ExportFormat;
 use super::status::Status;
 use super::tasks::{Poll, Task};
-use crate::export::{ExportPlan, save_view_as_scene, write_export};
+use crate::export::ExportPlan;
+#[cfg(not(target_arch = "wasm32"))]
+use crate::export::{save_view_as_scene, write_export};
 use crate::output::ImageFormat;
+#[cfg(not(target_arch = "wasm32"))]
 use crate::platform::files::same_file;
 use crate::render::{View, check_image_size};
 
@@ -72,6 +77,10 @@ impl ViewerApp {
     pub(crate) fn apply(&mut self, action: Action) {
         match action {
             Action::OpenDialog(kind) => self.open_dialog(kind),
+            // In a browser page, the path field holds an address on the page's site.
+            #[cfg(target_arch = "wasm32")]
+            Action::Open(path) => self.page.fetch_scene(&path.to_string_lossy(), &self.ctx),
+            #[cfg(not(target_arch = "wasm32"))]
             Action::Open(path) => self.open(&path),
             Action::Reload => self.reload(),
             Action::FrameAll => self.frame_all(),
@@ -177,6 +186,28 @@ impl ViewerApp {
             quality,
             depth_style: DepthStyle::default(),
         };
+        // A browser page downloads the same files, named as the export would name them.
+        #[cfg(target_arch = "wasm32")]
+        {
+            let files = match ready {
+                Some(frame) => Ok(frame),
+                None => prepare_frame(&job)
+                    .map(|p| p.frame)
+                    .map_err(|e| e.to_string()),
+            }
+            .and_then(|frame| {
+                crate::export::export_in_memory(&job.scene, &view, &quality, &frame, &plan)
+                    .map_err(|e| e.to_string())
+            })
+            .map(|files| {
+                files
+                    .into_iter()
+                    .map(|(path, bytes)| (download_name(&path), bytes))
+                    .collect()
+            });
+            self.download_files(files);
+        }
+        #[cfg(not(target_arch = "wasm32"))]
         self.write_in_background("exporting…", move || {
             let frame = match ready {
                 Some(frame) => frame,
@@ -196,7 +227,24 @@ impl ViewerApp {
 
     /// "Save view as scene": writes the scene with the current camera to `path` (in the
     /// background; the outcome appears in the status bar).
+    #[cfg_attr(target_arch = "wasm32", allow(clippy::needless_pass_by_value))]
     fn save_view_to(&mut self, path: PathBuf) {
+        // A browser page downloads the scene.
+        #[cfg(target_arch = "wasm32")]
+        {
+            let text = crate::scene::scene_to_text(&crate::export::scene_with_view(
+                &self.loaded.scene,
+                &self.view,
+            ));
+            self.download_files(Ok(vec![(download_name(&path), text.into_bytes())]));
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        self.write_scene(path);
+    }
+
+    /// Writes the scene with the current camera to `path` in the background.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn write_scene(&mut self, path: PathBuf) {
         // Saving over the open scene reloads it; the message should stay the save's.
         self.saving_open_scene = self
             .loaded
@@ -213,6 +261,7 @@ impl ViewerApp {
     }
 
     /// Runs `write` as a task; its message lands in the status bar.
+    #[cfg(not(target_arch = "wasm32"))]
     fn write_in_background(
         &mut self,
         running: &str,
@@ -233,7 +282,35 @@ impl ViewerApp {
         }
     }
 
+    /// In a browser page: the browser's file chooser to open a scene or an image; export and save
+    /// download at once (the browser asks where, or saves to its downloads folder).
+    #[cfg(target_arch = "wasm32")]
+    fn open_dialog(&mut self, kind: DialogKind) {
+        use super::web::Purpose;
+        let chosen = match kind {
+            DialogKind::Open => self.page.pick(Purpose::Open, ".txt,text/plain", &self.ctx),
+            DialogKind::CompareImage(kind) => {
+                self.page
+                    .pick(Purpose::Compare(kind), ".png,.tga,image/png", &self.ctx)
+            }
+            DialogKind::Export => {
+                let base = PathBuf::from(self.settings.export.path.trim());
+                self.write_or_ask(Action::ExportTo(base));
+                Ok(())
+            }
+            DialogKind::SaveScene => {
+                let path = PathBuf::from(self.settings.export.scene_path.trim());
+                self.write_or_ask(Action::SaveViewTo(path));
+                Ok(())
+            }
+        };
+        if let Err(error) = chosen {
+            self.status = Some(Status::error(format!("cannot choose a file: {error}")));
+        }
+    }
+
     /// Shows a native file dialog, or says why none can be shown.
+    #[cfg(not(target_arch = "wasm32"))]
     fn open_dialog(&mut self, kind: DialogKind) {
         if let Some(reason) = self.dialog_note {
             self.without_dialog(kind, reason);
@@ -256,6 +333,7 @@ impl ViewerApp {
 
     /// Where no file dialog can be shown, the typed paths do the job: export and save go to the
     /// side panel's paths; open takes the typed scene path when there is one.
+    #[cfg(not(target_arch = "wasm32"))]
     fn without_dialog(&mut self, kind: DialogKind, reason: &'static str) {
         let export = &self.settings.export;
         let typed = |text: &str| (!text.trim().is_empty()).then(|| PathBuf::from(text.trim()));
@@ -312,4 +390,13 @@ impl ViewerApp {
         self.status = Some(finished);
         self.writing = None;
     }
+}
+
+/// The name a browser page downloads `path` as: its last part.
+#[cfg(target_arch = "wasm32")]
+fn download_name(path: &Path) -> String {
+    path.file_name().map_or_else(
+        || "raytracer".to_owned(),
+        |name| name.to_string_lossy().into_owned(),
+    )
 }

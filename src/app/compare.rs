@@ -13,7 +13,7 @@
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
-use std::time::Instant;
+use web_time::Instant;
 
 use egui::{Color32, ColorImage, TextureHandle, TextureOptions};
 use image::RgbImage;
@@ -158,6 +158,21 @@ pub fn read_their_image(path: &Path) -> Result<RgbImage, String> {
     Ok(image.to_rgb8())
 }
 
+/// Decodes the image `bytes` named `name` (the format by the name's extension, as for a file,
+/// unless the bytes say otherwise), as an 8-bit RGB picture.
+pub fn decode_their_image(name: &Path, bytes: &[u8]) -> Result<RgbImage, String> {
+    let mut reader = image::ImageReader::new(std::io::Cursor::new(bytes));
+    if let Ok(format) = image::ImageFormat::from_path(name) {
+        reader.set_format(format);
+    }
+    let image = reader
+        .with_guessed_format()
+        .map_err(|error| format!("cannot read '{}': {error}", name.display()))?
+        .decode()
+        .map_err(|error| format!("cannot read the image '{}': {error}", name.display()))?;
+    Ok(image.to_rgb8())
+}
+
 /// The exact picture of `kind` for `view`.
 fn exact_picture(scene: &Scene, view: &View, kind: ImageKind) -> Result<RgbImage, String> {
     let frame = render_with(scene, view, &Quality::default()).map_err(|e| e.to_string())?;
@@ -283,6 +298,19 @@ impl ViewerApp {
         self.compare.kind = kind;
         self.start_comparison(move || {
             let theirs = read_their_image(&path)?;
+            compare_file(&scene, &path, theirs, kind, &depth_view)
+        });
+    }
+
+    /// Compares the image `bytes` named `name` (a browser page's dropped or picked file) with the
+    /// exact render, as [`Self::compare_with_file`] does a file.
+    pub fn compare_with_bytes(&mut self, name: &str, bytes: Arc<[u8]>, kind: ImageKind) {
+        let scene = Arc::clone(&self.loaded.scene);
+        let depth_view = self.view;
+        let path = PathBuf::from(name);
+        self.compare.kind = kind;
+        self.start_comparison(move || {
+            let theirs = decode_their_image(&path, &bytes)?;
             compare_file(&scene, &path, theirs, kind, &depth_view)
         });
     }

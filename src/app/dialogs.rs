@@ -72,6 +72,7 @@ fn unavailable_reason(has_session_bus: bool, has_zenity: bool) -> Option<&'stati
 }
 
 /// Opens a native dialog on its own thread.
+#[cfg(not(target_arch = "wasm32"))]
 pub(crate) fn spawn_dialog(
     kind: DialogKind,
     ctx: &egui::Context,

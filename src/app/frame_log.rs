@@ -13,7 +13,7 @@
 
 use std::fs::File;
 use std::io::{BufWriter, Write};
-use std::time::Instant;
+use web_time::Instant;
 
 /// The environment variable naming the log file.
 pub const FRAME_LOG_VARIABLE: &str = "RAYTRACER_FRAME_LOG";
@@ -40,6 +40,7 @@ impl FrameLog {
     }
 
     /// `count` painter threads had their nice value raised by `raise`, once at the start.
+    #[cfg_attr(target_arch = "wasm32", allow(dead_code))]
     pub(crate) fn painter_threads(&mut self, count: usize, raise: i32) {
         let _ = writeln!(self.out, "painter_threads {count} {raise}");
         let _ = self.out.flush();

@@ -3,7 +3,7 @@
 //! the frames it finishes into the two textures.
 
 use std::sync::Arc;
-use std::time::{Duration, Instant};
+use web_time::{Duration, Instant};
 
 use egui::{TextureHandle, TextureOptions};
 

@@ -71,12 +71,7 @@ impl ViewerApp {
                 })
                 .map(|(_, _, action)| action)
                 .collect();
-            let dropped = input
-                .raw
-                .dropped_files
-                .iter()
-                .map(|file| file.path().to_path_buf())
-                .find(|path| !path.as_os_str().is_empty());
+            let dropped = input.raw.dropped_files.first().cloned();
             (pressed, dropped)
         });
         for action in pressed {
@@ -87,8 +82,14 @@ impl ViewerApp {
         {
             self.reload();
         }
-        if let Some(path) = dropped {
-            self.open(&path);
+        if let Some(file) = dropped {
+            // A browser page gives the name and reads the bytes later; a desktop gives the path.
+            #[cfg(target_arch = "wasm32")]
+            self.page.read_dropped(file, &self.ctx);
+            #[cfg(not(target_arch = "wasm32"))]
+            if !file.path().as_os_str().is_empty() {
+                self.open(file.path());
+            }
         }
         self.navigation_keys(ctx);
     }

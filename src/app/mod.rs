@@ -21,6 +21,7 @@
 //! * [`inspect`]: read access for tests and tools
 //! * [`window`]: opening the window (or saying why none can be opened)
 //! * [`painter_priority`]: the window's software painter gives way to the renderer
+//! * [`web`]: in a browser page, files in as bytes and out as downloads
 //! * [`ui`]: the drawing, one `*_ui` function per part
 
 pub(crate) mod actions;
@@ -33,6 +34,7 @@ pub(crate) mod input;
 pub(crate) mod inspect;
 pub mod job;
 pub(crate) mod layout;
+#[cfg(not(target_arch = "wasm32"))]
 pub(crate) mod painter_priority;
 pub(crate) mod reload;
 pub(crate) mod scene_loading;
@@ -42,6 +44,9 @@ pub(crate) mod tasks;
 pub mod ui;
 pub(crate) mod view_actions;
 pub mod views;
+#[cfg(target_arch = "wasm32")]
+pub mod web;
+#[cfg(not(target_arch = "wasm32"))]
 pub(crate) mod window;
 
 use std::path::PathBuf;
@@ -61,6 +66,7 @@ use crate::cli::ViewerRequest;
 use crate::render::View;
 
 pub use self::input::{KEY_ORBIT_RAD, KEY_PAN_FRACTION, KEY_ZOOM_FACTOR};
+#[cfg(not(target_arch = "wasm32"))]
 pub use self::window::{environment_problem, no_display_reason, run};
 
 /// Image size used until the first layout tells the real one.
@@ -126,12 +132,16 @@ pub struct ViewerApp {
     compare: compare::CompareState,
     /// Per-frame figures, when the environment asks for them.
     frame_log: Option<frame_log::FrameLog>,
+    /// In a browser page: files on their way in.
+    #[cfg(target_arch = "wasm32")]
+    page: web::Page,
     ctx: egui::Context,
 }
 
 impl ViewerApp {
     /// Creates the viewer: settings from eframe's storage, the scene from the request (or the last
     /// scene, or the embedded default), and the render worker.
+    #[cfg_attr(target_arch = "wasm32", allow(clippy::needless_pass_by_value))]
     pub fn new(cc: &eframe::CreationContext<'_>, request: ViewerRequest) -> Self {
         let mut settings: Settings = cc
             .storage
@@ -156,6 +166,7 @@ impl ViewerApp {
         let loaded = LoadedScene::default_scene(INITIAL_SIZE_PX);
         let mut history = History::default();
         history.reset(&loaded.file_view);
+        #[cfg_attr(target_arch = "wasm32", allow(unused_mut))]
         let mut app = Self {
             settings,
             view: loaded.file_view,
@@ -187,12 +198,20 @@ impl ViewerApp {
                 log.renderer(if cc.gl.is_some() { "glow" } else { "wgpu" });
                 log
             }),
+            #[cfg(target_arch = "wasm32")]
+            page: web::Page::default(),
             ctx: cc.egui_ctx.clone(),
         };
         let ctx = cc.egui_ctx.clone();
         crate::platform::process::set_wake(move || ctx.request_repaint());
-        let startup_scene = request.input.or_else(|| app.settings.last_scene.clone());
-        if let Some(path) = startup_scene {
+        // A page opens the scene its address names (`?scene=`), not the last one: that was a
+        // file the page has no access to any more.
+        #[cfg(target_arch = "wasm32")]
+        if let Some(address) = web::scene_parameter() {
+            app.page.fetch_scene(&address, &cc.egui_ctx);
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        if let Some(path) = request.input.or_else(|| app.settings.last_scene.clone()) {
             app.open(&path);
         }
         app
@@ -220,6 +239,8 @@ impl eframe::App for ViewerApp {
             // A termination signal: close (eframe saves the settings on the way out).
             ctx.send_viewport_cmd(egui::ViewportCommand::Close);
         }
+        #[cfg(target_arch = "wasm32")]
+        self.poll_page();
         self.receive_frame();
         self.poll_load();
         self.poll_background();
@@ -229,7 +250,7 @@ impl eframe::App for ViewerApp {
         for action in actions {
             self.apply(action);
         }
-        self.history.observe(&self.view, std::time::Instant::now());
+        self.history.observe(&self.view, web_time::Instant::now());
         self.submit_if_changed();
         if self.busy() {
             ctx.request_repaint_after(std::time::Duration::from_millis(100));

@@ -2,17 +2,28 @@
 //! writing a new file and renaming it over the old one) and reports a change once the file has
 //! been quiet for [`SETTLE_TIME`], so a save in several steps reloads once.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
+#[cfg(not(target_arch = "wasm32"))]
+use std::path::PathBuf;
 use std::sync::{Arc, Mutex, PoisonError};
-use std::time::{Duration, Instant};
+use web_time::{Duration, Instant};
 
+#[cfg(not(target_arch = "wasm32"))]
 use notify::{EventKind, RecursiveMode, Watcher};
+
+/// Why a file cannot be watched.
+#[cfg(not(target_arch = "wasm32"))]
+pub(crate) type WatchError = notify::Error;
+/// Why a file cannot be watched: a browser page has no files to watch.
+#[cfg(target_arch = "wasm32")]
+pub(crate) type WatchError = std::io::Error;
 
 /// How long the file must be quiet before it is reloaded.
 pub(crate) const SETTLE_TIME: Duration = Duration::from_millis(150);
 
 /// Watches one file.
 pub(crate) struct FileWatcher {
+    #[cfg(not(target_arch = "wasm32"))]
     _watcher: notify::RecommendedWatcher,
     last_change: Arc<Mutex<Option<Instant>>>,
 }
@@ -29,9 +40,25 @@ pub(crate) enum WatchState {
 }
 
 impl FileWatcher {
+    /// In a browser page: no file can be watched.
+    #[cfg(target_arch = "wasm32")]
+    pub(crate) fn watch(
+        _path: &Path,
+        _on_event: impl Fn() + Send + 'static,
+    ) -> Result<Self, WatchError> {
+        Err(std::io::Error::new(
+            std::io::ErrorKind::Unsupported,
+            "a browser page cannot watch files",
+        ))
+    }
+
     /// Starts watching `path`; `on_event` runs (on the watcher's thread) for every change, e.g. to
     /// request a repaint.
-    pub(crate) fn watch(path: &Path, on_event: impl Fn() + Send + 'static) -> notify::Result<Self> {
+    #[cfg(not(target_arch = "wasm32"))]
+    pub(crate) fn watch(
+        path: &Path,
+        on_event: impl Fn() + Send + 'static,
+    ) -> Result<Self, WatchError> {
         let target: PathBuf = std::fs::canonicalize(path)?;
         let folder = target
             .parent()

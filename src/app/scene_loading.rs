@@ -34,6 +34,8 @@ pub(crate) struct PendingLoad {
     pub(crate) path: PathBuf,
     /// Open or reload.
     pub(crate) kind: LoadKind,
+    /// The scene comes as bytes, from no file (see [`LoadedScene::in_memory`]).
+    pub(crate) from_bytes: bool,
     task: Task<Result<LoadedScene, String>>,
 }
 
@@ -55,6 +57,27 @@ impl PendingLoad {
         Ok(Self {
             path: path.to_path_buf(),
             kind,
+            from_bytes: false,
+            task,
+        })
+    }
+
+    /// Starts parsing the scene `bytes` named `name` (a browser page's file).
+    pub(crate) fn start_bytes(
+        name: &str,
+        bytes: std::sync::Arc<[u8]>,
+        size_px: (u32, u32),
+        ctx: &egui::Context,
+    ) -> std::io::Result<Self> {
+        let thread_name = name.to_owned();
+        let task = Task::spawn("scene-load", ctx, move |_| {
+            LoadedScene::from_bytes(&thread_name, &bytes, size_px)
+                .map_err(|error| error.to_string())
+        })?;
+        Ok(Self {
+            path: PathBuf::from(name),
+            kind: LoadKind::Open,
+            from_bytes: true,
             task,
         })
     }
@@ -78,6 +101,19 @@ impl ViewerApp {
         self.start_load(path, LoadKind::Open);
     }
 
+    /// Opens the scene `bytes` named `name`, which came from no file the viewer can read (a
+    /// browser page's dropped, picked or fetched file): as [`Self::open`], without a file to
+    /// reload or watch.
+    pub fn open_bytes(&mut self, name: &str, bytes: std::sync::Arc<[u8]>) {
+        let size = (self.view.width_px, self.view.height_px);
+        match PendingLoad::start_bytes(name, bytes, size, &self.ctx) {
+            Ok(pending) => self.loading = Some(pending),
+            Err(error) => {
+                self.scene_error = Some(format!("{name}: cannot start loading: {error}"));
+            }
+        }
+    }
+
     /// Reads the open file again (in the background). A broken file shows its error and the last
     /// good scene stays; a good one replaces the scene and keeps the user's camera unless it was
     /// still the file's.
@@ -93,6 +129,13 @@ impl ViewerApp {
             ));
             return;
         };
+        if self.loaded.in_memory {
+            self.status = Some(Status::info(format!(
+                "{} came from the page, not from a file: open it again to reload it",
+                path.display()
+            )));
+            return;
+        }
         self.start_load(&path, LoadKind::Reload);
     }
 
@@ -128,13 +171,13 @@ impl ViewerApp {
                 pending.path.display()
             )),
         };
-        let (path, kind) = (pending.path.clone(), pending.kind);
+        let (path, kind, from_bytes) = (pending.path.clone(), pending.kind, pending.from_bytes);
         self.loading = None;
         let loaded = match result {
             Ok(loaded) => loaded,
             Err(error) => {
                 self.scene_error = Some(error);
-                if kind == LoadKind::Open {
+                if kind == LoadKind::Open && !from_bytes {
                     self.watch_failed_open(&path);
                 }
                 return;
@@ -177,13 +220,20 @@ impl ViewerApp {
         self.history.reset(&self.view);
         self.magnifier = Default::default();
         self.probe.pinned_world = None;
-        self.settings.last_scene = Some(path.to_path_buf());
         self.fields.path_text = path.display().to_string();
         self.ctx
             .send_viewport_cmd(egui::ViewportCommand::Title(format!(
                 "raytracer — {}",
                 path.display()
             )));
+        #[cfg(target_arch = "wasm32")]
+        super::web::set_title(&format!("raytracer — {}", path.display()));
+        if self.loaded.in_memory {
+            // No file to open again at the next start, or to watch.
+            self.watcher = None;
+            return;
+        }
+        self.settings.last_scene = Some(path.to_path_buf());
         let ctx = self.ctx.clone();
         self.watcher = match FileWatcher::watch(path, move || ctx.request_repaint()) {
             Ok(watcher) => Some(watcher),

@@ -133,8 +133,12 @@ impl Default for Settings {
 pub struct LoadedScene {
     /// The scene.
     pub scene: Arc<Scene>,
-    /// The file it came from; `None` for the embedded default scene.
+    /// The file it came from; `None` for the embedded default scene. For a scene that came as
+    /// bytes (`in_memory`), only its name.
     pub path: Option<PathBuf>,
+    /// The scene came as bytes (a browser page's dropped, picked or fetched file), not from a
+    /// file the viewer can read again: there is nothing to reload or watch.
+    pub in_memory: bool,
     /// The file's own camera at the initial depth range ("reset view" returns here).
     pub file_view: View,
 }
@@ -152,6 +156,7 @@ impl LoadedScene {
         Self {
             scene: Arc::new(scene),
             path,
+            in_memory: false,
             file_view,
         }
     }
@@ -163,6 +168,19 @@ impl LoadedScene {
             // The embedded scene is parsed by a test; this arm only guards against a bad build.
             Err(_) => Self::new(empty_scene(), None, size_px),
         }
+    }
+
+    /// Parses a scene that came as bytes named `name` (see [`Self::in_memory`]).
+    pub(crate) fn from_bytes(
+        name: &str,
+        bytes: &[u8],
+        size_px: (u32, u32),
+    ) -> Result<Self, LoadError> {
+        let scene = crate::scene::load_scene_from_bytes(name, bytes)?;
+        Ok(Self {
+            in_memory: true,
+            ..Self::new(scene, Some(PathBuf::from(name)), size_px)
+        })
     }
 
     /// Reads a scene file, telling `progress` the share done (0 to 1) as it goes.

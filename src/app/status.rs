@@ -2,7 +2,7 @@
 //! it — instead of strings matched by their prefix. Information goes stale after
 //! [`INFO_LIFETIME`] and is no longer shown; errors stay until something replaces or clears them.
 
-use std::time::{Duration, Instant};
+use web_time::{Duration, Instant};
 
 /// How long an informational message stays in the status bar.
 pub(crate) const INFO_LIFETIME: Duration = Duration::from_secs(12);

@@ -1,12 +1,13 @@
 //! [`Task`]: the viewer's one mechanism for work off the UI thread that is not rendering —
 //! loading a scene, writing an export, waiting for a file dialog. The work runs on a thread of
 //! its own; the UI polls for the answer without blocking and is woken when it lands; the work
-//! can report its progress.
+//! can report its progress. In a browser page, which has no threads, the work runs when the task
+//! is started.
 
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU32, Ordering};
 use std::sync::mpsc::{Receiver, TryRecvError, channel};
-use std::time::{Duration, Instant};
+use web_time::{Duration, Instant};
 
 /// Progress is shared as parts per million of the whole task.
 const PROGRESS_SCALE: f64 = 1_000_000.0;
@@ -50,6 +51,7 @@ pub(crate) struct Task<T> {
 
 impl<T: Send + 'static> Task<T> {
     /// Runs `work` on a thread named `name`; `ctx` is asked for a repaint when it is done.
+    #[cfg_attr(target_arch = "wasm32", allow(clippy::unnecessary_wraps))]
     pub(crate) fn spawn(
         name: &str,
         ctx: &egui::Context,
@@ -59,6 +61,14 @@ impl<T: Send + 'static> Task<T> {
         let progress = Progress::default();
         let shared = progress.clone();
         let ctx = ctx.clone();
+        // A browser page starts no thread: the work runs now, and its answer waits in the channel.
+        #[cfg(target_arch = "wasm32")]
+        {
+            let _ = name;
+            let _ = sender.send(work(&shared));
+            ctx.request_repaint();
+        }
+        #[cfg(not(target_arch = "wasm32"))]
         std::thread::Builder::new()
             .name(name.to_owned())
             .spawn(move || {

@@ -18,7 +18,7 @@ mod legend;
 
 use std::path::{Path, PathBuf};
 
-use crate::output::atomic::FileSet;
+use crate::output::atomic::{FileSet, FilesInMemory, Stage, stage_bytes};
 use crate::output::depth_file::{RawDepthFormat, stage_depth_png16, stage_raw_depth};
 use crate::output::image_file::stage_image;
 use crate::output::{ImageFormat, WriteError, write_atomically};
@@ -182,6 +182,7 @@ pub(crate) fn scene_with_view(scene: &Scene, view: &View) -> Scene {
 
 /// "Save view as scene": writes `scene` with `view`'s camera to `path` (atomically), numbers in
 /// Rust's shortest round-trip form so parsing it gives exactly this camera back.
+#[cfg_attr(target_arch = "wasm32", allow(dead_code))]
 pub(crate) fn save_view_as_scene(
     scene: &Scene,
     view: &View,
@@ -196,6 +197,7 @@ pub(crate) fn save_view_as_scene(
 /// Writes every file of `plan` for `frame`, rendered from `scene` through `view` at `quality`,
 /// all or nothing: every file is complete in a temporary file before any is renamed over its
 /// destination. Returns the paths written.
+#[cfg_attr(target_arch = "wasm32", allow(dead_code))]
 pub(crate) fn write_export(
     scene: &Scene,
     view: &View,
@@ -203,37 +205,64 @@ pub(crate) fn write_export(
     frame: &Frame,
     plan: &ExportPlan,
 ) -> Result<Vec<PathBuf>, WriteError> {
+    let mut set = FileSet::new();
+    stage_export(&mut set, scene, view, quality, frame, plan)?;
+    set.commit()
+}
+
+/// The files of `plan` as [`write_export`] writes them, kept in memory (a browser page's
+/// downloads): each file's name and bytes.
+#[cfg_attr(not(target_arch = "wasm32"), allow(dead_code))]
+pub(crate) fn export_in_memory(
+    scene: &Scene,
+    view: &View,
+    quality: &Quality,
+    frame: &Frame,
+    plan: &ExportPlan,
+) -> Result<Vec<(PathBuf, Vec<u8>)>, WriteError> {
+    let mut files = FilesInMemory::default();
+    stage_export(&mut files, scene, view, quality, frame, plan)?;
+    Ok(files.files)
+}
+
+/// Stages every file of `plan` in `set`.
+fn stage_export(
+    set: &mut dyn Stage,
+    scene: &Scene,
+    view: &View,
+    quality: &Quality,
+    frame: &Frame,
+    plan: &ExportPlan,
+) -> Result<(), WriteError> {
     let files = ExportFiles::of(plan);
     let range = view.depth_range;
     let map = plan.colour_map;
-    let mut set = FileSet::new();
-    stage_image(&mut set, &files.images.colour, &frame.colour_image())?;
+    stage_image(set, &files.images.colour, &frame.colour_image())?;
     let depth = frame.depth_image_mapped(range, map, DepthColourMap::FILE_NO_HIT);
-    stage_image(&mut set, &files.images.depth, &depth)?;
+    stage_image(set, &files.images.depth, &depth)?;
     if plan.side_by_side {
         let mut both = frame.side_by_side_mapped(range, map);
         if plan.legend {
             both = legend::with_legend(&both, range, map);
         }
-        stage_image(&mut set, &files.images.side_by_side, &both)?;
+        stage_image(set, &files.images.side_by_side, &both)?;
     }
     match (plan.extra_depth, &files.depth_raw) {
-        (ExtraDepth::Png16, _) => stage_depth_png16(&mut set, frame, range, &files.depth16)?,
-        (ExtraDepth::Raw(_), Some(path)) => stage_raw_depth(&mut set, frame, path)?,
+        (ExtraDepth::Png16, _) => stage_depth_png16(set, frame, range, &files.depth16)?,
+        (ExtraDepth::Raw(_), Some(path)) => stage_raw_depth(set, frame, path)?,
         _ => {}
     }
     let scene_text = scene_to_text(&scene_with_view(scene, view));
-    set.stage_bytes(&files.scene, scene_text.as_bytes())?;
+    stage_bytes(set, &files.scene, scene_text.as_bytes())?;
     let arguments = command_arguments(plan, &files, view, quality);
     let script = command_script(&arguments, plan.program.as_deref());
-    set.stage_executable(&files.command, |out| {
+    set.stage_file(&files.command, true, &mut |out| {
         out.write_all(script.as_bytes())
             .map_err(|source| WriteError::Io {
                 path: files.command.clone(),
                 source,
             })
-    })?;
-    set.commit()
+    })
 }
 
 #[cfg(test)]

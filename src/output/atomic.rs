@@ -114,7 +114,8 @@ impl Temporary {
 
 impl Drop for Temporary {
     fn drop(&mut self) {
-        drop(self.file.take());
+        // Closed before it is removed (Windows cannot remove an open file).
+        self.file = None;
         if open_temporaries().remove(&self.path) {
             let _ = std::fs::remove_file(&self.path);
         }
@@ -181,6 +182,64 @@ impl Staging {
         synced.map_err(|source| self.error(source))?;
         Ok(self.staged)
     }
+}
+
+/// Where a file's content goes once encoded: a [`FileSet`] (temporary files renamed over their
+/// destinations, all or nothing) or [`FilesInMemory`] (a browser page's downloads).
+pub trait Stage {
+    /// Stages the file `destination` with the content `write` produces; `executable` for a
+    /// script.
+    fn stage_file(
+        &mut self,
+        destination: &Path,
+        executable: bool,
+        write: &mut dyn FnMut(&mut dyn Write) -> Result<(), WriteError>,
+    ) -> Result<(), WriteError>;
+}
+
+impl Stage for FileSet {
+    fn stage_file(
+        &mut self,
+        destination: &Path,
+        executable: bool,
+        write: &mut dyn FnMut(&mut dyn Write) -> Result<(), WriteError>,
+    ) -> Result<(), WriteError> {
+        let mode = if executable { 0o777 } else { 0o666 };
+        self.stage_with_mode(destination, mode, write)
+    }
+}
+
+/// Files kept in memory, by name, in the order staged (what a browser page downloads).
+#[derive(Debug, Default)]
+pub struct FilesInMemory {
+    /// Each file's destination and content.
+    pub files: Vec<(PathBuf, Vec<u8>)>,
+}
+
+impl Stage for FilesInMemory {
+    fn stage_file(
+        &mut self,
+        destination: &Path,
+        _executable: bool,
+        write: &mut dyn FnMut(&mut dyn Write) -> Result<(), WriteError>,
+    ) -> Result<(), WriteError> {
+        let mut bytes = Vec::new();
+        write(&mut bytes)?;
+        self.files.push((destination.to_path_buf(), bytes));
+        Ok(())
+    }
+}
+
+/// [`Stage::stage_file`] with these bytes.
+pub(crate) fn stage_bytes(
+    set: &mut dyn Stage,
+    destination: &Path,
+    bytes: &[u8],
+) -> Result<(), WriteError> {
+    set.stage_file(destination, false, &mut |out| {
+        out.write_all(bytes)
+            .map_err(|source| io_error(destination, source))
+    })
 }
 
 /// Files written all or nothing: [`FileSet::stage`] each, then [`FileSet::commit`].
@@ -264,7 +323,8 @@ impl FileSet {
             if let Ok(existing) = std::fs::metadata(&destination) {
                 files::keep_mode(&existing, &staged.temporary.path).map_err(error)?;
             }
-            drop(staged.temporary.file.take());
+            // Closed before the rename (Windows cannot rename an open file).
+            staged.temporary.file = None;
             files::rename_over(&staged.temporary.path, &destination).map_err(error)?;
             open_temporaries().remove(&staged.temporary.path);
             written.push(destination);

@@ -8,7 +8,7 @@
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
-use super::atomic::{FileSet, WriteError, check_folder_writable};
+use super::atomic::{Stage, WriteError, check_folder_writable, stage_bytes};
 use crate::render::Frame;
 use crate::render::depth_map::{DepthRange, quantize_u16};
 
@@ -216,7 +216,7 @@ pub(crate) fn decode_exr(bytes: &[u8]) -> Result<RawDepth, String> {
 
 /// Stages `frame`'s raw t for `path` as PFM or OpenEXR, chosen by the extension.
 pub(crate) fn stage_raw_depth(
-    set: &mut FileSet,
+    set: &mut dyn Stage,
     frame: &Frame,
     path: &Path,
 ) -> Result<(), WriteError> {
@@ -234,7 +234,7 @@ pub(crate) fn stage_raw_depth(
             })?
         }
     };
-    set.stage_bytes(path, &bytes)
+    stage_bytes(set, path, &bytes)
 }
 
 /// Checks, without touching `path`, that a raw depth file (`.pfm`, `.exr`) could be written there.
@@ -285,7 +285,7 @@ pub(crate) fn depth_image_u16(
 
 /// Stages the 16-bit grey PNG of `frame`'s depth over `range` for `path` (must end in `.png`).
 pub(crate) fn stage_depth_png16(
-    set: &mut FileSet,
+    set: &mut dyn Stage,
     frame: &Frame,
     range: DepthRange,
     path: &Path,
@@ -307,12 +307,13 @@ pub(crate) fn stage_depth_png16(
             path: path.to_path_buf(),
             source,
         })?;
-    set.stage_bytes(path, &bytes)
+    stage_bytes(set, path, &bytes)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::output::atomic::FileSet;
     use crate::render::NO_HIT;
 
     fn write_raw_depth(frame: &Frame, path: &Path) -> Result<(), WriteError> {

@@ -8,7 +8,7 @@ use std::path::Path;
 use image::codecs::png::PngEncoder;
 use image::{ExtendedColorType, ImageEncoder, RgbImage};
 
-use super::atomic::{FileSet, WriteError, check_folder_writable};
+use super::atomic::{FileSet, Stage, WriteError, check_folder_writable};
 
 /// Image file formats the program writes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -72,12 +72,12 @@ pub fn encode(image: &RgbImage, format: ImageFormat) -> Result<Vec<u8>, image::I
 /// Stages `image` in the format `path`'s extension names, streamed into the file set's temporary
 /// file (no second copy of the pixels in memory).
 pub(crate) fn stage_image(
-    set: &mut FileSet,
+    set: &mut dyn Stage,
     path: &Path,
     image: &RgbImage,
 ) -> Result<(), WriteError> {
     let format = ImageFormat::from_path(path)?;
-    set.stage(path, |out| {
+    set.stage_file(path, false, &mut |out| {
         encode_into(image, format, out).map_err(|source| match source {
             image::ImageError::IoError(source) => WriteError::Io {
                 path: path.to_path_buf(),

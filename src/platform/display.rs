@@ -16,5 +16,6 @@ pub fn display_server_missing() -> bool {
 /// Whether native file dialogs here need a desktop portal or zenity (Linux and the other Unix
 /// desktops); `false` on Windows and macOS, whose dialogs are the system's own.
 pub fn dialogs_need_a_desktop_portal() -> bool {
-    !cfg!(any(windows, target_os = "macos"))
+    // A browser page has the browser's own file chooser.
+    !cfg!(any(windows, target_os = "macos", target_arch = "wasm32"))
 }

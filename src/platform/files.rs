@@ -16,6 +16,8 @@
 //!   standard library's are not stable). A file that does not exist yet is its canonical folder
 //!   and its name, the name compared without case on Windows and macOS, whose file systems
 //!   usually ignore it.
+//!
+//! In a browser page (`wasm32`) there are no files: every call here fails with `Unsupported`.
 
 use std::fs::File;
 use std::path::{Path, PathBuf};
@@ -29,6 +31,11 @@ pub fn read_at(file: &File, buffer: &mut [u8], offset: u64) -> std::io::Result<u
     #[cfg(windows)]
     {
         std::os::windows::fs::FileExt::seek_read(file, buffer, offset)
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        let _ = (file, buffer, offset);
+        Err(std::io::ErrorKind::Unsupported.into())
     }
 }
 
@@ -53,6 +60,11 @@ pub fn write_all_at(file: &File, bytes: &[u8], offset: u64) -> std::io::Result<(
             }
         }
         Ok(())
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        let _ = (file, bytes, offset);
+        Err(std::io::ErrorKind::Unsupported.into())
     }
 }
 
@@ -206,7 +218,7 @@ pub enum FileIdentity {
         inode: u64,
     },
     /// A file that exists, by volume and file index.
-    #[cfg(not(unix))]
+    #[cfg(windows)]
     Existing(same_file::Handle),
     /// A file to be created: its canonical folder joined with its name.
     New(PathBuf),
@@ -237,12 +249,18 @@ fn existing_identity(path: &Path) -> Option<FileIdentity> {
     })
 }
 
-#[cfg(not(unix))]
+#[cfg(windows)]
 fn existing_identity(path: &Path) -> Option<FileIdentity> {
     std::fs::metadata(path).ok()?;
     same_file::Handle::from_path(path)
         .ok()
         .map(FileIdentity::Existing)
+}
+
+/// A browser page has no files.
+#[cfg(target_arch = "wasm32")]
+fn existing_identity(_path: &Path) -> Option<FileIdentity> {
+    None
 }
 
 /// Whether `a` and `b` name the same file.

@@ -92,7 +92,8 @@ pub fn exit_status_of(signal: i32) -> u8 {
 }
 
 /// A stop asked for by `signal`: the viewer is woken the first time; otherwise `clean_up` runs
-/// and the program exits.
+/// and the program exits. (A browser page has no signals.)
+#[cfg_attr(target_arch = "wasm32", allow(dead_code))]
 fn stop(signal: i32, on_signal: OnSignal, clean_up: fn()) {
     let first = STOP_SIGNAL.swap(signal, Ordering::AcqRel) == 0;
     if on_signal == OnSignal::CloseViewer && first {

@@ -8,12 +8,13 @@
 
 use std::sync::{Arc, Condvar, Mutex, MutexGuard, PoisonError};
 use std::thread::JoinHandle;
-use std::time::{Duration, Instant};
+use web_time::{Duration, Instant};
 
 /// A finished job.
 #[derive(Debug, Clone)]
 pub(crate) struct RenderResult<J, T> {
     /// Number returned by [`RenderWorker::submit`] for this job; later jobs have larger numbers.
+    #[cfg_attr(target_arch = "wasm32", allow(dead_code))]
     pub(crate) generation: u64,
     /// The job that was run.
     pub(crate) job: J,
@@ -34,6 +35,7 @@ struct State<J, T> {
     busy: bool,
     shutdown: bool,
     next_generation: u64,
+    #[cfg_attr(target_arch = "wasm32", allow(dead_code))]
     delivered_generation: Option<u64>,
 }
 
@@ -53,6 +55,13 @@ impl<J, T> Shared<J, T> {
 pub(crate) struct RenderWorker<J, T> {
     shared: Arc<Shared<J, T>>,
     thread: Option<JoinHandle<()>>,
+    /// In a browser page, where no thread can be started: the job function, run by
+    /// [`RenderWorker::take_finished`] on the caller's thread.
+    #[cfg(target_arch = "wasm32")]
+    run_job: Box<dyn Fn(&J) -> T>,
+    /// In a browser page: wakes the caller to come back for a submitted job.
+    #[cfg(target_arch = "wasm32")]
+    on_submitted: Box<dyn Fn()>,
 }
 
 impl<J, T> std::fmt::Debug for RenderWorker<J, T> {
@@ -64,6 +73,7 @@ impl<J, T> std::fmt::Debug for RenderWorker<J, T> {
 impl<J: Clone + Send + 'static, T: Send + 'static> RenderWorker<J, T> {
     /// Starts the worker thread: it runs `run_job` on each job it takes, and `on_finished` after
     /// each result is stored.
+    #[cfg_attr(target_arch = "wasm32", allow(clippy::unnecessary_wraps))]
     pub(crate) fn new(
         run_job: impl Fn(&J) -> T + Send + 'static,
         on_finished: impl Fn() + Send + 'static,
@@ -79,14 +89,26 @@ impl<J: Clone + Send + 'static, T: Send + 'static> RenderWorker<J, T> {
             }),
             wake: Condvar::new(),
         });
-        let worker_shared = Arc::clone(&shared);
-        let thread = std::thread::Builder::new()
-            .name("render-worker".into())
-            .spawn(move || worker_loop(&worker_shared, &run_job, &on_finished))?;
-        Ok(Self {
-            shared,
-            thread: Some(thread),
-        })
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            let worker_shared = Arc::clone(&shared);
+            let thread = std::thread::Builder::new()
+                .name("render-worker".into())
+                .spawn(move || worker_loop(&worker_shared, &run_job, &on_finished))?;
+            Ok(Self {
+                shared,
+                thread: Some(thread),
+            })
+        }
+        #[cfg(target_arch = "wasm32")]
+        {
+            Ok(Self {
+                shared,
+                thread: None,
+                run_job: Box::new(run_job),
+                on_submitted: Box::new(on_finished),
+            })
+        }
     }
 
     /// Queues `job`, replacing any job not yet started. Returns the job's generation.
@@ -97,11 +119,28 @@ impl<J: Clone + Send + 'static, T: Send + 'static> RenderWorker<J, T> {
         state.pending = Some(Queued { generation, job });
         drop(state);
         self.shared.wake.notify_all();
+        #[cfg(target_arch = "wasm32")]
+        (self.on_submitted)();
         generation
     }
 
-    /// The newest finished frame not yet taken, if any.
+    /// The newest finished frame not yet taken, if any. In a browser page, the job waiting is
+    /// run here, on the caller's thread: one job per call, so the page draws between jobs.
     pub(crate) fn take_finished(&self) -> Option<RenderResult<J, T>> {
+        #[cfg(target_arch = "wasm32")]
+        {
+            let queued = self.shared.lock().pending.take();
+            if let Some(queued) = queued {
+                let started = Instant::now();
+                let output = (self.run_job)(&queued.job);
+                return Some(RenderResult {
+                    generation: queued.generation,
+                    job: queued.job,
+                    output,
+                    render_time: started.elapsed(),
+                });
+            }
+        }
         self.shared.lock().finished.take()
     }
 
@@ -113,6 +152,12 @@ impl<J: Clone + Send + 'static, T: Send + 'static> RenderWorker<J, T> {
 
     /// Blocks until the worker is idle or `timeout` passes; true if idle (for tests and exports).
     pub(crate) fn wait_idle(&self, timeout: Duration) -> bool {
+        // In a browser page nothing runs the job meanwhile: waiting would never end.
+        #[cfg(target_arch = "wasm32")]
+        if cfg!(target_arch = "wasm32") {
+            let _ = timeout;
+            return self.is_idle();
+        }
         let deadline = Instant::now() + timeout;
         let mut state = self.shared.lock();
         while state.pending.is_some() || state.busy {
@@ -142,6 +187,7 @@ impl<J, T> Drop for RenderWorker<J, T> {
     }
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 fn worker_loop<J: Clone, T>(
     shared: &Shared<J, T>,
     run_job: &dyn Fn(&J) -> T,

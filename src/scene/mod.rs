@@ -220,6 +220,19 @@ pub fn load_scene_with_progress(
     Ok(scene)
 }
 
+/// A scene from bytes that did not come from a file (a browser page's dropped or fetched file),
+/// named `name` in errors: the same size limit and the same errors, with line and column, as a
+/// file gets.
+pub fn load_scene_from_bytes(name: &str, bytes: &[u8]) -> Result<Scene, LoadError> {
+    if bytes.len() as u64 > MAX_SCENE_BYTES {
+        return Err(LoadError::TooLarge {
+            path: name.to_owned(),
+            size: format!("the file is {} bytes", bytes.len()),
+        });
+    }
+    parse_scene_bytes_with_progress(bytes, &|_| {}).map_err(|error| error.in_file(name).into())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,0 +1,429 @@
+//! The viewer in a browser page (`wasm32`): what a page does where the desktop uses files.
+//!
+//! * Files come in as bytes: dropped on the page, chosen with the browser's file input, or
+//!   fetched from the page's own site (`?scene=URL`, or a URL typed in the path field). They land
+//!   in the [`Page`]'s inbox and the viewer takes them at its next frame.
+//! * Exports and saved views leave as downloads.
+//! * Settings and views are kept in the browser's storage by eframe.
+//!
+//! A page has no threads here: loads, comparisons and exports run on the page's thread, and the
+//! render worker renders one frame per page frame (see `render::worker`).
+
+use std::cell::RefCell;
+use std::path::Path;
+use std::rc::Rc;
+use std::sync::Arc;
+
+use wasm_bindgen::JsCast as _;
+use wasm_bindgen::prelude::*;
+use wasm_bindgen_futures::JsFuture;
+
+use super::ViewerApp;
+use super::compare::ImageKind;
+use super::status::Status;
+
+/// What a file that came in is for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Purpose {
+    /// A scene to open.
+    Open,
+    /// An image to compare, as this kind.
+    Compare(ImageKind),
+    /// Decided by its name: an image (`.png`, `.tga`) is compared, anything else opened.
+    ByName,
+}
+
+/// A file that came in, or why it could not.
+#[derive(Debug)]
+pub(crate) struct Incoming {
+    name: String,
+    purpose: Purpose,
+    bytes: Result<Vec<u8>, String>,
+}
+
+/// The page's side of the viewer: files on their way in.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Page {
+    inbox: Rc<RefCell<Vec<Incoming>>>,
+}
+
+impl Page {
+    fn deliver(&self, incoming: Incoming, ctx: &egui::Context) {
+        self.inbox.borrow_mut().push(incoming);
+        ctx.request_repaint();
+    }
+
+    /// Reads a file dropped on the page.
+    pub(crate) fn read_dropped(&self, file: egui::DroppedFileHandle, ctx: &egui::Context) {
+        let (page, ctx) = (self.clone(), ctx.clone());
+        wasm_bindgen_futures::spawn_local(async move {
+            let name = file_name(file.path());
+            let bytes = file.bytes_async().await;
+            page.deliver(
+                Incoming {
+                    name,
+                    purpose: Purpose::ByName,
+                    bytes,
+                },
+                &ctx,
+            );
+        });
+    }
+
+    /// Shows the browser's file chooser (files of `accept`, e.g. `.txt`) and reads the file
+    /// chosen. Nothing comes in when the user cancels.
+    pub(crate) fn pick(
+        &self,
+        purpose: Purpose,
+        accept: &str,
+        ctx: &egui::Context,
+    ) -> Result<(), String> {
+        let document = window()?.document().ok_or("the page has no document")?;
+        let input: web_sys::HtmlInputElement = document
+            .create_element("input")
+            .map_err(|e| js_error(&e))?
+            .dyn_into()
+            .map_err(|_| "cannot make a file input")?;
+        input.set_type("file");
+        input.set_accept(accept);
+        let (page, ctx, chooser) = (self.clone(), ctx.clone(), input.clone());
+        let on_change = Closure::once_into_js(move || {
+            let Some(file) = chooser.files().and_then(|files| files.get(0)) else {
+                return;
+            };
+            wasm_bindgen_futures::spawn_local(async move {
+                let bytes = JsFuture::from(file.array_buffer())
+                    .await
+                    .map(|buffer| js_sys::Uint8Array::new(&buffer).to_vec())
+                    .map_err(|e| js_error(&e));
+                page.deliver(
+                    Incoming {
+                        name: file.name(),
+                        purpose,
+                        bytes,
+                    },
+                    &ctx,
+                );
+            });
+        });
+        input.set_onchange(Some(on_change.unchecked_ref()));
+        input.click();
+        Ok(())
+    }
+
+    /// Fetches the scene at `address`, relative to the page. Only the page's own site is asked
+    /// (a course page links its scenes); anything else is refused with a message.
+    pub(crate) fn fetch_scene(&self, address: &str, ctx: &egui::Context) {
+        let name = address.rsplit('/').next().unwrap_or(address).to_owned();
+        let url = match same_site_url(address) {
+            Ok(url) => url,
+            Err(error) => {
+                self.deliver(
+                    Incoming {
+                        name,
+                        purpose: Purpose::Open,
+                        bytes: Err(error),
+                    },
+                    ctx,
+                );
+                return;
+            }
+        };
+        let (page, ctx) = (self.clone(), ctx.clone());
+        wasm_bindgen_futures::spawn_local(async move {
+            let bytes = fetch_bytes(&url).await;
+            page.deliver(
+                Incoming {
+                    name,
+                    purpose: Purpose::Open,
+                    bytes,
+                },
+                &ctx,
+            );
+        });
+    }
+
+    fn take(&self) -> Vec<Incoming> {
+        std::mem::take(&mut *self.inbox.borrow_mut())
+    }
+}
+
+/// What a dropped image is compared as, by its name: `.png` and `.tga` files are images, and a
+/// name that says "depth" is a depth image. `None` for anything else (a scene).
+pub(crate) fn dropped_image_kind(name: &str) -> Option<ImageKind> {
+    let lower = name.to_lowercase();
+    let is_image = [".png", ".tga"].iter().any(|ext| lower.ends_with(ext));
+    is_image.then(|| {
+        if lower.contains("depth") {
+            ImageKind::Depth
+        } else {
+            ImageKind::Colour
+        }
+    })
+}
+
+/// The last part of a dropped file's path (the page gives only the name).
+fn file_name(path: &Path) -> String {
+    path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    )
+}
+
+fn window() -> Result<web_sys::Window, String> {
+    web_sys::window().ok_or_else(|| "not in a browser window".to_owned())
+}
+
+fn js_error(value: &JsValue) -> String {
+    value
+        .dyn_ref::<js_sys::Error>()
+        .map(|error| String::from(error.message()))
+        .or_else(|| value.as_string())
+        .unwrap_or_else(|| format!("{value:?}"))
+}
+
+/// `address` resolved against the page's address, when it is on the page's own site.
+fn same_site_url(address: &str) -> Result<String, String> {
+    let location = window()?.location();
+    let page = location.href().map_err(|e| js_error(&e))?;
+    let origin = location.origin().map_err(|e| js_error(&e))?;
+    let url = web_sys::Url::new_with_base(address, &page)
+        .map_err(|_| format!("{address}: not an address"))?;
+    if url.origin() != origin {
+        return Err(format!(
+            "{address}: only scenes on this page's own site ({origin}) can be opened by address; \
+             download the file and drop it on the page instead"
+        ));
+    }
+    Ok(url.href())
+}
+
+/// The bytes at `url`, or why not (an HTTP status, a network error).
+async fn fetch_bytes(url: &str) -> Result<Vec<u8>, String> {
+    let response: web_sys::Response = JsFuture::from(window()?.fetch_with_str(url))
+        .await
+        .map_err(|error| format!("cannot fetch {url}: {}", js_error(&error)))?
+        .dyn_into()
+        .map_err(|_| format!("cannot fetch {url}"))?;
+    if !response.ok() {
+        return Err(format!(
+            "{url}: the server answered {} {}",
+            response.status(),
+            response.status_text()
+        ));
+    }
+    let buffer = JsFuture::from(response.array_buffer().map_err(|e| js_error(&e))?)
+        .await
+        .map_err(|e| js_error(&e))?;
+    Ok(js_sys::Uint8Array::new(&buffer).to_vec())
+}
+
+/// Offers `bytes` as a download named `name`.
+pub(crate) fn download(name: &str, bytes: &[u8]) -> Result<(), String> {
+    let document = window()?.document().ok_or("the page has no document")?;
+    let parts = js_sys::Array::of1(&js_sys::Uint8Array::from(bytes));
+    let options = web_sys::BlobPropertyBag::new();
+    options.set_type("application/octet-stream");
+    let blob = web_sys::Blob::new_with_u8_array_sequence_and_options(&parts, &options)
+        .map_err(|e| js_error(&e))?;
+    let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(|e| js_error(&e))?;
+    let anchor: web_sys::HtmlAnchorElement = document
+        .create_element("a")
+        .map_err(|e| js_error(&e))?
+        .dyn_into()
+        .map_err(|_| "cannot make a link")?;
+    anchor.set_href(&url);
+    anchor.set_download(name);
+    anchor.click();
+    // The download has its bytes once it started; the address is released a minute later.
+    let release = Closure::once_into_js(move || {
+        let _ = web_sys::Url::revoke_object_url(&url);
+    });
+    let _ = window()?
+        .set_timeout_with_callback_and_timeout_and_arguments_0(release.unchecked_ref(), 60_000);
+    Ok(())
+}
+
+/// The page address's `scene` parameter (`?scene=scenes/scene1_02.txt`), if any.
+pub(crate) fn scene_parameter() -> Option<String> {
+    let search = window().ok()?.location().search().ok()?;
+    web_sys::UrlSearchParams::new_with_str(&search)
+        .ok()?
+        .get("scene")
+        .filter(|scene| !scene.trim().is_empty())
+}
+
+/// Sets the page's title.
+pub(crate) fn set_title(title: &str) {
+    if let Some(document) = window().ok().and_then(|w| w.document()) {
+        document.set_title(title);
+    }
+}
+
+impl ViewerApp {
+    /// Takes in the files that came to the page since the last frame.
+    pub(crate) fn poll_page(&mut self) {
+        for incoming in self.page.take() {
+            let bytes: Arc<[u8]> = match incoming.bytes {
+                Ok(bytes) => bytes.into(),
+                Err(error) => {
+                    let message = if error.starts_with(&incoming.name) {
+                        error
+                    } else {
+                        format!("{}: {error}", incoming.name)
+                    };
+                    match incoming.purpose {
+                        Purpose::Open => self.scene_error = Some(message),
+                        _ => self.status = Some(Status::error(message)),
+                    }
+                    continue;
+                }
+            };
+            let name = incoming.name;
+            match incoming.purpose {
+                Purpose::Open => self.open_bytes(&name, bytes),
+                Purpose::Compare(kind) => self.compare_with_bytes(&name, bytes, kind),
+                Purpose::ByName => match dropped_image_kind(&name) {
+                    Some(kind) => self.compare_with_bytes(&name, bytes, kind),
+                    None => self.open_bytes(&name, bytes),
+                },
+            }
+        }
+    }
+
+    /// Downloads the files `written` holds; the status bar names them.
+    pub(crate) fn download_files(&mut self, written: Result<Vec<(String, Vec<u8>)>, String>) {
+        let outcome = written.and_then(|files| {
+            for (name, bytes) in &files {
+                download(name, bytes)?;
+            }
+            let names: Vec<&str> = files.iter().map(|(name, _)| name.as_str()).collect();
+            Ok(format!("downloaded {}", names.join(", ")))
+        });
+        self.status = Some(match outcome {
+            Ok(message) => Status::info(message),
+            Err(error) => Status::error(format!("download failed: {error}")),
+        });
+    }
+}
+
+/// What the page's script holds: it starts the viewer on a canvas and, for tests and tools, reads
+/// what is on screen (the viewer's canvas has no DOM to query).
+#[wasm_bindgen]
+pub struct WebHandle {
+    runner: eframe::WebRunner,
+}
+
+#[wasm_bindgen]
+impl WebHandle {
+    /// A handle whose viewer is not started yet. Rust panics are reported to the console.
+    #[wasm_bindgen(constructor)]
+    #[expect(clippy::new_without_default, reason = "a JavaScript constructor")]
+    pub fn new() -> Self {
+        eframe::WebLogger::init(log::LevelFilter::Warn).ok();
+        Self {
+            runner: eframe::WebRunner::new(),
+        }
+    }
+
+    /// Starts the viewer on `canvas`: the embedded default scene, or the scene the page's
+    /// address names (`?scene=`).
+    pub async fn start(&self, canvas: web_sys::HtmlCanvasElement) -> Result<(), JsValue> {
+        self.runner
+            .start(
+                canvas,
+                eframe::WebOptions::default(),
+                Box::new(|cc| {
+                    Ok(Box::new(ViewerApp::new(
+                        cc,
+                        crate::cli::ViewerRequest::default(),
+                    )))
+                }),
+            )
+            .await
+    }
+
+    /// Stops the viewer.
+    pub fn destroy(&self) {
+        self.runner.destroy();
+    }
+
+    /// Whether the viewer has panicked (the page then says so).
+    pub fn has_panicked(&self) -> bool {
+        self.runner.has_panicked()
+    }
+
+    /// The panic's message, if the viewer has panicked.
+    pub fn panic_message(&self) -> Option<String> {
+        self.runner.panic_summary().map(|summary| summary.message())
+    }
+
+    /// The open scene's name ("default scene" for the embedded one).
+    pub fn scene_name(&self) -> Option<String> {
+        self.with_app(|app| app.loaded.name())
+    }
+
+    /// Why the last scene could not be opened, if it could not.
+    pub fn scene_error(&self) -> Option<String> {
+        self.with_app(|app| app.scene_error.clone()).flatten()
+    }
+
+    /// The status bar's message.
+    pub fn message(&self) -> Option<String> {
+        self.with_app(|app| app.status.as_ref().map(|s| s.text.clone()))
+            .flatten()
+    }
+
+    /// True while nothing is loading, rendering or being compared, and the frame on screen is
+    /// of the current view at the full quality.
+    pub fn settled(&self) -> bool {
+        self.with_app(|app| {
+            !app.busy()
+                && app.loading.is_none()
+                && app.page.inbox.borrow().is_empty()
+                && app.frame_is_current()
+        })
+        .unwrap_or(false)
+    }
+
+    /// The frame on screen: `[width, height]`.
+    pub fn frame_size(&self) -> Option<Vec<u32>> {
+        self.with_app(|app| {
+            app.shown
+                .as_ref()
+                .map(|shown| vec![shown.frame.width_px, shown.frame.height_px])
+        })
+        .flatten()
+    }
+
+    /// The colour image on screen, 3 bytes a pixel, top row first.
+    pub fn colour_rgb(&self) -> Option<Vec<u8>> {
+        self.with_app(|app| {
+            app.shown
+                .as_ref()
+                .map(|shown| shown.frame.colour_image().into_raw())
+        })
+        .flatten()
+    }
+
+    /// The mistakes the comparison on screen names, one word each (empty when none is open or
+    /// none is named).
+    pub fn diagnosis(&self) -> Vec<String> {
+        self.with_app(|app| {
+            app.compare.current.as_ref().map_or_else(Vec::new, |c| {
+                c.pixels.diagnosis.iter().map(|&w| w.to_owned()).collect()
+            })
+        })
+        .unwrap_or_default()
+    }
+
+    /// How long the last frame took to render, in milliseconds (0 before the first).
+    pub fn render_ms(&self) -> f64 {
+        self.with_app(|app| app.shown.as_ref().map_or(0.0, |shown| shown.render_ms))
+            .unwrap_or(0.0)
+    }
+
+    fn with_app<T>(&self, read: impl FnOnce(&ViewerApp) -> T) -> Option<T> {
+        self.runner.app_mut::<ViewerApp>().map(|app| read(&app))
+    }
+}
