@@ -257,6 +257,11 @@ impl eframe::App for ViewerApp {
         }
     }
 
+    /// The page's handle reads the app through this (`app::web::WebHandle`).
+    fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
+        Some(self)
+    }
+
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         self.remember_view();
         eframe::set_value(storage, eframe::APP_KEY, &self.settings);
