@@ -258,6 +258,7 @@ impl eframe::App for ViewerApp {
     }
 
     /// The page's handle reads the app through this (`app::web::WebHandle`).
+    #[cfg(target_arch = "wasm32")]
     fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
         Some(self)
     }

@@ -386,6 +386,24 @@ impl WebHandle {
         .unwrap_or(false)
     }
 
+    /// The view: `[centre x, y, z, size, depth min, depth max, width, height]` (world units,
+    /// then pixels).
+    pub fn view(&self) -> Option<Vec<f64>> {
+        self.with_app(|app| {
+            let v = &app.view;
+            vec![
+                v.center_world.x,
+                v.center_world.y,
+                v.center_world.z,
+                v.size_world,
+                v.depth_range.min_t,
+                v.depth_range.max_t,
+                f64::from(v.width_px),
+                f64::from(v.height_px),
+            ]
+        })
+    }
+
     /// The frame on screen: `[width, height]`.
     pub fn frame_size(&self) -> Option<Vec<u32>> {
         self.with_app(|app| {

@@ -1,0 +1,212 @@
+// The viewer's web build in a real browser: Debian's headless Chromium driven by playwright-core
+// (scripts/web.sh test builds the site and the native binary, then runs this with node --test).
+// egui's canvas has no DOM to query: the tests drive it with the mouse, the keyboard and file
+// drops at canvas coordinates, and read what is on screen through the page's `window.raytracer`
+// handle and screenshots; the native command line is the oracle for every picture.
+import { after, before, test } from "node:test";
+import assert from "node:assert/strict";
+import { execFileSync } from "node:child_process";
+import fs from "node:fs";
+import path from "node:path";
+import {
+  dropFile, env, findIn, launch, openViewer, pngToRgb, raytracer, readTga, serve, settled,
+  temporaryFolder, viewOf,
+} from "./support.mjs";
+
+let browser;
+let site;
+
+before(async () => {
+  site = await serve(env.site, { "/scenes/": env.scenes });
+  browser = await launch();
+});
+
+after(async () => {
+  await browser?.close();
+  site?.server.close();
+});
+
+/** The native render of `scene` at the page's view: `{ colour, depth }` as raw RGB. */
+function nativeRender(scene, view) {
+  const folder = temporaryFolder();
+  raytracer(
+    [
+      "-input", path.resolve(scene), "-size", String(view.width), String(view.height),
+      "-output", "colour.tga", "-depth", String(view.depthMin), String(view.depthMax), "depth.tga",
+    ],
+    folder,
+  );
+  return { colour: readTga(path.join(folder, "colour.tga")), depth: readTga(path.join(folder, "depth.tga")) };
+}
+
+/** Both native pictures are on screen, pixel for pixel (the depth where a ray hits). */
+async function assertOnScreen(page, native) {
+  const screen = pngToRgb(await page.screenshot());
+  const colourAt = findIn(screen, native.colour);
+  assert.ok(colourAt, "the colour image is on screen, pixel for pixel");
+  // The viewer marks pixels no ray hits in a colour of its own; the file has them black.
+  const background = native.colour.rgb.subarray(0, 3);
+  const noHit = (i) =>
+    native.colour.rgb[3 * i] === background[0] &&
+    native.colour.rgb[3 * i + 1] === background[1] &&
+    native.colour.rgb[3 * i + 2] === background[2];
+  const depthAt = findIn(screen, native.depth, noHit);
+  assert.ok(depthAt, "the depth image is on screen, pixel for pixel where rays hit");
+  assert.ok(depthAt.x > colourAt.x, "depth beside colour");
+  return { colourAt, depthAt };
+}
+
+test("the page loads without a console error and shows the default scene's two images", async () => {
+  const { page, context, errors } = await openViewer(browser, site.url);
+  await settled(page);
+  assert.equal(await page.evaluate(() => window.raytracer.scene_name()), "default scene (embedded)");
+  const view = await viewOf(page);
+  await assertOnScreen(page, nativeRender("assets/default_scene.txt", view));
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test("?scene= opens a scene from the page's site, the same pixels as the native render", async () => {
+  const { page, context, errors } = await openViewer(browser, `${site.url}?scene=scenes/scene1_02.txt`);
+  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_02.txt");
+  await settled(page);
+  assert.match(await page.title(), /scene1_02\.txt/);
+  const view = await viewOf(page);
+  const native = nativeRender(path.join(env.scenes, "scene1_02.txt"), view);
+  await assertOnScreen(page, native);
+  const frame = await page.evaluate(() => Array.from(window.raytracer.colour_rgb()));
+  assert.ok(Buffer.from(frame).equals(native.colour.rgb), "the frame's bytes are the native render's");
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test("?scene= elsewhere or missing says why, and the default scene stays", async () => {
+  for (const [address, expected] of [
+    ["https://example.com/scene.txt", /only scenes on this page's own site/],
+    ["scenes/no_such_scene.txt", /404/],
+  ]) {
+    const { page, context } = await openViewer(browser, `${site.url}?scene=${encodeURIComponent(address)}`);
+    await page.waitForFunction(() => window.raytracer.scene_error() !== undefined, null, { timeout: 30_000 });
+    assert.match(await page.evaluate(() => window.raytracer.scene_error()), expected);
+    assert.equal(await page.evaluate(() => window.raytracer.scene_name()), "default scene (embedded)");
+    await context.close();
+  }
+});
+
+test("a scene file dropped on the page opens, and a broken one says where it is wrong", async () => {
+  const { page, context } = await openViewer(browser, site.url);
+  await settled(page);
+  const scene = path.join(env.scenes, "scene1_03.txt");
+  await dropFile(page, "scene1_03.txt", fs.readFileSync(scene));
+  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_03.txt");
+  await settled(page);
+  const native = nativeRender(scene, await viewOf(page));
+  const frame = await page.evaluate(() => Array.from(window.raytracer.colour_rgb()));
+  assert.ok(Buffer.from(frame).equals(native.colour.rgb));
+  await dropFile(page, "broken.txt", Buffer.from("OrthographicCamera {\n  center 0 0 x\n}\n"));
+  await page.waitForFunction(() => window.raytracer.scene_error() !== undefined);
+  assert.match(await page.evaluate(() => window.raytracer.scene_error()), /broken\.txt:2:\d+/);
+  assert.equal(await page.evaluate(() => window.raytracer.scene_name()), "scene1_03.txt");
+  await context.close();
+});
+
+test("a drag on the colour image moves the view", async () => {
+  const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_02.txt`);
+  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_02.txt");
+  await settled(page);
+  const before = await viewOf(page);
+  const { colourAt } = await assertOnScreen(page, nativeRender(path.join(env.scenes, "scene1_02.txt"), before));
+  const x = colourAt.x + before.width / 2;
+  const y = colourAt.y + before.height / 2;
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  for (let step = 1; step <= 10; step++) await page.mouse.move(x + 6 * step, y, { steps: 1 });
+  await page.mouse.up();
+  await settled(page);
+  const afterDrag = await viewOf(page);
+  assert.notDeepEqual(afterDrag.centre, before.centre, "the camera moved");
+  // What is on screen is the native render of the moved view, saved as a scene by the page.
+  const frame = await page.evaluate(() => Array.from(window.raytracer.colour_rgb()));
+  const unmoved = nativeRender(path.join(env.scenes, "scene1_02.txt"), afterDrag).colour.rgb;
+  assert.ok(!Buffer.from(frame).equals(unmoved), "the picture changed");
+  await context.close();
+});
+
+test("a wrong image dropped on the page gets its diagnosis", async () => {
+  const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_02.txt`);
+  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_02.txt");
+  await settled(page);
+  // A student's picture written top row first without saying so in the file.
+  const folder = temporaryFolder();
+  raytracer(["-input", path.resolve(env.scenes, "scene1_02.txt"), "-size", "120", "80", "-output", "c.tga"], folder);
+  const tga = fs.readFileSync(path.join(folder, "c.tga"));
+  const [width, height] = [tga.readUInt16LE(12), tga.readUInt16LE(14)];
+  const flipped = Buffer.from(tga);
+  const start = 18 + tga[0];
+  for (let row = 0; row < height; row++) {
+    tga.copy(flipped, start + row * width * 3, start + (height - 1 - row) * width * 3, start + (height - row) * width * 3);
+  }
+  await dropFile(page, "student_output.tga", flipped);
+  await page.waitForFunction(() => window.raytracer.diagnosis().length > 0, null, { timeout: 60_000 });
+  assert.deepEqual(await page.evaluate(() => window.raytracer.diagnosis()), ["flipped-vertically"]);
+  await context.close();
+});
+
+test("an export downloads the files the command line writes for the same request", async () => {
+  const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_02.txt`);
+  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_02.txt");
+  await settled(page);
+  const folder = temporaryFolder();
+  const downloads = [];
+  page.on("download", (download) => downloads.push(download));
+  await page.locator("canvas").click({ position: { x: 5, y: 700 } });
+  await page.keyboard.press("Control+s");
+  await page.waitForFunction(() => /downloaded/.test(window.raytracer.message() ?? ""), null, { timeout: 60_000 });
+  await page.waitForTimeout(500);
+  const names = [];
+  for (const download of downloads) {
+    const name = download.suggestedFilename();
+    names.push(name);
+    await download.saveAs(path.join(folder, "page", name));
+  }
+  assert.deepEqual(names.sort(), [
+    "raytracer_both.png", "raytracer_colour.png", "raytracer_command.sh", "raytracer_depth.png", "raytracer_scene.txt",
+  ]);
+  // The downloaded command, run by the native binary beside the downloaded scene.
+  const again = path.join(folder, "again");
+  fs.mkdirSync(again);
+  for (const name of ["raytracer_command.sh", "raytracer_scene.txt"]) {
+    fs.copyFileSync(path.join(folder, "page", name), path.join(again, name));
+  }
+  execFileSync("sh", ["raytracer_command.sh"], {
+    cwd: again,
+    env: { ...process.env, PATH: `${path.dirname(path.resolve(env.raytracer))}:${process.env.PATH}` },
+  });
+  for (const name of ["raytracer_colour.png", "raytracer_depth.png"]) {
+    assert.ok(
+      fs.readFileSync(path.join(again, name)).equals(fs.readFileSync(path.join(folder, "page", name))),
+      `${name}: the page's download and the command line's file are the same bytes`,
+    );
+  }
+  await context.close();
+});
+
+test("every course scene and a dense scene render the native bytes in the page", async () => {
+  const { page, context } = await openViewer(browser, site.url);
+  await settled(page);
+  const scenes = fs.readdirSync(env.scenes).filter((name) => /^scene1_0\d\.txt$/.test(name)).sort();
+  assert.equal(scenes.length, 7);
+  const dense = process.env.RAYTRACER_DENSE_SCENE;
+  const files = scenes.map((name) => path.join(env.scenes, name));
+  if (dense) files.push(dense);
+  for (const file of files) {
+    await dropFile(page, path.basename(file), fs.readFileSync(file));
+    await page.waitForFunction((name) => window.raytracer.scene_name() === name, path.basename(file), { timeout: 60_000 });
+    await settled(page);
+    const native = nativeRender(file, await viewOf(page));
+    const frame = await page.evaluate(() => Array.from(window.raytracer.colour_rgb()));
+    assert.ok(Buffer.from(frame).equals(native.colour.rgb), `${path.basename(file)}: the page's frame is the native frame`);
+  }
+  assert.ok(dense, "RAYTRACER_DENSE_SCENE names the dense scene (scripts/web.sh test makes it)");
+  await context.close();
+});
