@@ -4,6 +4,9 @@
 #                                     raytracer_bg.wasm): copy it to any web server
 #   bash scripts/web.sh serve [PORT]  builds, then serves target/web/ on 127.0.0.1 (default port
 #                                     8080) and prints the address
+#   bash scripts/web.sh test          builds, then runs the browser tests (tests/web/) in Debian's
+#                                     headless chromium, driven by playwright-core from npm
+#                                     (installs chromium with apt and the npm package when missing)
 # Tools come from the package registries only: the wasm32 target through rustup, and
 # wasm-bindgen-cli through cargo at exactly the version Cargo.lock pins for the wasm-bindgen
 # crate (the two must match), installed under target/tools/.
@@ -44,6 +47,30 @@ build() {
   echo "web.sh: the site is in $site/ ($(du -k "$site/raytracer_bg.wasm" | cut -f1) KiB of wasm)"
 }
 
+browser_tools() {
+  local missing=()
+  command -v chromium >/dev/null 2>&1 || missing+=(chromium)
+  command -v node >/dev/null 2>&1 || missing+=(nodejs)
+  command -v npm >/dev/null 2>&1 || missing+=(npm)
+  command -v convert >/dev/null 2>&1 || missing+=(imagemagick)
+  if [ ${#missing[@]} -gt 0 ]; then
+    sudo=""
+    [ "$(id -u)" -ne 0 ] && sudo="sudo"
+    echo "web.sh: installing ${missing[*]}"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  fi
+  (cd tests/web && npm ci --no-audit --no-fund --silent)
+}
+
+# The native binary (the tests' oracle) and a dense scene of 100,000 spheres.
+native_tools() {
+  cargo build --release --bin raytracer --example generate
+  mkdir -p target/web-test
+  [ -f target/web-test/dense_1e5.txt ] \
+    || target/release/examples/generate --dense 100000 target/web-test/dense_1e5.txt
+}
+
 case "$command" in
   build)
     build
@@ -54,8 +81,17 @@ case "$command" in
     echo "web.sh: serving $site on http://127.0.0.1:$port/ (Ctrl-C stops)"
     exec python3 -m http.server "$port" --bind 127.0.0.1 --directory "$site"
     ;;
+  test)
+    build
+    browser_tools
+    native_tools
+    RAYTRACER_WEB_SITE=target/web RAYTRACER_BIN=target/release/raytracer \
+      RAYTRACER_SCENES=scenes RAYTRACER_DENSE_SCENE=target/web-test/dense_1e5.txt \
+      RAYTRACER_CHROMIUM="$(command -v chromium)" \
+      node --test --test-concurrency=1 tests/web/
+    ;;
   *)
-    echo "usage: bash scripts/web.sh build | serve [PORT]" >&2
+    echo "usage: bash scripts/web.sh build | serve [PORT] | test" >&2
     exit 2
     ;;
 esac

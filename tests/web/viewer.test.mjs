@@ -132,13 +132,14 @@ test("a drag on the colour image moves the view", async () => {
   await context.close();
 });
 
-test("a wrong image dropped on the page gets its diagnosis", async () => {
-  const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_02.txt`);
-  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_02.txt");
+test("a wrong image dropped on the page gets the command line's diagnosis", async () => {
+  const scene = path.resolve(env.scenes, "scene1_04.txt");
+  const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_04.txt`);
+  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_04.txt");
   await settled(page);
   // A student's picture written top row first without saying so in the file.
   const folder = temporaryFolder();
-  raytracer(["-input", path.resolve(env.scenes, "scene1_02.txt"), "-size", "120", "80", "-output", "c.tga"], folder);
+  raytracer(["-input", scene, "-size", "120", "80", "-output", "c.tga"], folder);
   const tga = fs.readFileSync(path.join(folder, "c.tga"));
   const [width, height] = [tga.readUInt16LE(12), tga.readUInt16LE(14)];
   const flipped = Buffer.from(tga);
@@ -146,9 +147,19 @@ test("a wrong image dropped on the page gets its diagnosis", async () => {
   for (let row = 0; row < height; row++) {
     tga.copy(flipped, start + row * width * 3, start + (height - 1 - row) * width * 3, start + (height - row) * width * 3);
   }
+  fs.writeFileSync(path.join(folder, "student.tga"), flipped);
+  let cli;
+  try {
+    raytracer(["-input", scene, "-compare_output", "student.tga"], folder);
+    assert.fail("the command line finds no difference");
+  } catch (error) {
+    assert.equal(error.status, 3);
+    cli = error.stdout.toString().split("\n").filter((l) => l.startsWith("diagnosis: ")).map((l) => l.slice(11));
+  }
+  assert.deepEqual(cli, ["flipped-vertically"]);
   await dropFile(page, "student_output.tga", flipped);
   await page.waitForFunction(() => window.raytracer.diagnosis().length > 0, null, { timeout: 60_000 });
-  assert.deepEqual(await page.evaluate(() => window.raytracer.diagnosis()), ["flipped-vertically"]);
+  assert.deepEqual(await page.evaluate(() => window.raytracer.diagnosis()), cli);
   await context.close();
 });
 
