@@ -7,6 +7,8 @@
 #   bash scripts/web.sh test          builds, then runs the browser tests (tests/web/) in Debian's
 #                                     headless chromium, driven by playwright-core from npm
 #                                     (installs chromium with apt and the npm package when missing)
+#   bash scripts/web.sh report        builds, then measures the page against the native binary:
+#                                     docs/web.md and docs/web-page.png (tests/web/report.mjs)
 # Tools come from the package registries only: the wasm32 target through rustup, and
 # wasm-bindgen-cli through cargo at exactly the version Cargo.lock pins for the wasm-bindgen
 # crate (the two must match), installed under target/tools/.
@@ -65,7 +67,7 @@ browser_tools() {
 
 # The native binary (the tests' oracle) and a dense scene of 100,000 spheres.
 native_tools() {
-  cargo build --release --bin raytracer --example generate
+  cargo build --release --bin raytracer --example generate --example viewer_frame
   mkdir -p target/web-test
   [ -f target/web-test/dense_1e5.txt ] \
     || target/release/examples/generate --dense 100000 target/web-test/dense_1e5.txt
@@ -90,8 +92,17 @@ case "$command" in
       RAYTRACER_CHROMIUM="$(command -v chromium)" \
       node --test --test-concurrency=1 tests/web/
     ;;
+  report)
+    build
+    browser_tools
+    native_tools
+    RAYTRACER_WEB_SITE=target/web RAYTRACER_SCENES=scenes \
+      RAYTRACER_DENSE_SCENE=target/web-test/dense_1e5.txt \
+      RAYTRACER_CHROMIUM="$(command -v chromium)" \
+      node tests/web/report.mjs docs/web.md docs/web-page.png
+    ;;
   *)
-    echo "usage: bash scripts/web.sh build | serve [PORT] | test" >&2
+    echo "usage: bash scripts/web.sh build | serve [PORT] | test | report" >&2
     exit 2
     ;;
 esac

@@ -441,6 +441,38 @@ impl WebHandle {
             .unwrap_or(0.0)
     }
 
+    /// The viewer's work for one frame (render, both textures, histogram: what the render worker
+    /// does) of the open scene's own camera at `width`×`height`, median of `runs`, in
+    /// milliseconds: the page's figure beside `examples/viewer_frame` on the desktop.
+    pub fn frame_ms(&self, width: u32, height: u32, runs: u32) -> Option<f64> {
+        let job = self.with_app(|app| {
+            let scene = Arc::clone(&app.loaded.scene);
+            let mut view = crate::render::View::of_camera(
+                &scene.camera,
+                width,
+                height,
+                crate::render::depth_map::DepthRange::new(0.0, 1.0),
+            );
+            view.depth_range = crate::explore::initial_depth_range(&scene, &view);
+            super::job::ViewerJob {
+                scene,
+                view,
+                scene_epoch: 0,
+                quality: crate::render::Quality::default(),
+                depth_style: super::job::DepthStyle::default(),
+            }
+        })?;
+        let mut times: Vec<f64> = (0..runs.max(1))
+            .map(|_| {
+                let started = web_time::Instant::now();
+                let _ = std::hint::black_box(super::job::prepare_frame(&job));
+                started.elapsed().as_secs_f64() * 1e3
+            })
+            .collect();
+        times.sort_by(f64::total_cmp);
+        Some(times[times.len() / 2])
+    }
+
     fn with_app<T>(&self, read: impl FnOnce(&ViewerApp) -> T) -> Option<T> {
         self.runner.app_mut::<ViewerApp>().map(|app| read(&app))
     }

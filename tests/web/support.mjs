@@ -187,3 +187,21 @@ export async function dropFile(page, name, bytes) {
     { name, data: Buffer.from(bytes).toString("base64") },
   );
 }
+
+/**
+ * Drops the file at `url` (on the served site) on the page's canvas, named as the URL's last
+ * part: the bytes are fetched by the page, so no script of the test's runs on the page's thread
+ * meanwhile (decoding a large file from the test would itself block the page).
+ */
+export async function dropServedFile(page, url) {
+  await page.evaluate(async (url) => {
+    const blob = await (await fetch(url)).blob();
+    const file = new File([blob], url.split("/").pop());
+    const transfer = new DataTransfer();
+    transfer.items.add(file);
+    const canvas = document.querySelector("canvas");
+    for (const type of ["dragenter", "dragover", "drop"]) {
+      canvas.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
+    }
+  }, url);
+}
