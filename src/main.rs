@@ -8,10 +8,8 @@
 #[cfg(not(target_arch = "wasm32"))]
 use std::process::ExitCode;
 
-#[cfg(all(
-    feature = "mimalloc",
-    not(any(target_os = "macos", target_arch = "wasm32"))
-))]
+#[cfg(all(feature = "mimalloc", not(target_os = "macos")))]
+#[cfg(not(target_arch = "wasm32"))]
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
