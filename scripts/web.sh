@@ -4,7 +4,8 @@
 #                                     raytracer_bg.wasm): copy it to any web server
 #   bash scripts/web.sh serve [PORT]  builds, then serves target/web/ on 127.0.0.1 (default port
 #                                     8080) and prints the address
-#   bash scripts/web.sh test          builds, then runs the browser tests (tests/web/) in Debian's
+#   bash scripts/web.sh test          builds, runs tests/same_pixels.rs in WebAssembly under Node
+#                                     (wasm-bindgen-test), then the browser tests (tests/web/) in Debian's
 #                                     headless chromium, driven by playwright-core from npm
 #                                     (installs chromium with apt and the npm package when missing)
 #   bash scripts/web.sh report        builds, then measures the page against the native binary:
@@ -85,6 +86,9 @@ case "$command" in
     ;;
   test)
     build
+    # The renderer in WebAssembly under Node: the native frames, bit for bit (tests/same_pixels.rs).
+    CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER="$PWD/$tools/bin/wasm-bindgen-test-runner" \
+      cargo test --target wasm32-unknown-unknown --test same_pixels
     browser_tools
     native_tools
     RAYTRACER_WEB_SITE=target/web RAYTRACER_BIN=target/release/raytracer \
