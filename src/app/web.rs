@@ -404,6 +404,12 @@ impl WebHandle {
         })
     }
 
+    /// The depth image's colour map: "Grey", "Turbo" or "Viridis" (a setting the browser's
+    /// storage keeps).
+    pub fn colour_map(&self) -> Option<String> {
+        self.with_app(|app| format!("{:?}", app.settings.depth.colour_map))
+    }
+
     /// The frame on screen: `[width, height]`.
     pub fn frame_size(&self) -> Option<Vec<u32>> {
         self.with_app(|app| {

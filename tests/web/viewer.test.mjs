@@ -221,3 +221,17 @@ test("every course scene and a dense scene render the native bytes in the page",
   assert.ok(dense, "RAYTRACER_DENSE_SCENE names the dense scene (scripts/web.sh test makes it)");
   await context.close();
 });
+
+test("settings survive a reload of the page in the browser's storage", async () => {
+  const { page, context } = await openViewer(browser, site.url);
+  await settled(page);
+  assert.equal(await page.evaluate(() => window.raytracer.colour_map()), "Grey");
+  // The depth section's "turbo" radio button, where the 1280×720 page lays it out.
+  await page.mouse.click(141, 258);
+  await page.waitForFunction(() => window.raytracer.colour_map() === "Turbo", null, { timeout: 10_000 });
+  await page.reload();
+  await page.waitForFunction(() => window.raytracer !== undefined, null, { timeout: 60_000 });
+  await settled(page);
+  assert.equal(await page.evaluate(() => window.raytracer.colour_map()), "Turbo");
+  await context.close();
+});
