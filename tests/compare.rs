@@ -167,6 +167,12 @@ fn images_of_another_scene_name_nothing() {
                 MistakeSet::NONE,
                 "{name} against {other}: {diagnosis:?}"
             );
+            // Not even in part.
+            assert_eq!(
+                diagnosis.partial,
+                MistakeSet::NONE,
+                "{name} against {other}: {diagnosis:?}"
+            );
             compared += 1;
         }
     }
@@ -226,4 +232,93 @@ fn on_the_course_scenes_each_mistake_that_shows_is_named_and_never_another() {
             "{mistake} is named on no course scene: {named:?}"
         );
     }
+}
+
+/// Changes `count` pixels of `image`, spread by a seeded sequence, to colours far from theirs.
+fn speckle(image: &mut RgbImage, count: usize, seed: u64) {
+    let mut state = seed;
+    let (width, height) = image.dimensions();
+    for _ in 0..count {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        let index = (state >> 33) % u64::from(width * height);
+        let (x, y) = (
+            (index % u64::from(width)) as u32,
+            (index / u64::from(width)) as u32,
+        );
+        let pixel = image.get_pixel_mut(x, y);
+        pixel.0 = pixel.0.map(|c| c.wrapping_add(128));
+    }
+}
+
+#[test]
+fn a_mistaken_image_with_a_little_noise_is_still_named() {
+    // Stray pixels (a student's image saved lossily, a few pixels touched up) within the rule:
+    // a tenth of the differing pixels and 1% of all.
+    let (scene, view) = every_mistake();
+    let set = MistakeSet::of(&[Mistake::FlippedVertically]);
+    let mut theirs = render_variant(&scene, &view, set);
+    let exact_differing = diagnose(&scene, &view, both(&theirs)).differing_exact;
+    speckle(&mut theirs.0, 60, 1);
+    speckle(&mut theirs.1, 60, 2);
+    let diagnosis = diagnose(&scene, &view, both(&theirs));
+    assert!(exact_differing > 1_500, "{exact_differing}");
+    assert_eq!(diagnosis.mistakes, set, "{diagnosis:?}");
+    assert!(
+        diagnosis.differing_left > 0 && diagnosis.differing_left <= 120,
+        "{diagnosis:?}"
+    );
+    // Past the rule (2% of all pixels changed), the same mistake is no longer the whole answer.
+    speckle(&mut theirs.0, 400, 3);
+    let diagnosis = diagnose(&scene, &view, both(&theirs));
+    assert_eq!(diagnosis.mistakes, MistakeSet::NONE, "{diagnosis:?}");
+}
+
+#[test]
+fn a_mistake_beside_something_unknown_is_named_in_part() {
+    // Their colour image is flipped, and a block of it is painted over (a mistake outside the
+    // vocabulary): no set explains it all, the flip explains most.
+    let (scene, view) = every_mistake();
+    let set = MistakeSet::of(&[Mistake::FlippedVertically]);
+    let mut theirs = render_variant(&scene, &view, set);
+    for y in 0..view.height_px {
+        for x in 0..30 {
+            theirs.0.put_pixel(x, y, image::Rgb([255, 0, 255]));
+        }
+    }
+    let diagnosis = diagnose(&scene, &view, both(&theirs));
+    assert_eq!(diagnosis.mistakes, MistakeSet::NONE, "{diagnosis:?}");
+    assert_eq!(diagnosis.partial, set, "{diagnosis:?}");
+    // What is left is about the painted block (30 × 80 pixels), no more.
+    assert!(
+        (2_000..=2_400).contains(&diagnosis.differing_left),
+        "{diagnosis:?}"
+    );
+}
+
+#[test]
+fn two_mistakes_that_make_the_same_picture_are_both_offered_and_neither_named() {
+    // scene1_02 is symmetric: upside down and mirrored, it looks the same.
+    let scene = scene("scenes/scene1_02.txt");
+    let view = View::of_camera(&scene.camera, 120, 80, DepthRange::new(8.0, 12.0));
+    let theirs = render_variant(&scene, &view, MistakeSet::of(&[Mistake::FlippedVertically]));
+    let diagnosis = diagnose(
+        &scene,
+        &view,
+        Theirs {
+            colour: Some(&theirs.0),
+            depth: None,
+        },
+    );
+    assert_eq!(diagnosis.mistakes, MistakeSet::NONE, "{diagnosis:?}");
+    assert_eq!(diagnosis.partial, MistakeSet::NONE, "{diagnosis:?}");
+    assert_eq!(
+        diagnosis.alternatives,
+        [
+            MistakeSet::of(&[Mistake::FlippedVertically]),
+            MistakeSet::of(&[Mistake::Mirrored])
+        ],
+        "{diagnosis:?}"
+    );
 }

@@ -106,7 +106,7 @@ impl CompareReport {
         if words.is_empty() {
             let _ = writeln!(text, "diagnosis: none");
         }
-        for word in words {
+        for word in &words {
             let _ = writeln!(text, "diagnosis: {word}");
         }
         if !self.diagnosis.alternatives.is_empty() {
@@ -117,6 +117,19 @@ impl CompareReport {
                 .map(ToString::to_string)
                 .collect();
             let _ = writeln!(text, "diagnosis_ambiguous: {}", sets.join(" | "));
+        }
+        let partial = self.diagnosis.partial.mistakes();
+        for word in &partial {
+            let _ = writeln!(text, "diagnosis_partial: {word}");
+        }
+        if !self.matches() {
+            // What no word printed accounts for.
+            let unexplained = if words.is_empty() && partial.is_empty() {
+                self.diagnosis.differing_exact
+            } else {
+                self.diagnosis.differing_left
+            };
+            let _ = writeln!(text, "unexplained_pixels: {unexplained}");
         }
         text
     }

@@ -3,6 +3,11 @@
 //! ones best — only when it explains the difference: it leaves at most a tenth of the differing
 //! pixels and at most 1% of all, and every mistake in it is needed. Otherwise, or when two
 //! different sets explain the images equally well, nothing is named: never a guess.
+//!
+//! When no set explains the whole difference (a program can make a mistake outside the
+//! vocabulary), the best set is still given as a *partial* diagnosis when it explains more than
+//! half of the differing pixels, every mistake in it explains at least a tenth on its own, and no
+//! other set does as well; the pixels it leaves are counted as unexplained.
 
 use std::collections::HashMap;
 
@@ -33,6 +38,14 @@ const LEFT_SHARE_OF_DIFFERING: f64 = 0.1;
 /// Share of all compared pixels the named mistakes may leave unexplained.
 const LEFT_SHARE_OF_ALL: f64 = 0.01;
 
+/// Share of the exact render's differing pixels each mistake of a partial diagnosis must explain
+/// on its own (the pixels that differ again when it is left out).
+const PARTIAL_SHARE_EACH: f64 = 0.1;
+
+/// Share of the exact render's differing pixels a partial diagnosis must explain in all: more
+/// than half, so that what it names is most of the difference.
+const PARTIAL_SHARE_ALL: f64 = 0.5;
+
 /// What the diagnosis found.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Diagnosis {
@@ -44,6 +57,9 @@ pub struct Diagnosis {
     pub differing_left: usize,
     /// Other sets that explain the images exactly as well as the best one (then nothing is named).
     pub alternatives: Vec<MistakeSet>,
+    /// When no set explains the whole difference: the mistakes that explain part of it (see the
+    /// module docs); `differing_left` pixels stay unexplained.
+    pub partial: MistakeSet,
 }
 
 /// Renders and scores mistake sets, caching the hits of each hit-changing part.
@@ -96,6 +112,7 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
         differing_exact,
         differing_left: differing_exact,
         alternatives: Vec::new(),
+        partial: MistakeSet::NONE,
     };
     if differing_exact == 0 {
         return nothing;
@@ -144,8 +161,19 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
         && left as f64 <= LEFT_SHARE_OF_DIFFERING * differing_exact as f64
         && left as f64 <= LEFT_SHARE_OF_ALL * compared_pixels;
     if !explains {
+        // Part of the difference, each mistake needed for a real share of it, and no rival.
+        let each_needed = best.mistakes().iter().all(|&mistake| {
+            (search.score(best.without(mistake)) - left) as f64
+                >= PARTIAL_SHARE_EACH * differing_exact as f64
+        });
+        let rivalled = search.scores.iter().any(|(&set, &score)| {
+            set != best && !set.is_empty() && set.len() <= best.len() && score <= left
+        });
+        let explains_most = (left as f64) < (1.0 - PARTIAL_SHARE_ALL) * differing_exact as f64;
+        let partial = !best.is_empty() && each_needed && explains_most && !rivalled;
         return Diagnosis {
             differing_left: left,
+            partial: if partial { best } else { MistakeSet::NONE },
             ..nothing
         };
     }
@@ -165,6 +193,7 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
             differing_exact,
             differing_left: left,
             alternatives,
+            partial: MistakeSet::NONE,
         }
     } else {
         alternatives.insert(0, best);
