@@ -10,29 +10,29 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// One program of the corpus.
-pub struct Program {
-    pub name: String,
-    pub repository: String,
-    pub commit: String,
+pub(crate) struct Program {
+    pub(crate) name: String,
+    pub(crate) repository: String,
+    pub(crate) commit: String,
     /// Mistakes that show on the corpus's command lines.
-    pub visible: Vec<String>,
+    pub(crate) visible: Vec<String>,
     /// Mistakes in the code that change no pixel on them.
-    pub latent: Vec<String>,
-    pub independence: String,
+    pub(crate) latent: Vec<String>,
+    pub(crate) independence: String,
 }
 
 impl Program {
     /// Whether `word` is one of the program's mistakes.
-    pub fn makes(&self, word: &str) -> bool {
+    pub(crate) fn makes(&self, word: &str) -> bool {
         self.visible.iter().chain(&self.latent).any(|m| m == word)
     }
 }
 
 /// One image of each program: its file, the scene, and the depth range when it is a depth image.
-pub struct Image {
-    pub file: &'static str,
-    pub scene: &'static str,
-    pub depth_range: Option<(&'static str, &'static str)>,
+pub(crate) struct Image {
+    pub(crate) file: &'static str,
+    pub(crate) scene: &'static str,
+    pub(crate) depth_range: Option<(&'static str, &'static str)>,
 }
 
 const fn colour(file: &'static str, scene: &'static str) -> Image {
@@ -57,7 +57,7 @@ const fn depth(
 }
 
 /// The course's seven command lines at 200×200 and scene1_02 at 203×61.
-pub const IMAGES: [Image; 16] = [
+pub(crate) const IMAGES: [Image; 16] = [
     colour("output1_01.png", "scene1_01"),
     depth("depth1_01.png", "scene1_01", "9", "10"),
     colour("output1_02.png", "scene1_02"),
@@ -78,32 +78,32 @@ pub const IMAGES: [Image; 16] = [
 
 /// What the comparison of one image printed.
 #[derive(Debug, Default)]
-pub struct Outcome {
+pub(crate) struct Outcome {
     /// `diagnosis:` words (not `none`).
-    pub named: Vec<String>,
+    pub(crate) named: Vec<String>,
     /// `diagnosis_partial:` words.
-    pub partial: Vec<String>,
+    pub(crate) partial: Vec<String>,
     /// A `diagnosis_ambiguous:` line.
-    pub ambiguous: Option<String>,
+    pub(crate) ambiguous: Option<String>,
     /// `unexplained_pixels:`, when printed.
-    pub unexplained: Option<u64>,
+    pub(crate) unexplained: Option<u64>,
     /// `match: yes`.
-    pub matched: bool,
+    pub(crate) matched: bool,
 }
 
 impl Outcome {
     /// Every word the comparison put forward, in full or in part.
-    pub fn words(&self) -> impl Iterator<Item = &String> {
+    pub(crate) fn words(&self) -> impl Iterator<Item = &String> {
         self.named.iter().chain(&self.partial)
     }
 }
 
-pub fn root() -> PathBuf {
+pub(crate) fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).to_path_buf()
 }
 
 /// The programs of `tests/corpus/programs.tsv`.
-pub fn programs() -> Vec<Program> {
+pub(crate) fn programs() -> Vec<Program> {
     let table =
         std::fs::read_to_string(root().join("tests/corpus/programs.tsv")).expect("programs.tsv");
     let list = |cell: &str| {
@@ -130,7 +130,7 @@ pub fn programs() -> Vec<Program> {
 }
 
 /// Compares `program`'s `image` with the `raytracer` binary at `binary`.
-pub fn compare(binary: &Path, program: &Program, image: &Image) -> Outcome {
+pub(crate) fn compare(binary: &Path, program: &Program, image: &Image) -> Outcome {
     let root = root();
     let file = root
         .join("tests/corpus")
