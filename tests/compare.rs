@@ -107,6 +107,9 @@ fn every_pair_of_mistakes_is_named() {
     let mut ambiguous = Vec::new();
     for (index, first) in Mistake::ALL.into_iter().enumerate() {
         for second in Mistake::ALL.into_iter().skip(index + 1) {
+            if (first, second) == (Mistake::TminZero, Mistake::TminMinusOne) {
+                continue; // a program has one tmin: together they are tmin-zero's picture
+            }
             let set = MistakeSet::of(&[first, second]);
             let theirs = render_variant(&scene, &view, set);
             let diagnosis = diagnose(&scene, &view, both(&theirs));
@@ -124,7 +127,7 @@ fn every_pair_of_mistakes_is_named() {
         }
     }
     assert!(ambiguous.is_empty(), "ambiguous pairs: {ambiguous:?}");
-    assert_eq!(named, 78);
+    assert_eq!(named, 90);
 }
 
 #[test]

@@ -19,9 +19,10 @@ use corpus::{IMAGES, compare, programs};
 
 /// Words the diagnosis gives that the program does not make: (program, image, word).
 ///
-/// * kskun clamps hits to t > −1 (its `-FP_INFINITE` is the constant 1): a finite negative tmin,
-///   which the vocabulary lacks; on scene1_07, where spheres lie behind the camera centre, the
-///   nearest sets that come closest are tmin-zero with far-root.
+/// * kskun keeps a sphere's near root only at t ≥ −1 (its `-FP_INFINITE` is the constant 1),
+///   without square root: its depth image of scene1_07 is named right (pixel-corners,
+///   no-square-root, tmin-minus-one, 15 pixels left), but its colour image is explained as well by
+///   pixel-corners, tmin-zero and far-root (13 pixels left against the true set's 17).
 /// * dream4leo's scene1_07 colour image: last-wins is added beside its true pixel-corners and
 ///   tmin-zero (with pixel-corners undone, tmin-zero alone is named).
 const KNOWN_WRONG: [(&str, &str, &str); 3] = [

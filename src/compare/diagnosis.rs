@@ -32,6 +32,9 @@ pub struct Theirs<'a> {
 /// Largest set of mistakes the search grows to.
 const MAX_MISTAKES: usize = 4;
 
+/// How many of the best singles and pairs the search grows.
+const GROWN_SETS: usize = 8;
+
 /// Share of the exact render's differing pixels the named mistakes may leave unexplained.
 const LEFT_SHARE_OF_DIFFERING: f64 = 0.1;
 
@@ -126,21 +129,29 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
         }
     }
     let rank = |search: &mut Search<'_>, set: MistakeSet| (search.score(set), set.len(), set);
-    let mut best = candidates
+    let mut ranked: Vec<_> = candidates
         .iter()
         .map(|&set| rank(&mut search, set))
-        .min()
-        .map_or(MistakeSet::NONE, |(_, _, set)| set);
-    // Grow the best set while one more mistake explains more.
-    while best.len() < MAX_MISTAKES {
-        let grown = Mistake::ALL
-            .into_iter()
-            .filter(|m| !best.contains(*m))
-            .map(|m| rank(&mut search, best.with(m)))
-            .min();
-        match grown {
-            Some((score, _, set)) if score < search.score(best) => best = set,
-            _ => break,
+        .collect();
+    ranked.sort_unstable();
+    // Grow each of the best few sets while one more mistake explains more (the best pair is not
+    // always part of the best triple), and keep the best set grown.
+    let mut best = MistakeSet::NONE;
+    for &(_, _, start) in ranked.iter().take(GROWN_SETS) {
+        let mut set = start;
+        while set.len() < MAX_MISTAKES {
+            let grown = Mistake::ALL
+                .into_iter()
+                .filter(|m| !set.contains(*m))
+                .map(|m| rank(&mut search, set.with(m)))
+                .min();
+            match grown {
+                Some((score, _, bigger)) if score < search.score(set) => set = bigger,
+                _ => break,
+            }
+        }
+        if rank(&mut search, set) < rank(&mut search, best) {
+            best = set;
         }
     }
     // Keep only the mistakes that are needed.

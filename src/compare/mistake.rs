@@ -12,6 +12,10 @@ pub enum Mistake {
     NoSquareRoot,
     /// `tmin = 0`: what lies behind the camera centre is lost (or seen from inside).
     TminZero,
+    /// `tmin = −1`, a finite negative tmin (as from `-FP_INFINITE`, which is the constant 1, not
+    /// minus infinity): a sphere whose near root lies more than one unit behind the camera centre
+    /// is lost (its other root is not tried).
+    TminMinusOne,
     /// The larger root: the back of each sphere is seen.
     FarRoot,
     /// A non-square image stretched over the whole square screen instead of cropping it.
@@ -38,10 +42,11 @@ pub enum Mistake {
 
 impl Mistake {
     /// Every mistake, in the order the diagnosis prints them.
-    pub const ALL: [Self; 13] = [
+    pub const ALL: [Self; 14] = [
         Self::PixelCorners,
         Self::NoSquareRoot,
         Self::TminZero,
+        Self::TminMinusOne,
         Self::FarRoot,
         Self::Stretched,
         Self::FlippedVertically,
@@ -60,6 +65,7 @@ impl Mistake {
             Self::PixelCorners => "pixel-corners",
             Self::NoSquareRoot => "no-square-root",
             Self::TminZero => "tmin-zero",
+            Self::TminMinusOne => "tmin-minus-one",
             Self::FarRoot => "far-root",
             Self::Stretched => "stretched",
             Self::FlippedVertically => "flipped-vertically",
@@ -84,6 +90,9 @@ impl Mistake {
             Self::PixelCorners => "rays through pixel corners x/W instead of centres (x+½)/W",
             Self::NoSquareRoot => "t = w − (r² − d²) instead of w − √(r² − d²)",
             Self::TminZero => "tmin 0 instead of −∞: spheres behind the camera centre are lost",
+            Self::TminMinusOne => {
+                "tmin −1 instead of −∞: spheres more than 1 behind the camera centre are lost"
+            }
             Self::FarRoot => "the larger root: the back of each sphere is seen",
             Self::Stretched => "a non-square image stretched instead of cropped",
             Self::FlippedVertically => "rows written top-down without saying so in the file",
@@ -109,6 +118,7 @@ impl Mistake {
             Self::PixelCorners
                 | Self::NoSquareRoot
                 | Self::TminZero
+                | Self::TminMinusOne
                 | Self::FarRoot
                 | Self::Stretched
                 | Self::LastWins

@@ -176,10 +176,16 @@ fn sphere_t(w: f64, across_sq: f64, radius: f64, mistakes: MistakeSet) -> Option
     };
     let (near, far) = (w - half_chord, w + half_chord);
     let far_only = mistakes.contains(Mistake::FarRoot);
+    if mistakes.contains(Mistake::TminMinusOne) && !mistakes.contains(Mistake::TminZero) {
+        // The one root the program takes, kept only at t ≥ −1 (no second root tried).
+        let t = if far_only { far } else { near };
+        return (t >= -1.0).then_some(t);
+    }
     if mistakes.contains(Mistake::TminZero) {
-        if !far_only && near >= 0.0 {
+        let tmin = 0.0;
+        if !far_only && near >= tmin {
             Some(near)
-        } else if far >= 0.0 {
+        } else if far >= tmin {
             Some(far)
         } else {
             None
