@@ -227,3 +227,36 @@ fn against_the_exact_render_measures_the_chosen_quality_on_this_view() {
     harness.run_steps(2);
     assert!(harness.state().comparison().is_none());
 }
+
+#[test]
+fn a_mistake_beside_an_unknown_one_is_shown_in_part_with_the_unexplained_pixels() {
+    // Flipped, and a block painted over: the flip explains most of it, nothing all of it.
+    let folder = tempfile::tempdir().unwrap();
+    let scene = load_scene(&scene_file()).unwrap();
+    let view = View::of_camera(&scene.camera, 160, 120, DepthRange::new(6.0, 10.0));
+    let (mut colour, _) =
+        render_variant(&scene, &view, MistakeSet::of(&[Mistake::FlippedVertically]));
+    for y in 0..120 {
+        for x in 0..30 {
+            colour.put_pixel(x, y, image::Rgb([255, 0, 255]));
+        }
+    }
+    let path = folder.path().join("theirs.png");
+    colour.save(&path).unwrap();
+    let mut harness = viewer(Some(scene_file()));
+    settle(&mut harness);
+    compare_image(&mut harness, &path.display().to_string());
+    let comparison = harness.state().comparison().expect("a comparison");
+    assert!(comparison.diagnosis.is_empty());
+    assert_eq!(comparison.partial, ["flipped-vertically"]);
+    assert!(label_shown(
+        &harness,
+        "diagnosis: in part: flipped-vertically"
+    ));
+    let unexplained = comparison.unexplained_pixels;
+    assert!((2_000..=3_600).contains(&unexplained), "{unexplained}");
+    assert!(label_shown(
+        &harness,
+        &format!("unexplained pixels: {unexplained}")
+    ));
+}

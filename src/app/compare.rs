@@ -110,6 +110,10 @@ pub struct ComparisonPixels {
     pub diagnosis: Vec<&'static str>,
     /// Other sets that explain it as well (the diagnosis is then ambiguous).
     pub ambiguous: bool,
+    /// When nothing explains it all: the mistakes that explain part of it.
+    pub partial: Vec<&'static str>,
+    /// Differing pixels no word named accounts for.
+    pub unexplained_pixels: usize,
 }
 
 /// A comparison on screen.
@@ -219,6 +223,17 @@ pub fn compare_file(
             .map(crate::compare::Mistake::word)
             .collect(),
         ambiguous: !diagnosis.alternatives.is_empty(),
+        partial: diagnosis
+            .partial
+            .mistakes()
+            .into_iter()
+            .map(crate::compare::Mistake::word)
+            .collect(),
+        unexplained_pixels: if diagnosis.mistakes.is_empty() && diagnosis.partial.is_empty() {
+            diagnosis.differing_exact
+        } else {
+            diagnosis.differing_left
+        },
         theirs,
     })
 }
@@ -275,6 +290,8 @@ pub fn compare_quality(
         difference,
         diagnosis: Vec::new(),
         ambiguous: false,
+        partial: Vec::new(),
+        unexplained_pixels: 0,
     })
 }
 

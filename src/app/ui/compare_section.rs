@@ -138,6 +138,8 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
                     "none needed".to_owned()
                 } else if pixels.ambiguous {
                     "none (several explanations fit equally)".to_owned()
+                } else if !pixels.partial.is_empty() {
+                    format!("in part: {}", pixels.partial.join(", "))
                 } else {
                     "none (no known mistake explains it)".to_owned()
                 }
@@ -145,6 +147,9 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
                 pixels.diagnosis.join(", ")
             };
             ui.label(RichText::new(format!("diagnosis: {diagnosis}")).strong());
+            if !matches {
+                ui.label(format!("unexplained pixels: {}", pixels.unexplained_pixels));
+            }
         }
         CompareSource::Quality(figures) => {
             ui.label(format!(
