@@ -154,12 +154,9 @@ impl CompareState {
 
 /// Reads an image file to compare (any size; TGA, PNG and what else the `image` crate reads).
 pub fn read_their_image(path: &Path) -> Result<RgbImage, String> {
-    let image = image::ImageReader::open(path)
-        .and_then(image::ImageReader::with_guessed_format)
-        .map_err(|error| format!("cannot read '{}': {error}", path.display()))?
-        .decode()
-        .map_err(|error| format!("cannot read the image '{}': {error}", path.display()))?;
-    Ok(image.to_rgb8())
+    let bytes = std::fs::read(path)
+        .map_err(|error| format!("cannot read '{}': {error}", path.display()))?;
+    decode_their_image(path, &bytes)
 }
 
 /// Decodes the image `bytes` named `name` (the format by the name's extension, as for a file,
@@ -229,11 +226,7 @@ pub fn compare_file(
             .into_iter()
             .map(crate::compare::Mistake::word)
             .collect(),
-        unexplained_pixels: if diagnosis.mistakes.is_empty() && diagnosis.partial.is_empty() {
-            diagnosis.differing_exact
-        } else {
-            diagnosis.differing_left
-        },
+        unexplained_pixels: diagnosis.unexplained_pixels(),
         theirs,
     })
 }

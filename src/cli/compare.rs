@@ -123,13 +123,11 @@ impl CompareReport {
             let _ = writeln!(text, "diagnosis_partial: {word}");
         }
         if !self.matches() {
-            // What no word printed accounts for.
-            let unexplained = if words.is_empty() && partial.is_empty() {
-                self.diagnosis.differing_exact
-            } else {
-                self.diagnosis.differing_left
-            };
-            let _ = writeln!(text, "unexplained_pixels: {unexplained}");
+            let _ = writeln!(
+                text,
+                "unexplained_pixels: {}",
+                self.diagnosis.unexplained_pixels()
+            );
         }
         text
     }

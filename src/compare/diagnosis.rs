@@ -65,6 +65,18 @@ pub struct Diagnosis {
     pub partial: MistakeSet,
 }
 
+impl Diagnosis {
+    /// The differing pixels no named mistake accounts for: all of them when nothing is named,
+    /// in full or in part.
+    pub fn unexplained_pixels(&self) -> usize {
+        if self.mistakes.is_empty() && self.partial.is_empty() {
+            self.differing_exact
+        } else {
+            self.differing_left
+        }
+    }
+}
+
 /// Renders and scores mistake sets, caching the hits of each hit-changing part.
 struct Search<'a> {
     scene: &'a Scene,
