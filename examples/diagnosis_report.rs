@@ -27,6 +27,8 @@ fn verdict(program: &Program, outcome: &Outcome) -> &'static str {
         "named"
     } else if !outcome.partial.is_empty() {
         "partial"
+    } else if outcome.ambiguous.is_some() {
+        "ambiguous"
     } else {
         "unexplained"
     }
@@ -53,7 +55,7 @@ fn main() {
             let mut words: Vec<String> = outcome.named.clone();
             words.extend(outcome.partial.iter().map(|w| format!("{w} (partial)")));
             if let Some(sets) = &outcome.ambiguous {
-                words.push(format!("ambiguous: {sets}"));
+                words.push(format!("ambiguous: {}", sets.replace('|', "\\|")));
             }
             let _ = writeln!(
                 rows,
@@ -122,7 +124,7 @@ fn main() {
         programs.len()
     );
     let _ = writeln!(text, "## Totals\n\n| verdict | images |\n|---|---|");
-    for verdict in ["match", "named", "partial", "unexplained", "wrong"] {
+    for verdict in ["match", "named", "partial", "ambiguous", "unexplained", "wrong"] {
         let _ = writeln!(
             text,
             "| {verdict} | {} |",
@@ -133,7 +135,8 @@ fn main() {
     let _ = writeln!(
         text,
         "*named*: every word printed is one the program makes; *partial*: only \
-         `diagnosis_partial` words, all true; *unexplained*: no word, the differing pixels \
+         `diagnosis_partial` words, all true; *ambiguous*: no word, two or more sets offered \
+         (`diagnosis_ambiguous`) that explain the images equally well; *unexplained*: no word, the differing pixels \
          counted; *wrong*: a word the program does not make; *match*: the course's rule holds.\n"
     );
     let _ = writeln!(

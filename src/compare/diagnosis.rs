@@ -1,8 +1,10 @@
 //! Naming the mistakes behind a picture: render the scene with each known mistake and each pair
 //! (and grow the best set one mistake at a time), and report the set whose images match the given
 //! ones best — only when it explains the difference: it leaves at most a tenth of the differing
-//! pixels and at most 1% of all, and every mistake in it is needed. Otherwise, or when two
-//! different sets explain the images equally well, nothing is named: never a guess.
+//! pixels and at most 1% of all, and every mistake in it is needed (it explains more than 1% of
+//! the differing pixels: a word that moves a pixel or two is noise, not evidence). Otherwise, or
+//! when another set explains the images as well or within 1% of the differing pixels, nothing is
+//! named: never a guess.
 //!
 //! When no set explains the whole difference (a program can make a mistake outside the
 //! vocabulary), the best set is still given as a *partial* diagnosis when it explains more than
@@ -40,6 +42,14 @@ const LEFT_SHARE_OF_DIFFERING: f64 = 0.1;
 
 /// Share of all compared pixels the named mistakes may leave unexplained.
 const LEFT_SHARE_OF_ALL: f64 = 0.01;
+
+/// Share of the exact render's differing pixels each named mistake must explain on its own (the
+/// pixels that differ again when it is left out); one pixel at least.
+const NEEDED_SHARE: f64 = 0.01;
+
+/// Another set whose pixels left are within this share of the exact render's differing pixels of
+/// the best set's is a rival: the two explain the images equally well.
+const NEAR_SHARE: f64 = 0.01;
 
 /// Share of the exact render's differing pixels each mistake of a partial diagnosis must explain
 /// on its own (the pixels that differ again when it is left out).
@@ -87,6 +97,27 @@ struct Search<'a> {
 }
 
 impl Search<'_> {
+    /// `set` without the mistakes it does not need: each left explains more than
+    /// [`NEEDED_SHARE`] of the `differing_exact` pixels (one at least) on its own. The cheapest to
+    /// leave out goes first.
+    fn needed(&mut self, mut set: MistakeSet, differing_exact: usize) -> MistakeSet {
+        let needed_px = (NEEDED_SHARE * differing_exact as f64).max(1.0);
+        loop {
+            let score = self.score(set);
+            let cheapest = set
+                .mistakes()
+                .into_iter()
+                .map(|mistake| (self.score(set.without(mistake)), mistake))
+                .min();
+            match cheapest {
+                Some((without, mistake)) if (without as f64 - score as f64) < needed_px => {
+                    set = set.without(mistake);
+                }
+                _ => return set,
+            }
+        }
+    }
+
     /// Pixels the images of `mistakes` differ in from theirs.
     fn score(&mut self, mistakes: MistakeSet) -> usize {
         if let Some(&score) = self.scores.get(&mistakes) {
@@ -166,17 +197,7 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
             best = set;
         }
     }
-    // Keep only the mistakes that are needed.
-    let mut pruned = true;
-    while pruned {
-        pruned = false;
-        for mistake in best.mistakes() {
-            if search.score(best.without(mistake)) <= search.score(best) {
-                best = best.without(mistake);
-                pruned = true;
-            }
-        }
-    }
+    let best = search.needed(best, differing_exact);
     let left = search.score(best);
     let compared_pixels = (u64::from(view.width_px) * u64::from(view.height_px)) as f64
         * f64::from(u8::from(theirs.colour.is_some()) + u8::from(theirs.depth.is_some()));
@@ -200,15 +221,29 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
             ..nothing
         };
     }
-    // Another set of the same size that explains the images as well makes the answer ambiguous.
-    let alternatives: Vec<MistakeSet> = search
+    // Another set, no larger, that explains the images as well (within [`NEAR_SHARE`] of the
+    // differing pixels) makes the answer ambiguous. Sets that hold the best one only add
+    // mistakes it does not need.
+    let near = left + (NEAR_SHARE * differing_exact as f64) as usize;
+    let mut close: Vec<MistakeSet> = search
         .scores
         .iter()
-        .filter(|&(&set, &score)| set != best && set.len() <= best.len() && score <= left)
+        .filter(|&(&set, &score)| score <= near && !set.is_empty() && !set.includes(best))
         .map(|(&set, _)| set)
-        .filter(|set| !set.is_empty())
         .collect();
-    let mut alternatives = alternatives;
+    close.sort_unstable();
+    let mut alternatives = Vec::new();
+    for set in close {
+        let set = search.needed(set, differing_exact);
+        if set != best
+            && !set.is_empty()
+            && set.len() <= best.len()
+            && search.score(set) <= near
+            && !alternatives.contains(&set)
+        {
+            alternatives.push(set);
+        }
+    }
     alternatives.sort();
     if alternatives.is_empty() {
         Diagnosis {

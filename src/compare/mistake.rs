@@ -173,6 +173,11 @@ impl MistakeSet {
         self.0.count_ones() as usize
     }
 
+    /// Whether every mistake of `other` is in the set.
+    pub fn includes(self, other: Self) -> bool {
+        self.0 & other.0 == other.0
+    }
+
     /// Whether the set is empty.
     pub fn is_empty(self) -> bool {
         self.0 == 0
