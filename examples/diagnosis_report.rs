@@ -124,7 +124,14 @@ fn main() {
         programs.len()
     );
     let _ = writeln!(text, "## Totals\n\n| verdict | images |\n|---|---|");
-    for verdict in ["match", "named", "partial", "ambiguous", "unexplained", "wrong"] {
+    for verdict in [
+        "match",
+        "named",
+        "partial",
+        "ambiguous",
+        "unexplained",
+        "wrong",
+    ] {
         let _ = writeln!(
             text,
             "| {verdict} | {} |",

@@ -132,12 +132,14 @@ fn gallery() {
                 theirs: &theirs.0,
                 exact: &exact.0,
                 difference: &colour_difference,
+                unexplained: None,
             },
             Row {
                 kind: "depth",
                 theirs: &theirs.1,
                 exact: &exact.1,
                 difference: &depth_difference,
+                unexplained: None,
             },
         ]);
         let path = format!("docs/mistakes/{mistake}.png");

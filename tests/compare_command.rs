@@ -202,9 +202,9 @@ fn the_difference_picture_shows_theirs_the_exact_image_and_the_heat_map() {
     let picture = image::open(folder.path().join("diff.png"))
         .unwrap()
         .to_rgb8();
-    // 120-pixel images are drawn twice as large (panels at least 200 wide): three panels and
-    // four gaps of 8 across; two rows (colour, depth).
-    assert_eq!(picture.width(), 3 * 240 + 4 * 8);
+    // 120-pixel images are drawn twice as large (panels at least 200 wide): four panels (theirs,
+    // exact, heat map, unexplained) and five gaps of 8 across; two rows (colour, depth).
+    assert_eq!(picture.width(), 4 * 240 + 5 * 8);
     let theirs: RgbImage = image::open(folder.path().join("colour.png"))
         .unwrap()
         .to_rgb8();
@@ -230,6 +230,56 @@ fn the_difference_picture_shows_theirs_the_exact_image_and_the_heat_map() {
         4 * differing,
         "each differing pixel is 2×2 in the heat map"
     );
+}
+
+#[test]
+fn the_difference_picture_shows_where_the_unexplained_pixels_are() {
+    // Flipped, and a block of the colour image painted over: the flip is named in part, and the
+    // fourth panel draws the block's differing pixels cyan and the flip's grey.
+    let folder = tempfile::tempdir().unwrap();
+    write_mistaken(
+        folder.path(),
+        MistakeSet::of(&[Mistake::FlippedVertically]),
+        "png",
+    );
+    let colour_path = folder.path().join("colour.png");
+    let mut colour = image::open(&colour_path).unwrap().to_rgb8();
+    for y in 0..80 {
+        for x in 90..120 {
+            colour.put_pixel(x, y, image::Rgb([255, 0, 255]));
+        }
+    }
+    colour.save(&colour_path).unwrap();
+    let output = compare(folder.path(), "png", &["-diff", "diff.png"]);
+    assert_eq!(output.status.code(), Some(3), "{}", stderr(&output));
+    assert!(
+        stdout(&output).contains("diagnosis_partial: flipped-vertically"),
+        "{}",
+        stdout(&output)
+    );
+    let unexplained: usize = value(&output, "unexplained_pixels").parse().unwrap();
+    assert!(unexplained > 1000, "{unexplained}");
+    let picture = image::open(folder.path().join("diff.png"))
+        .unwrap()
+        .to_rgb8();
+    let (panel_top, mask_left) = (8 + 14, 8 + 3 * (240 + 8));
+    let cyan = [0, 230, 255];
+    let mut in_block = 0;
+    let mut grey = 0;
+    for x in 0..240 {
+        for y in 0..160 {
+            match picture.get_pixel(mask_left + x, panel_top + y).0 {
+                pixel if pixel == cyan => {
+                    assert!(x >= 180, "cyan outside the block at ({x}, {y})");
+                    in_block += 1;
+                }
+                [90, 90, 90] => grey += 1,
+                _ => {}
+            }
+        }
+    }
+    assert_eq!(in_block, 4 * unexplained, "each pixel is 2×2");
+    assert!(grey > 0, "the flip's pixels are drawn as explained");
 }
 
 #[test]

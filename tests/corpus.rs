@@ -16,7 +16,6 @@ use raytracer::compare::Mistake;
 
 use corpus::{IMAGES, compare, programs};
 
-
 #[test]
 fn the_corpus_gets_no_wrong_word_and_its_known_mistakes_named() {
     let binary = Path::new(env!("CARGO_BIN_EXE_raytracer"));
@@ -51,7 +50,11 @@ fn the_corpus_gets_no_wrong_word_and_its_known_mistakes_named() {
         }
     }
     assert_eq!(compared, programs.len() * IMAGES.len());
-    assert_eq!(wrong, Vec::<String>::new(), "words the programs do not make");
+    assert_eq!(
+        wrong,
+        Vec::<String>::new(),
+        "words the programs do not make"
+    );
     assert_eq!(
         missed,
         Vec::<String>::new(),

@@ -257,6 +257,36 @@ fn a_mistake_beside_an_unknown_one_is_shown_in_part_with_the_unexplained_pixels(
     assert!((2_000..=3_600).contains(&unexplained), "{unexplained}");
     assert!(label_shown(
         &harness,
-        &format!("unexplained pixels: {unexplained}")
+        &format!("unexplained pixels: {unexplained} (cyan in the difference)")
     ));
+    // They are marked where they are: in the painted block, none outside it.
+    let flags = comparison
+        .unexplained
+        .clone()
+        .expect("the unexplained pixels' places");
+    let flagged = |inside: bool| {
+        (0..160 * 120)
+            .filter(|&i| flags[i] && ((i % 160) < 30) == inside)
+            .count()
+    };
+    assert_eq!(flagged(true), unexplained);
+    assert_eq!(flagged(false), 0);
+    // The probe says so over a pixel of the block, and not over one the flip explains.
+    let image = harness.get_by_label("colour image").rect();
+    let fit = (image.width() / 160.0).min(image.height() / 120.0);
+    let block = (0..160 * 120).find(|&i| flags[i]).unwrap();
+    let explained = (0..160 * 120)
+        .find(|&i| !flags[i] && comparison.difference.per_pixel[i] > 0)
+        .unwrap();
+    for (index, marked) in [(block, true), (explained, false)] {
+        let (x, row) = ((index % 160) as f32, (index / 160) as f32);
+        harness.hover_at(image.min + vec2((x + 0.5) * fit, (row + 0.5) * fit));
+        harness.run_steps(3);
+        assert!(label_shown(&harness, "off by"), "no probe line");
+        assert_eq!(
+            label_shown(&harness, "· unexplained"),
+            marked,
+            "pixel {index}"
+        );
+    }
 }

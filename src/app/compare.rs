@@ -21,7 +21,7 @@ use image::RgbImage;
 use super::ViewerApp;
 use super::status::Status;
 use super::tasks::{Poll, Task};
-use crate::compare::picture::heat_map;
+use crate::compare::picture::{heat_map, heat_map_marked};
 use crate::compare::{Difference, Theirs, diagnose};
 use crate::render::sampling::Sampling;
 use crate::render::{Quality, View, render_with};
@@ -114,6 +114,9 @@ pub struct ComparisonPixels {
     pub partial: Vec<&'static str>,
     /// Differing pixels no word named accounts for.
     pub unexplained_pixels: usize,
+    /// Where they are, when a word was named in full or in part (one flag per pixel, row by row
+    /// from the top): drawn cyan over the heat map.
+    pub unexplained: Option<Vec<bool>>,
 }
 
 /// A comparison on screen.
@@ -207,6 +210,14 @@ pub fn compare_file(
         },
     };
     let diagnosis = diagnose(scene, &view, given);
+    let unexplained = if diagnosis.put_forward().is_empty() {
+        None
+    } else {
+        match kind {
+            ImageKind::Colour => diagnosis.unexplained.colour.clone(),
+            ImageKind::Depth => diagnosis.unexplained.depth.clone(),
+        }
+    };
     Ok(ComparisonPixels {
         source: CompareSource::File(path.to_path_buf()),
         kind,
@@ -227,6 +238,7 @@ pub fn compare_file(
             .map(crate::compare::Mistake::word)
             .collect(),
         unexplained_pixels: diagnosis.unexplained_pixels(),
+        unexplained,
         theirs,
     })
 }
@@ -285,6 +297,7 @@ pub fn compare_quality(
         ambiguous: false,
         partial: Vec::new(),
         unexplained_pixels: 0,
+        unexplained: None,
     })
 }
 
@@ -396,7 +409,10 @@ impl ViewerApp {
         );
         let heat_texture = self.ctx.load_texture(
             "compare heat",
-            to_colour_image(&heat_map(&pixels.difference)),
+            to_colour_image(&match &pixels.unexplained {
+                Some(unexplained) => heat_map_marked(&pixels.difference, unexplained),
+                None => heat_map(&pixels.difference),
+            }),
             TextureOptions::NEAREST,
         );
         if first || matches!(pixels.source, CompareSource::Quality(_)) {
@@ -445,11 +461,17 @@ impl ViewerApp {
             CompareSource::File(_) => "theirs",
             CompareSource::Quality(_) => "chosen",
         };
+        let index = (row * width + x) as usize;
+        let unexplained = pixels
+            .unexplained
+            .as_ref()
+            .is_some_and(|flags| flags.get(index).copied().unwrap_or(false));
         Some(format!(
-            "{name} {} · exact {} · off by {}",
+            "{name} {} · exact {} · off by {}{}",
             rgb(&pixels.theirs),
             rgb(&pixels.exact),
-            pixels.difference.per_pixel[(row * width + x) as usize]
+            pixels.difference.per_pixel[index],
+            if unexplained { " · unexplained" } else { "" }
         ))
     }
 }

@@ -223,9 +223,21 @@ pub(crate) fn compare(
     );
     let picture = compare.diff.as_ref().map(|_| {
         let mut rows = Vec::new();
-        for (kind, theirs, exact, difference) in [
-            ("colour", &theirs.colour, &exact_colour, &colour),
-            ("depth", &theirs.depth, &exact_depth, &depth),
+        for (kind, theirs, exact, difference, unexplained) in [
+            (
+                "colour",
+                &theirs.colour,
+                &exact_colour,
+                &colour,
+                &diagnosis.unexplained.colour,
+            ),
+            (
+                "depth",
+                &theirs.depth,
+                &exact_depth,
+                &depth,
+                &diagnosis.unexplained.depth,
+            ),
         ] {
             if let (Some(theirs), Some(exact), Some(difference)) = (theirs, exact, difference) {
                 rows.push(Row {
@@ -233,6 +245,7 @@ pub(crate) fn compare(
                     theirs,
                     exact,
                     difference,
+                    unexplained: unexplained.as_deref(),
                 });
             }
         }

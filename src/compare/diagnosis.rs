@@ -59,6 +59,16 @@ const PARTIAL_SHARE_EACH: f64 = 0.1;
 /// than half, so that what it names is most of the difference.
 const PARTIAL_SHARE_ALL: f64 = 0.5;
 
+/// Where the differing pixels lie that no named mistake accounts for: one flag per pixel, row
+/// by row from the top, for each image given.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Unexplained {
+    /// In the colour image (any level differs).
+    pub colour: Option<Vec<bool>>,
+    /// In the depth image (more than one level differs).
+    pub depth: Option<Vec<bool>>,
+}
+
 /// What the diagnosis found.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Diagnosis {
@@ -73,9 +83,20 @@ pub struct Diagnosis {
     /// When no set explains the whole difference: the mistakes that explain part of it (see the
     /// module docs); `differing_left` pixels stay unexplained.
     pub partial: MistakeSet,
+    /// Where the [`Self::unexplained_pixels`] are.
+    pub unexplained: Unexplained,
 }
 
 impl Diagnosis {
+    /// The mistakes the answer puts forward, in full or in part (none when ambiguous).
+    pub fn put_forward(&self) -> MistakeSet {
+        if self.mistakes.is_empty() {
+            self.partial
+        } else {
+            self.mistakes
+        }
+    }
+
     /// The differing pixels no named mistake accounts for: all of them when nothing is named,
     /// in full or in part.
     pub fn unexplained_pixels(&self) -> usize {
@@ -118,6 +139,33 @@ impl Search<'_> {
         }
     }
 
+    /// Where the images of `mistakes` differ from theirs.
+    fn unexplained(&mut self, mistakes: MistakeSet) -> Unexplained {
+        let (scene, view, theirs) = (self.scene, self.view, self.theirs);
+        let hit_part = mistakes.hit_part();
+        let hits = self
+            .hits
+            .entry(hit_part)
+            .or_insert_with(|| render_hits(scene, view, hit_part));
+        let flags = |difference: Difference, levels: u8| {
+            difference.per_pixel.iter().map(|&d| d > levels).collect()
+        };
+        Unexplained {
+            colour: theirs.colour.map(|theirs| {
+                flags(
+                    Difference::of(&colour_image(scene, hits, mistakes), theirs),
+                    0,
+                )
+            }),
+            depth: theirs.depth.map(|theirs| {
+                flags(
+                    Difference::of(&depth_image(view, hits, mistakes), theirs),
+                    1,
+                )
+            }),
+        }
+    }
+
     /// Pixels the images of `mistakes` differ in from theirs.
     fn score(&mut self, mistakes: MistakeSet) -> usize {
         if let Some(&score) = self.scores.get(&mistakes) {
@@ -143,7 +191,7 @@ impl Search<'_> {
 }
 
 /// Names the mistakes that explain how `theirs` differs from the exact picture of `scene`
-/// through `view` (see the module docs).
+/// through `view` (see the module docs), and says where the pixels they leave are.
 pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
     let mut search = Search {
         scene,
@@ -152,6 +200,14 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
         hits: HashMap::new(),
         scores: HashMap::new(),
     };
+    let mut diagnosis = find(&mut search);
+    diagnosis.unexplained = search.unexplained(diagnosis.put_forward());
+    diagnosis
+}
+
+/// The search behind [`diagnose`], without the unexplained pixels' places.
+fn find(search: &mut Search<'_>) -> Diagnosis {
+    let (view, theirs) = (search.view, search.theirs);
     let differing_exact = search.score(MistakeSet::NONE);
     let nothing = Diagnosis {
         mistakes: MistakeSet::NONE,
@@ -159,6 +215,7 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
         differing_left: differing_exact,
         alternatives: Vec::new(),
         partial: MistakeSet::NONE,
+        unexplained: Unexplained::default(),
     };
     if differing_exact == 0 {
         return nothing;
@@ -172,10 +229,7 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
         }
     }
     let rank = |search: &mut Search<'_>, set: MistakeSet| (search.score(set), set.len(), set);
-    let mut ranked: Vec<_> = candidates
-        .iter()
-        .map(|&set| rank(&mut search, set))
-        .collect();
+    let mut ranked: Vec<_> = candidates.iter().map(|&set| rank(search, set)).collect();
     ranked.sort_unstable();
     // Grow each of the best few sets while one more mistake explains more (the best pair is not
     // always part of the best triple), and keep the best set grown.
@@ -186,14 +240,14 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
             let grown = Mistake::ALL
                 .into_iter()
                 .filter(|m| !set.contains(*m))
-                .map(|m| rank(&mut search, set.with(m)))
+                .map(|m| rank(search, set.with(m)))
                 .min();
             match grown {
                 Some((score, _, bigger)) if score < search.score(set) => set = bigger,
                 _ => break,
             }
         }
-        if rank(&mut search, set) < rank(&mut search, best) {
+        if rank(search, set) < rank(search, best) {
             best = set;
         }
     }
@@ -252,6 +306,7 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
             differing_left: left,
             alternatives,
             partial: MistakeSet::NONE,
+            unexplained: Unexplained::default(),
         }
     } else {
         alternatives.insert(0, best);

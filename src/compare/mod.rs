@@ -12,7 +12,7 @@ pub mod mistake;
 pub mod picture;
 pub mod variant;
 
-pub use diagnosis::{Diagnosis, Theirs, diagnose};
+pub use diagnosis::{Diagnosis, Theirs, Unexplained, diagnose};
 pub use difference::Difference;
 pub use mistake::{Mistake, MistakeSet};
 pub use variant::render_variant;

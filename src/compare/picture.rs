@@ -1,6 +1,6 @@
-//! The difference picture (`-diff`): for each compared image a row of their image, the exact one
-//! and a heat map of the difference, with a title over each, and a legend of the heat map's
-//! colours under them. Small images are enlarged (nearest neighbour) so the text fits.
+//! The difference picture (`-diff`): for each compared image a row of their image, the exact one,
+//! a heat map of the difference and, after a diagnosis, where the pixels are that no named mistake
+//! explains, with a title over each, and a legend of the heat map's colours under them. Small images are enlarged (nearest neighbour) so the text fits.
 
 use image::{Rgb, RgbImage};
 
@@ -17,6 +17,9 @@ pub struct Row<'a> {
     pub exact: &'a RgbImage,
     /// How they differ.
     pub difference: &'a Difference,
+    /// After a diagnosis: the differing pixels no named mistake explains (one flag per pixel,
+    /// row by row), drawn in a fourth panel.
+    pub unexplained: Option<&'a [bool]>,
 }
 
 /// Space between and around the panels, pixels.
@@ -43,6 +46,40 @@ pub fn heat_colour(levels: u8) -> [u8; 3] {
     let share = 0.3 + 0.7 * f64::from(levels - 1) / 254.0;
     let colour = colorous::INFERNO.eval_continuous(share);
     [colour.r, colour.g, colour.b]
+}
+
+/// Where a differing pixel no named mistake explains is drawn, in the unexplained panel and over
+/// the viewer's heat map: cyan, a colour the heat map never takes.
+pub const UNEXPLAINED: [u8; 3] = [0, 230, 255];
+
+/// Where a differing pixel a named mistake explains is drawn in the unexplained panel.
+const EXPLAINED: [u8; 3] = [90, 90, 90];
+
+/// The unexplained panel: black where the images agree, grey where a named mistake explains the
+/// difference, [`UNEXPLAINED`] where none does.
+pub fn unexplained_map(difference: &Difference, unexplained: &[bool]) -> RgbImage {
+    RgbImage::from_fn(difference.width_px, difference.height_px, |x, y| {
+        let index = (y * difference.width_px + x) as usize;
+        Rgb(if unexplained.get(index).copied().unwrap_or(false) {
+            UNEXPLAINED
+        } else if difference.per_pixel[index] > 0 {
+            EXPLAINED
+        } else {
+            [0, 0, 0]
+        })
+    })
+}
+
+/// The heat map of `difference`, with the pixels flagged in `unexplained` drawn in
+/// [`UNEXPLAINED`].
+pub fn heat_map_marked(difference: &Difference, unexplained: &[bool]) -> RgbImage {
+    let mut map = heat_map(difference);
+    for (pixel, &flag) in map.pixels_mut().zip(unexplained) {
+        if flag {
+            *pixel = Rgb(UNEXPLAINED);
+        }
+    }
+    map
 }
 
 /// The heat map of `difference`.
@@ -75,26 +112,39 @@ pub fn difference_picture(rows: &[Row<'_>]) -> RgbImage {
     let (width, height) = first.theirs.dimensions();
     let scale = MIN_PANEL_PX.div_ceil(width.max(1)).max(1);
     let (panel_w, panel_h) = (width * scale, height * scale);
-    let picture_w = 3 * panel_w + 4 * GAP_PX;
+    let columns = if rows.iter().any(|row| row.unexplained.is_some()) {
+        4
+    } else {
+        3
+    };
+    let picture_w = columns * panel_w + (columns + 1) * GAP_PX;
     let row_h = TITLE_PX + panel_h + GAP_PX;
-    let legend_h = TITLE_PX + 12 + GAP_PX;
+    let legend_h = TITLE_PX + 12 + GAP_PX + if columns == 4 { TITLE_PX } else { 0 };
     let picture_h = GAP_PX + rows.len() as u32 * row_h + legend_h;
     let mut picture = RgbImage::from_pixel(picture_w, picture_h, BACKGROUND);
     for (index, row) in (0u32..).zip(rows) {
         let top = GAP_PX + index * row_h;
         let heat = heat_map(row.difference);
-        let titles = [
-            format!("{}: theirs", row.kind),
-            "exact".to_owned(),
-            format!(
-                "{} px differ, max {}",
-                row.difference.pixels_differing(),
-                row.difference.max_difference()
+        let mut panels = vec![
+            (row.theirs.clone(), format!("{}: theirs", row.kind)),
+            (row.exact.clone(), "exact".to_owned()),
+            (
+                heat,
+                format!(
+                    "{} px differ, max {}",
+                    row.difference.pixels_differing(),
+                    row.difference.max_difference()
+                ),
             ),
         ];
-        for (column, (image, title)) in
-            (0u32..).zip([row.theirs, row.exact, &heat].iter().zip(&titles))
-        {
+        if let Some(unexplained) = row.unexplained {
+            let count = unexplained.iter().filter(|&&flag| flag).count();
+            panels.push((
+                unexplained_map(row.difference, unexplained),
+                format!("unexplained: {count} px"),
+            ));
+        }
+        for (column, (image, title)) in (0u32..).zip(&panels) {
             let left = GAP_PX + column * (panel_w + GAP_PX);
             draw_text(&mut picture, title, left, top + 2, 1, TEXT);
             image::imageops::replace(
@@ -133,6 +183,20 @@ pub fn difference_picture(rows: &[Row<'_>]) -> RgbImage {
         1,
         TEXT,
     );
+    if columns == 4 {
+        let line_top = bar_top + 12 + 4;
+        let mut left = GAP_PX;
+        for (text, colour) in [
+            ("unexplained panel: ", TEXT),
+            ("grey", Rgb(EXPLAINED)),
+            (" explained by the words named, ", TEXT),
+            ("cyan", Rgb(UNEXPLAINED)),
+            (" not", TEXT),
+        ] {
+            draw_text(&mut picture, text, left, line_top, 1, colour);
+            left += text_width(text, 1);
+        }
+    }
     picture
 }
 
@@ -166,6 +230,7 @@ mod tests {
             theirs: &theirs,
             exact: &exact,
             difference: &difference,
+            unexplained: None,
         }]);
         let panel_top = GAP_PX + TITLE_PX;
         let column_left = |column: u32| GAP_PX + column * (200 + GAP_PX);

@@ -148,7 +148,15 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
             };
             ui.label(RichText::new(format!("diagnosis: {diagnosis}")).strong());
             if !matches {
-                ui.label(format!("unexplained pixels: {}", pixels.unexplained_pixels));
+                let marked = if pixels.unexplained.is_some() && pixels.unexplained_pixels > 0 {
+                    " (cyan in the difference)"
+                } else {
+                    ""
+                };
+                ui.label(format!(
+                    "unexplained pixels: {}{marked}",
+                    pixels.unexplained_pixels
+                ));
             }
         }
         CompareSource::Quality(figures) => {
