@@ -14,7 +14,7 @@ mod corpus;
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
 
-use corpus::{IMAGES, Outcome, Program, compare, programs, root};
+use corpus::{IMAGES, Outcome, Program, compare, infer_range, programs, root};
 use raytracer::compare::Mistake;
 
 /// How one image's diagnosis fares against the program's mistakes.
@@ -57,9 +57,12 @@ fn main() {
             if let Some(sets) = &outcome.ambiguous {
                 words.push(format!("ambiguous: {}", sets.replace('|', "\\|")));
             }
+            let range = image.depth_range.map_or("—".to_owned(), |(min, max)| {
+                format!("{} ({min} {max})", infer_range(&binary, program, image))
+            });
             let _ = writeln!(
                 rows,
-                "| {} | {} | {} | {} | {} |",
+                "| {} | {} | {range} | {} | {} | {} |",
                 program.name,
                 image.file,
                 if words.is_empty() {
@@ -153,7 +156,10 @@ fn main() {
     );
     let _ = writeln!(
         text,
-        "## Every image\n\n| program | image | words | unexplained pixels | verdict |\n|---|---|---|---|---|\n{rows}"
+        "## Every image\n\nThe depth range is the one read back from the image alone (`-compare_depth FILE`, \
+         `depth_range_inferred:`), with the command line's in brackets.\n\n\
+         | program | image | depth range read back | words | unexplained pixels | verdict |\n\
+         |---|---|---|---|---|---|\n{rows}"
     );
     std::fs::write(&out, text).expect("writes the report");
     println!("wrote {out}");

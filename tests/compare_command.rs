@@ -283,6 +283,66 @@ fn the_difference_picture_shows_where_the_unexplained_pixels_are() {
 }
 
 #[test]
+fn a_depth_image_without_its_range_is_compared_over_the_range_it_was_made_over() {
+    // Made over 6.3 … 10.7 (not the course's numbers) and upside down: the range is read back
+    // from the image, the comparison uses it, and the flip is named.
+    let folder = tempfile::tempdir().unwrap();
+    let scene = load_scene(&path(SCENE)).unwrap();
+    let view = View::of_camera(&scene.camera, 120, 80, DepthRange::new(6.3, 10.7));
+    let (_, depth) = render_variant(&scene, &view, MistakeSet::of(&[Mistake::FlippedVertically]));
+    depth.save(folder.path().join("depth.png")).unwrap();
+    let scene_path = path(SCENE);
+    let scene_arg = scene_path.to_str().unwrap();
+    let output = run(
+        folder.path(),
+        &["-input", scene_arg, "-compare_depth", "depth.png"],
+    );
+    assert_eq!(output.status.code(), Some(3), "{}", stderr(&output));
+    assert_eq!(value(&output, "depth_range_inferred"), "6.3 10.7");
+    assert_eq!(diagnosis(&output), ["flipped-vertically"]);
+    assert_eq!(value(&output, "unexplained_pixels"), "0");
+    // With a range given, that range is used, and the inferred one still printed.
+    let output = run(
+        folder.path(),
+        &[
+            "-input",
+            scene_arg,
+            "-compare_depth",
+            "6",
+            "10",
+            "depth.png",
+        ],
+    );
+    assert_eq!(value(&output, "depth_range_inferred"), "6.3 10.7");
+    assert_ne!(diagnosis(&output), ["flipped-vertically"]);
+    // An image with no grey ramp (all black) has no range to read: refused, nothing written.
+    image::RgbImage::new(120, 80)
+        .save(folder.path().join("black.png"))
+        .unwrap();
+    let output = run(
+        folder.path(),
+        &[
+            "-input",
+            scene_arg,
+            "-compare_depth",
+            "black.png",
+            "-diff",
+            "diff.png",
+        ],
+    );
+    assert_eq!(output.status.code(), Some(1), "{}", stdout(&output));
+    assert!(
+        stderr(&output).contains(
+            "-compare_depth 'black.png': cannot infer the depth range it was made over (no grey \
+             ramp to fit): give it as -compare_depth DMIN DMAX FILE"
+        ),
+        "{}",
+        stderr(&output)
+    );
+    assert!(!folder.path().join("diff.png").exists());
+}
+
+#[test]
 fn the_size_comes_from_the_images_and_must_agree() {
     let folder = tempfile::tempdir().unwrap();
     write_mistaken(folder.path(), MistakeSet::NONE, "png");

@@ -14,7 +14,7 @@ use std::path::Path;
 
 use raytracer::compare::Mistake;
 
-use corpus::{IMAGES, compare, programs};
+use corpus::{IMAGES, compare, infer_range, programs};
 
 #[test]
 fn the_corpus_gets_no_wrong_word_and_its_known_mistakes_named() {
@@ -89,4 +89,39 @@ fn a_word_that_moves_a_pixel_is_not_named_and_near_ties_are_offered() {
         kskun.ambiguous.as_deref(),
         Some("pixel-corners + tmin-zero + far-root | pixel-corners + tmin-minus-one")
     );
+}
+
+/// The depth range read back from each program's depth images, without `-compare_depth`'s range,
+/// is the range the program was run with (the course's command line), except where the program
+/// itself used another: stackoverflow0 reads the range as whole numbers (14 … 19 for
+/// 14.5 … 19.5), and kskun's scene1_07 (t measured from the camera's centre with a tmin of −1)
+/// holds no straight ramp. dengpingzju measures depth from the nearest sphere, not from the
+/// camera: its ranges are not the command line's and are left out.
+#[test]
+fn the_depth_range_read_back_is_the_one_the_program_used() {
+    let binary = Path::new(env!("CARGO_BIN_EXE_raytracer"));
+    let mut wrong = Vec::new();
+    let mut checked = 0;
+    for program in programs().iter().filter(|p| !p.makes("depth-from-nearest")) {
+        for image in &IMAGES {
+            let Some((min, max)) = image.depth_range else {
+                continue;
+            };
+            let expected = match (program.name.as_str(), image.file) {
+                ("stackoverflow0", "depth1_05.png") => "14 19".to_owned(),
+                ("kskun", "depth1_07.png") => "none".to_owned(),
+                _ => format!("{min} {max}"),
+            };
+            let inferred = infer_range(binary, program, image);
+            checked += 1;
+            if inferred != expected {
+                wrong.push(format!(
+                    "{} {}: {inferred} (expected {expected})",
+                    program.name, image.file
+                ));
+            }
+        }
+    }
+    assert_eq!(checked, 9 * 8);
+    assert_eq!(wrong, Vec::<String>::new());
 }

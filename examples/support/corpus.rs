@@ -170,3 +170,26 @@ pub(crate) fn compare(binary: &Path, program: &Program, image: &Image) -> Outcom
     }
     outcome
 }
+
+/// The depth range the binary reads back from a depth image given without one
+/// (`depth_range_inferred:`), as printed, or `none` when it refuses the image.
+pub(crate) fn infer_range(binary: &Path, program: &Program, image: &Image) -> String {
+    let root = root();
+    let file = root
+        .join("tests/corpus")
+        .join(&program.name)
+        .join(image.file);
+    let scene = root.join("scenes").join(format!("{}.txt", image.scene));
+    let output = Command::new(binary)
+        .arg("-input")
+        .arg(&scene)
+        .arg("-compare_depth")
+        .arg(&file)
+        .output()
+        .expect("runs raytracer");
+    String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .find_map(|line| line.strip_prefix("depth_range_inferred: "))
+        .unwrap_or("none")
+        .to_owned()
+}

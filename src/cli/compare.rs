@@ -8,9 +8,9 @@ use std::path::Path;
 use image::RgbImage;
 
 use super::flags::Flag;
-use super::request::{CompareRequest, RenderRequest};
+use super::request::{CompareRequest, RenderRequest, TheirDepth};
 use crate::compare::picture::{Row, difference_picture};
-use crate::compare::{Diagnosis, Difference, Theirs, diagnose};
+use crate::compare::{Diagnosis, Difference, Theirs, diagnose, infer_depth_range};
 use crate::render::depth_map::DepthRange;
 use crate::render::{Frame, View};
 use crate::scene::Scene;
@@ -27,6 +27,17 @@ pub enum CompareError {
         path: String,
         /// What went wrong.
         message: String,
+    },
+    /// Their depth image was given without a range, and none could be inferred from it.
+    #[error(
+        "{flag} '{path}': cannot infer the depth range it was made over (no grey ramp to fit): \
+         give it as {flag} DMIN DMAX FILE"
+    )]
+    NoDepthRange {
+        /// The flag that named the image.
+        flag: Flag,
+        /// Its path as given.
+        path: String,
     },
     /// An image to compare is not the size of the render.
     #[error(
@@ -74,6 +85,8 @@ pub struct CompareReport {
     pub(crate) depth: Option<Difference>,
     /// The mistakes named.
     pub(crate) diagnosis: Diagnosis,
+    /// With a depth image: the range it was most likely made over (`None`: no ramp to fit).
+    pub(crate) depth_range_inferred: Option<Option<DepthRange>>,
 }
 
 impl CompareReport {
@@ -100,6 +113,16 @@ impl CompareReport {
                     difference.max_difference()
                 );
             }
+        }
+        if let Some(inferred) = self.depth_range_inferred {
+            let _ = match inferred {
+                Some(range) => writeln!(
+                    text,
+                    "depth_range_inferred: {} {}",
+                    range.min_t, range.max_t
+                ),
+                None => writeln!(text, "depth_range_inferred: none"),
+            };
         }
         let _ = writeln!(text, "match: {}", if self.matches() { "yes" } else { "no" });
         let words = self.diagnosis.mistakes.mistakes();
@@ -192,19 +215,43 @@ pub(crate) fn read_theirs(
 }
 
 /// Compares `theirs` with `exact` (the exact, one-sample f64 frame of `request`'s view) and
-/// diagnoses the difference; returns the report and, with `-diff`, the difference picture.
+/// diagnoses the difference; returns the report and, with `-diff`, the difference picture. A
+/// depth image given without its range is compared over the range inferred from it.
 pub(crate) fn compare(
     scene: &Scene,
     request: &RenderRequest,
     compare: &CompareRequest,
     theirs: &TheirImages,
     exact: &Frame,
-) -> (CompareReport, Option<RgbImage>) {
-    let range = compare
+) -> Result<(CompareReport, Option<RgbImage>), CompareError> {
+    let view = View::of_camera(
+        &scene.camera,
+        request.width_px,
+        request.height_px,
+        DepthRange::new(0.0, 1.0),
+    );
+    let depth_range_inferred = theirs
         .depth
         .as_ref()
-        .map_or(DepthRange::new(0.0, 1.0), |depth| depth.range);
-    let view = View::of_camera(&scene.camera, request.width_px, request.height_px, range);
+        .map(|depth| infer_depth_range(scene, &view, depth));
+    let range = match &compare.depth {
+        None => view.depth_range,
+        Some(TheirDepth {
+            range: Some(range), ..
+        }) => *range,
+        Some(TheirDepth { range: None, path }) => {
+            depth_range_inferred
+                .flatten()
+                .ok_or_else(|| CompareError::NoDepthRange {
+                    flag: Flag::CompareDepth,
+                    path: path.display().to_string(),
+                })?
+        }
+    };
+    let view = View {
+        depth_range: range,
+        ..view
+    };
     let exact_colour = theirs.colour.as_ref().map(|_| exact.colour_image());
     let exact_depth = theirs.depth.as_ref().map(|_| exact.depth_image(range));
     let difference = |a: &Option<RgbImage>, b: &Option<RgbImage>| match (a, b) {
@@ -251,12 +298,13 @@ pub(crate) fn compare(
         }
         difference_picture(&rows)
     });
-    (
+    Ok((
         CompareReport {
             colour,
             depth,
             diagnosis,
+            depth_range_inferred,
         },
         picture,
-    )
+    ))
 }

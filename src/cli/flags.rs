@@ -76,7 +76,7 @@ pub(crate) const FLAGS: &[FlagSpec] = &[
     FlagSpec { flag: Flag::TentFilter, name: "-tent_filter", aliases: &[], values: &["R"], help: "tent filter of radius R pixels" },
     FlagSpec { flag: Flag::GaussianFilter, name: "-gaussian_filter", aliases: &[], values: &["SIGMA"], help: "Gaussian filter, sigma in pixels (support 2·sigma)" },
     FlagSpec { flag: Flag::CompareOutput, name: "-compare_output", aliases: &[], values: &["FILE"], help: "compare a colour image (.tga/.png) with the exact one; name the mistakes" },
-    FlagSpec { flag: Flag::CompareDepth, name: "-compare_depth", aliases: &[], values: &["DMIN", "DMAX", "FILE"], help: "compare a depth image made over DMIN … DMAX with the exact one" },
+    FlagSpec { flag: Flag::CompareDepth, name: "-compare_depth", aliases: &[], values: &["DMIN", "DMAX", "FILE"], help: "compare a depth image made over DMIN … DMAX (inferred when left out) with the exact one" },
     FlagSpec { flag: Flag::Diff, name: "-diff", aliases: &[], values: &["FILE"], help: "write the comparison's picture: theirs, exact, heat map (.png/.tga)" },
     FlagSpec { flag: Flag::Stats, name: "-stats", aliases: &[], values: &[], help: "print timings and counts after rendering" },
     FlagSpec { flag: Flag::Help, name: "-help", aliases: &["--help", "-h"], values: &[], help: "print this help" },
@@ -102,14 +102,26 @@ impl Flag {
         self.spec().values.len()
     }
 
+    /// How many of the flag's first values may be left out together (the depth range of
+    /// `-compare_depth`); they are given when the first value is a number.
+    pub(crate) fn optional_lead(self) -> usize {
+        match self {
+            Self::CompareDepth => 2,
+            _ => 0,
+        }
+    }
+
     /// The flag and its values, as the usage text and error messages show them
-    /// (`-depth DMIN DMAX FILE`).
+    /// (`-depth DMIN DMAX FILE`, `-compare_depth [DMIN DMAX] FILE`).
     pub(crate) fn synopsis(self) -> String {
         let spec = self.spec();
-        std::iter::once(spec.name)
-            .chain(spec.values.iter().copied())
-            .collect::<Vec<_>>()
-            .join(" ")
+        let lead = self.optional_lead();
+        let mut words = vec![spec.name.to_owned()];
+        if lead > 0 {
+            words.push(format!("[{}]", spec.values[..lead].join(" ")));
+        }
+        words.extend(spec.values[lead..].iter().map(|&value| value.to_owned()));
+        words.join(" ")
     }
 
     /// The flag spelled `word` (or one of its aliases).
@@ -207,5 +219,6 @@ mod tests {
             assert!(text.contains(&flag.synopsis()), "{flag:?} in\n{text}");
         }
         assert!(text.contains("-depth DMIN DMAX FILE"), "{text}");
+        assert!(text.contains("-compare_depth [DMIN DMAX] FILE"), "{text}");
     }
 }

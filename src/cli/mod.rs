@@ -24,6 +24,6 @@ pub use error::UsageError;
 pub use flags::{Flag, usage};
 pub use raw_args::RawArgs;
 pub use request::{
-    Command, CompareRequest, DEFAULT_SIZE_PX, DepthOutput, RenderRequest, ViewerRequest,
-    parse_command,
+    Command, CompareRequest, DEFAULT_SIZE_PX, DepthOutput, RenderRequest, TheirDepth,
+    ViewerRequest, parse_command,
 };

@@ -34,8 +34,19 @@ impl RawArgs {
                 }
                 None => return Err(UsageError::StrayArgument(word.into_owned())),
             };
-            let mut flag_values = Vec::with_capacity(flag.arity());
-            for _ in 0..flag.arity() {
+            // Leading values that may be left out are given when the first is a number.
+            let lead_left_out = flag.optional_lead() > 0
+                && arguments
+                    .peek()
+                    .is_none_or(|next| next.to_string_lossy().parse::<f64>().is_err());
+            let arity = flag.arity()
+                - if lead_left_out {
+                    flag.optional_lead()
+                } else {
+                    0
+                };
+            let mut flag_values = Vec::with_capacity(arity);
+            for _ in 0..arity {
                 // A value may start with '-' (a negative depth); a known flag may not be a value.
                 let next_is_flag = arguments
                     .peek()
@@ -55,6 +66,11 @@ impl RawArgs {
     /// Whether `flag` was given.
     pub(crate) fn has(&self, flag: Flag) -> bool {
         self.values.contains_key(&flag)
+    }
+
+    /// How many values `flag` was given with (0 when absent).
+    pub(crate) fn count(&self, flag: Flag) -> usize {
+        self.values.get(&flag).map_or(0, Vec::len)
     }
 
     /// Value `index` of `flag`, if given.

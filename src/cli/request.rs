@@ -41,6 +41,15 @@ pub struct DepthOutput {
     pub(crate) path: PathBuf,
 }
 
+/// Their depth image to compare, and the range it was made over when given.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TheirDepth {
+    /// t range mapped white … black; `None`: inferred from the image.
+    pub(crate) range: Option<DepthRange>,
+    /// The image.
+    pub(crate) path: PathBuf,
+}
+
 /// Images to compare with the exact render (`-compare_output`, `-compare_depth`) and where to
 /// write the difference picture (`-diff`).
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -48,7 +57,7 @@ pub struct CompareRequest {
     /// Their colour image.
     pub(crate) colour: Option<PathBuf>,
     /// Their depth image and the range it was made over.
-    pub(crate) depth: Option<DepthOutput>,
+    pub(crate) depth: Option<TheirDepth>,
     /// The difference picture's destination.
     pub(crate) diff: Option<PathBuf>,
 }
@@ -187,7 +196,7 @@ impl RawArgs {
     /// The comparison flags; `None` without `-compare_output` and `-compare_depth`.
     fn compare(&self) -> Result<Option<CompareRequest>, UsageError> {
         let colour = self.output_path(Flag::CompareOutput, 0)?;
-        let depth = self.depth_output(Flag::CompareDepth)?;
+        let depth = self.their_depth()?;
         let diff = self.output_path(Flag::Diff, 0)?;
         if colour.is_none() && depth.is_none() {
             return if diff.is_some() {
@@ -311,6 +320,22 @@ impl RawArgs {
         }))
     }
 
+    /// `-compare_depth [DMIN DMAX] FILE`.
+    fn their_depth(&self) -> Result<Option<TheirDepth>, UsageError> {
+        let flag = Flag::CompareDepth;
+        match self.count(flag) {
+            0 => Ok(None),
+            1 => Ok(Some(TheirDepth {
+                range: None,
+                path: self.output_path(flag, 0)?.unwrap_or_default(),
+            })),
+            _ => Ok(self.depth_output(flag)?.map(|depth| TheirDepth {
+                range: Some(depth.range),
+                path: depth.path,
+            })),
+        }
+    }
+
     /// An output path whose extension names a format the flag writes.
     fn output_path(&self, flag: Flag, index: usize) -> Result<Option<PathBuf>, UsageError> {
         let Some(value) = self.value(flag, index) else {
@@ -397,7 +422,14 @@ impl RenderRequest {
                 push(Flag::CompareOutput, vec![path.clone().into()]);
             }
             if let Some(depth) = &compare.depth {
-                push(Flag::CompareDepth, depth_values(depth));
+                let mut values: Vec<OsString> = depth.range.map_or_else(Vec::new, |range| {
+                    vec![
+                        range.min_t.to_string().into(),
+                        range.max_t.to_string().into(),
+                    ]
+                });
+                values.push(depth.path.clone().into());
+                push(Flag::CompareDepth, values);
             }
             if let Some(path) = &compare.diff {
                 push(Flag::Diff, vec![path.clone().into()]);

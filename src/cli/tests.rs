@@ -47,6 +47,30 @@ fn negative_depth_values_are_values_not_flags() {
 }
 
 #[test]
+fn the_compare_depth_range_may_be_left_out() {
+    let their_depth = |line: &str| match parse(line) {
+        Ok(Command::Render(request)) => Ok(request.compare.unwrap().depth.unwrap()),
+        Ok(other) => panic!("{other:?}"),
+        Err(error) => Err(error.to_string()),
+    };
+    let given = their_depth("-input a.txt -compare_depth -2 2 d.png -diff x.png").unwrap();
+    assert_eq!(given.range, Some(DepthRange::new(-2.0, 2.0)));
+    assert_eq!(given.path, std::path::Path::new("d.png"));
+    let left_out = their_depth("-input a.txt -compare_depth d.png -diff x.png").unwrap();
+    assert_eq!(left_out.range, None);
+    assert_eq!(left_out.path, std::path::Path::new("d.png"));
+    // A flag is no file; one number is a range cut short.
+    for line in [
+        "-input a.txt -compare_depth -diff x.png",
+        "-input a.txt -compare_depth 8 -diff x.png",
+        "-input a.txt -compare_depth",
+    ] {
+        let error = their_depth(line).unwrap_err();
+        assert!(error.contains("-compare_depth"), "{line}: {error}");
+    }
+}
+
+#[test]
 fn course_sampling_flags_give_a_sampling() {
     let Command::Render(request) =
         parse("-input a.txt -output x.png -jittered_samples 16 -gaussian_filter 0.8 -stats")
@@ -167,8 +191,8 @@ fn requests_with_every_setting() -> Vec<RenderRequest> {
         size_given: true,
         compare: Some(CompareRequest {
             colour: Some("theirs/colour.tga".into()),
-            depth: Some(DepthOutput {
-                range: DepthRange::new(9.0, 10.25),
+            depth: Some(TheirDepth {
+                range: Some(DepthRange::new(9.0, 10.25)),
                 path: "theirs/depth.png".into(),
             }),
             diff: Some("out/diff.png".into()),
@@ -205,7 +229,7 @@ fn requests_with_every_setting() -> Vec<RenderRequest> {
             stats: false,
             ..full.clone()
         },
-        // A comparison alone, its size taken from the images.
+        // A comparison alone, its size taken from the images, the depth range from the image.
         RenderRequest {
             width_px: 200,
             height_px: 200,
@@ -216,8 +240,8 @@ fn requests_with_every_setting() -> Vec<RenderRequest> {
             depth_raw_output: None,
             compare: Some(CompareRequest {
                 colour: None,
-                depth: Some(DepthOutput {
-                    range: DepthRange::new(-2.0, 2.0),
+                depth: Some(TheirDepth {
+                    range: None,
                     path: "mine.tga".into(),
                 }),
                 diff: None,

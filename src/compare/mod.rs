@@ -4,14 +4,17 @@
 //! * [`variant`]: the variant renderer, the picture a ray caster with a set of mistakes makes.
 //! * [`difference`]: how two images differ, and the course's rule for "the same picture".
 //! * [`diagnosis`]: which set of mistakes explains a difference, if any does.
+//! * [`depth_range`]: the depth range a depth image was most likely made over.
 //! * [`picture`]: the difference picture (theirs, exact, heat map, legend).
 
+pub mod depth_range;
 pub mod diagnosis;
 pub mod difference;
 pub mod mistake;
 pub mod picture;
 pub mod variant;
 
+pub use depth_range::infer_depth_range;
 pub use diagnosis::{Diagnosis, Theirs, Unexplained, diagnose};
 pub use difference::Difference;
 pub use mistake::{Mistake, MistakeSet};
