@@ -1,7 +1,7 @@
 //! The viewer's Compare section as a user meets it (egui_kittest): their image typed into the
 //! section is put beside the exact render and diagnosed, the A/B flip and the difference view
-//! replace the compared image on screen, the probe gives both values, a depth image follows the
-//! depth range, and "Against the exact render" measures the chosen quality on the user's view.
+//! replace the compared image on screen, the probe gives both values, a depth image offers the
+//! range read back from it and follows the depth range, and "Against the exact render" measures the chosen quality on the user's view.
 //! Their images are made by the project's variant renderer and written as real files.
 #![cfg(feature = "gui")]
 
@@ -162,7 +162,7 @@ fn the_exact_image_matches_and_names_nothing() {
 }
 
 #[test]
-fn a_depth_image_follows_the_depth_range_until_it_matches() {
+fn a_depth_image_offers_the_range_read_back_and_follows_the_depth_range() {
     let folder = tempfile::tempdir().unwrap();
     let (_, depth) = write_theirs(folder.path(), MistakeSet::NONE);
     let mut harness = viewer(Some(scene_file()));
@@ -181,10 +181,13 @@ fn a_depth_image_follows_the_depth_range_until_it_matches() {
             > 0
     );
     assert!(label_shown(&harness, "match: no"));
-    // Tuning the depth range to theirs (6 … 10) makes the comparison again: now they match.
-    harness.state_mut().view_mut().depth_range = DepthRange::new(6.0, 10.0);
+    // Their range is read back from the image and offered; taking it makes the comparison
+    // again: now they match, and the offer is gone.
+    assert!(label_shown(&harness, "their range looks like 6 … 10:"));
+    click(&mut harness, "use it");
     harness.run_steps(2);
     wait_for_comparison(&mut harness);
+    assert!(!label_shown(&harness, "their range looks like"));
     let comparison = harness.state().comparison().unwrap();
     assert_eq!(comparison.view.depth_range, DepthRange::new(6.0, 10.0));
     assert!(comparison.difference.depth_matches());

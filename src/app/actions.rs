@@ -38,6 +38,8 @@ pub(crate) enum Action {
     ResetDepth,
     /// Fit the depth range to the visible t.
     AutoRange,
+    /// Set the depth range (the one read back from their depth image).
+    UseDepthRange(crate::render::depth_map::DepthRange),
     /// Back to the view before the last change.
     Undo,
     /// Forward again after an undo.
@@ -87,6 +89,7 @@ impl ViewerApp {
             Action::ResetView => self.reset_view(),
             Action::ResetDepth => self.reset_depth(),
             Action::AutoRange => self.auto_range(),
+            Action::UseDepthRange(range) => self.view.depth_range = range,
             Action::Undo => self.undo(),
             Action::Redo => self.redo(),
             Action::NameView(name) => self.name_view(&name),

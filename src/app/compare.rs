@@ -22,7 +22,8 @@ use super::ViewerApp;
 use super::status::Status;
 use super::tasks::{Poll, Task};
 use crate::compare::picture::{heat_map, heat_map_marked};
-use crate::compare::{Difference, Theirs, diagnose};
+use crate::compare::{Difference, Theirs, diagnose, infer_depth_range};
+use crate::render::depth_map::DepthRange;
 use crate::render::sampling::Sampling;
 use crate::render::{Quality, View, render_with};
 use crate::scene::Scene;
@@ -114,6 +115,8 @@ pub struct ComparisonPixels {
     pub partial: Vec<&'static str>,
     /// Differing pixels no word named accounts for.
     pub unexplained_pixels: usize,
+    /// A depth image's range, read back from it (`None`: a colour image, or no ramp to fit).
+    pub depth_range_inferred: Option<DepthRange>,
     /// Where they are, when a word was named in full or in part (one flag per pixel, row by row
     /// from the top): drawn cyan over the heat map.
     pub unexplained: Option<Vec<bool>>,
@@ -210,6 +213,10 @@ pub fn compare_file(
         },
     };
     let diagnosis = diagnose(scene, &view, given);
+    let depth_range_inferred = match kind {
+        ImageKind::Colour => None,
+        ImageKind::Depth => infer_depth_range(scene, &view, &theirs),
+    };
     let unexplained = if diagnosis.put_forward().is_empty() {
         None
     } else {
@@ -239,6 +246,7 @@ pub fn compare_file(
             .collect(),
         unexplained_pixels: diagnosis.unexplained_pixels(),
         unexplained,
+        depth_range_inferred,
         theirs,
     })
 }
@@ -298,6 +306,7 @@ pub fn compare_quality(
         partial: Vec::new(),
         unexplained_pixels: 0,
         unexplained: None,
+        depth_range_inferred: None,
     })
 }
 

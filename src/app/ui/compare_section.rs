@@ -11,6 +11,9 @@ use crate::app::compare::{
 use crate::app::dialogs::DialogKind;
 use crate::render::Quality;
 
+/// The button that sets the depth range to the one read back from their depth image.
+pub(crate) const USE_THEIR_RANGE: &str = "use it";
+
 /// The accessible label of the typed image path (tests find the field by it).
 pub(crate) const IMAGE_PATH_LABEL: &str = "image";
 
@@ -133,6 +136,26 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
             } else {
                 "match: no"
             });
+            if let Some(range) = pixels.depth_range_inferred
+                && range != pixels.view.depth_range
+            {
+                ui.horizontal_wrapped(|ui| {
+                    ui.label(format!(
+                        "their range looks like {} … {}:",
+                        range.min_t, range.max_t
+                    ));
+                    if ui
+                        .button(USE_THEIR_RANGE)
+                        .on_hover_text(
+                            "read back from their image: set the depth range to it and compare \
+                             again",
+                        )
+                        .clicked()
+                    {
+                        actions.push(Action::UseDepthRange(range));
+                    }
+                });
+            }
             let diagnosis = if pixels.diagnosis.is_empty() {
                 if matches {
                     "none needed".to_owned()
