@@ -225,7 +225,10 @@ fn find(search: &mut Search<'_>) -> Diagnosis {
     for (index, first) in Mistake::ALL.into_iter().enumerate() {
         candidates.push(MistakeSet::of(&[first]));
         for second in Mistake::ALL.into_iter().skip(index + 1) {
-            candidates.push(MistakeSet::of(&[first, second]));
+            let pair = MistakeSet::of(&[first, second]);
+            if pair.is_possible() {
+                candidates.push(pair);
+            }
         }
     }
     let rank = |search: &mut Search<'_>, set: MistakeSet| (search.score(set), set.len(), set);
@@ -239,7 +242,7 @@ fn find(search: &mut Search<'_>) -> Diagnosis {
         while set.len() < MAX_MISTAKES {
             let grown = Mistake::ALL
                 .into_iter()
-                .filter(|m| !set.contains(*m))
+                .filter(|m| !set.contains(*m) && set.with(*m).is_possible())
                 .map(|m| rank(search, set.with(m)))
                 .min();
             match grown {

@@ -26,6 +26,9 @@ pub enum Mistake {
     DepthReversed,
     /// Depth outside the range wraps around (`(v·255) mod 256`) instead of clamping.
     DepthNoClamp,
+    /// Depth outside the range drawn black instead of clamped: what is nearer than DMIN is black,
+    /// not white.
+    DepthOutsideBlack,
     /// 8-bit values rounded instead of truncated.
     Rounded,
     /// On an exact tie of t the later object wins instead of the earlier.
@@ -42,7 +45,7 @@ pub enum Mistake {
 
 impl Mistake {
     /// Every mistake, in the order the diagnosis prints them.
-    pub const ALL: [Self; 14] = [
+    pub const ALL: [Self; 15] = [
         Self::PixelCorners,
         Self::NoSquareRoot,
         Self::TminZero,
@@ -52,6 +55,7 @@ impl Mistake {
         Self::FlippedVertically,
         Self::DepthReversed,
         Self::DepthNoClamp,
+        Self::DepthOutsideBlack,
         Self::Rounded,
         Self::LastWins,
         Self::Mirrored,
@@ -71,6 +75,7 @@ impl Mistake {
             Self::FlippedVertically => "flipped-vertically",
             Self::DepthReversed => "depth-reversed",
             Self::DepthNoClamp => "depth-no-clamp",
+            Self::DepthOutsideBlack => "depth-outside-black",
             Self::Rounded => "rounded",
             Self::LastWins => "last-wins",
             Self::Mirrored => "mirrored",
@@ -98,6 +103,9 @@ impl Mistake {
             Self::FlippedVertically => "rows written top-down without saying so in the file",
             Self::DepthReversed => "near black, far white",
             Self::DepthNoClamp => "depth outside the range wraps instead of clamping",
+            Self::DepthOutsideBlack => {
+                "depth outside the range drawn black instead of clamped (nearer than DMIN too)"
+            }
             Self::Rounded => "8-bit values rounded instead of truncated",
             Self::LastWins => "on equal t the later object wins",
             Self::Mirrored => "horizontal = up × direction: mirrored left to right",
@@ -171,6 +179,19 @@ impl MistakeSet {
     /// How many mistakes the set holds.
     pub fn len(self) -> usize {
         self.0.count_ones() as usize
+    }
+
+    /// Whether one program can make all the set's mistakes: a program has one tmin
+    /// (`tmin-zero`, `tmin-minus-one`) and one rule for depth outside the range
+    /// (`depth-no-clamp`, `depth-outside-black`).
+    pub fn is_possible(self) -> bool {
+        const ONE_OF: [[Mistake; 2]; 2] = [
+            [Mistake::TminZero, Mistake::TminMinusOne],
+            [Mistake::DepthNoClamp, Mistake::DepthOutsideBlack],
+        ];
+        !ONE_OF
+            .iter()
+            .any(|&[first, second]| self.contains(first) && self.contains(second))
     }
 
     /// Whether every mistake of `other` is in the set.

@@ -314,6 +314,7 @@ pub fn depth_image(view: &View, hits: &Hits, mistakes: MistakeSet) -> RgbImage {
     };
     let reversed = mistakes.contains(Mistake::DepthReversed);
     let wrap = mistakes.contains(Mistake::DepthNoClamp);
+    let outside_black = mistakes.contains(Mistake::DepthOutsideBlack);
     let rounded = mistakes.contains(Mistake::Rounded);
     let width = range.max_t - range.min_t;
     let mut image = RgbImage::from_fn(hits.width_px, hits.height_px, |x, row| {
@@ -322,6 +323,9 @@ pub fn depth_image(view: &View, hits: &Hits, mistakes: MistakeSet) -> RgbImage {
             return Rgb([0; 3]);
         }
         let t = t * scale;
+        if outside_black && !(range.min_t..=range.max_t).contains(&t) {
+            return Rgb([0; 3]);
+        }
         let near_is_one = if width == 0.0 {
             if t <= range.min_t { 1.0 } else { 0.0 }
         } else {
