@@ -6,7 +6,9 @@
 # (fuzz/corpus/<target>), so the committed seeds stay as they are; with LOG_FOLDER, each target's
 # whole libFuzzer log is written to LOG_FOLDER/<target>.log. A crash, a leak, a timeout (10 s for
 # one input) or an input that takes more than 2 GB stops the run with a non-zero status and leaves
-# the input in fuzz/artifacts/<target>/: make it a regression test.
+# the input in fuzz/artifacts/<target>/: make it a regression test. With FUZZ_PLANT_CRASH=1 an
+# input the scene target crashes on is added to the corpus copy, to show that a crash fails the run
+# (scripts/fuzz-self-test.sh).
 set -euo pipefail
 seconds=${1:-60}
 logs=${2:-}
@@ -32,10 +34,19 @@ for target in ${FUZZ_TARGETS:-scene command_line}; do
     log="$logs/$target.log"
   fi
   echo "fuzzing $target for $seconds s"
+  if [ -n "${FUZZ_PLANT_CRASH:-}" ]; then
+    # The script's own test: an input the target crashes on (only with this variable set).
+    printf 'planted crash' > "$corpus/planted-crash"
+    export RAYTRACER_FUZZ_PLANTED_CRASH=1
+  fi
+  # The fuzzer's status is read from PIPESTATUS straight after the pipeline (grep's "no line
+  # matched" and `|| true` would hide it otherwise).
+  set +e +o pipefail
   cargo +nightly fuzz run --release "$target" "$corpus" -- \
     -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-    2>&1 | sed -e "s#$root/##g" -e "s#$corpus#<copy of fuzz/corpus/$target>#g" | tee "$log" | grep -E '^(Done|stat::|==|SUMMARY|INFO: Seed)|ERROR|panicked' || true
+    2>&1 | sed -e "s#$root/##g" -e "s#$corpus#<copy of fuzz/corpus/$target>#g" | tee "$log" | grep -E '^(Done|stat::|==|SUMMARY|INFO: Seed)|ERROR|panicked'
   status=${PIPESTATUS[0]}
+  set -e -o pipefail
   rm -rf "$corpus"
   if [ "$status" -ne 0 ]; then
     echo "fuzzing $target failed (status $status); the input is in fuzz/artifacts/$target/" >&2

@@ -1,4 +1,6 @@
-//! Fuzz target: arbitrary bytes through the scene parser. What parses must
+//! Fuzz target: arbitrary bytes through the scene parser. Any text must parse to the same scene
+//! or the same error on two threads (the split parser, which files reach from 4 MB, from 0 bytes
+//! here). What parses must
 //! * write back to text that parses to the same scene (`scene_to_text`),
 //! * render a small view with no NaN t,
 //! * supersample and map depth without a panic.
@@ -10,10 +12,18 @@ use libfuzzer_sys::fuzz_target;
 use raytracer::explore::initial_depth_range;
 use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{Filter, Quality, Sampler, Sampling, View, render_with};
-use raytracer::scene::{parse_scene, parse_scene_bytes, scene_to_text};
+use raytracer::scene::{parse_scene, parse_scene_bytes, parse_scene_split_from, scene_to_text};
 
 fuzz_target!(|bytes: &[u8]| {
-    let Ok(scene) = parse_scene_bytes(bytes) else {
+    // A planted crash, for the fuzz script's own test that a crash fails the run.
+    if std::env::var_os("RAYTRACER_FUZZ_PLANTED_CRASH").is_some() && bytes == b"planted crash" {
+        panic!("the planted crash");
+    }
+    let parsed = parse_scene_bytes(bytes);
+    if let Ok(text) = std::str::from_utf8(bytes) {
+        assert_eq!(parse_scene_split_from(text, 0), parsed, "split parse differs");
+    }
+    let Ok(scene) = parsed else {
         return;
     };
     let written = scene_to_text(&scene);

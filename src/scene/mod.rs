@@ -19,7 +19,8 @@ pub use model::{
 };
 pub use parse::{MAX_GROUP_DEPTH, MAX_MAGNITUDE, MIN_VIEW_SIZE};
 pub use read::{
-    parse_scene, parse_scene_bytes, parse_scene_bytes_with_progress, parse_scene_with_progress,
+    parse_scene, parse_scene_bytes, parse_scene_bytes_with_progress, parse_scene_split_from,
+    parse_scene_with_progress,
 };
 pub use writer::scene_to_text;
 

@@ -5,7 +5,7 @@
 use super::error::{Location, ParseError, ParseErrorKind};
 use super::model::Scene;
 use super::parse::BYTE_ORDER_MARK;
-use super::split::parse_text;
+use super::split::{SPLIT_MIN_BYTES, parse_text};
 
 /// Parses scene bytes; text that is not UTF-8 gets [`ParseErrorKind::NotText`] at the bad byte.
 pub fn parse_scene_bytes(bytes: &[u8]) -> Result<Scene, ParseError> {
@@ -47,5 +47,13 @@ pub fn parse_scene(text: &str) -> Result<Scene, ParseError> {
 /// [`SPHERES_PER_REPORT`](super::parse::SPHERES_PER_REPORT) spheres.
 pub fn parse_scene_with_progress(text: &str, progress: &dyn Fn(f64)) -> Result<Scene, ParseError> {
     let text = text.strip_prefix(BYTE_ORDER_MARK).unwrap_or(text);
-    parse_text(text, progress)
+    parse_text(text, progress, SPLIT_MIN_BYTES)
+}
+
+/// [`parse_scene`] on two threads from `split_min_bytes` of text on (files of 4 MB and more
+/// otherwise), so that tests and the fuzz target reach the split parser with small inputs. The
+/// result is the same whatever the threshold.
+pub fn parse_scene_split_from(text: &str, split_min_bytes: usize) -> Result<Scene, ParseError> {
+    let text = text.strip_prefix(BYTE_ORDER_MARK).unwrap_or(text);
+    parse_text(text, &|_| {}, split_min_bytes)
 }

@@ -22,9 +22,13 @@ use super::parse::Parser;
 pub(super) const SPLIT_MIN_BYTES: usize = 4 << 20;
 
 /// Parses `text` with the second half's run of sphere statements parsed ahead on a thread of its
-/// own (files of [`SPLIT_MIN_BYTES`] or more that have such a run; others on this thread).
-pub(super) fn parse_text(text: &str, progress: &dyn Fn(f64)) -> Result<Scene, ParseError> {
-    let split = (text.len() >= SPLIT_MIN_BYTES)
+/// own (files of `split_min_bytes` or more that have such a run; others on this thread).
+pub(super) fn parse_text(
+    text: &str,
+    progress: &dyn Fn(f64),
+    split_min_bytes: usize,
+) -> Result<Scene, ParseError> {
+    let split = (text.len() >= split_min_bytes)
         .then(|| split_point(text))
         .flatten();
     let Some((line_start, token_offset)) = split else {
@@ -260,5 +264,26 @@ mod tests {
         broken.replace_range(late..late + 15, "MaterialIndex 9");
         let split = parse_scene(&broken).unwrap_err();
         assert_eq!(split, sequential(&broken).unwrap_err());
+    }
+
+    #[test]
+    fn small_texts_parse_the_same_on_two_threads() {
+        // The fuzz target's path: the split from 0 bytes, on the course scenes and on broken
+        // texts, gives the one-thread scene or error.
+        let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+        let mut texts: Vec<String> = (1..=7)
+            .map(|n| std::fs::read_to_string(folder.join(format!("scene1_0{n}.txt"))).unwrap())
+            .collect();
+        let small = big_text(2_000);
+        texts.push(small.replace("radius 0.5", "radius -0.5"));
+        texts.push(small.replace("MaterialIndex 2", "MaterialIndex 7"));
+        texts.push(small.clone());
+        let mut split_parsed = 0;
+        for text in &texts {
+            let one_thread = sequential(text);
+            assert_eq!(crate::scene::parse_scene_split_from(text, 0), one_thread);
+            split_parsed += usize::from(split_point(text).is_some());
+        }
+        assert!(split_parsed >= 3, "{split_parsed} texts had a split point");
     }
 }
