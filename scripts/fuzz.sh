@@ -25,6 +25,8 @@ if ! command -v cargo-fuzz >/dev/null 2>&1; then
   cargo install cargo-fuzz --locked
 fi
 cargo +nightly fuzz build --release
+# Thread exits the leak check may see before they finish (fuzz/lsan-suppressions.txt says why).
+export LSAN_OPTIONS="suppressions=$root/fuzz/lsan-suppressions.txt:print_suppressions=0"
 for target in ${FUZZ_TARGETS:-scene command_line}; do
   corpus=$(mktemp -d)
   cp corpus/"$target"/* "$corpus"/
