@@ -46,7 +46,7 @@ for target in ${FUZZ_TARGETS:-scene command_line}; do
   set +e +o pipefail
   cargo +nightly fuzz run --release "$target" "$corpus" -- \
     -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-    2>&1 | sed -e "s#$root/##g" -e "s#$corpus#<copy of fuzz/corpus/$target>#g" | tee "$log" | grep -E '^(Done|stat::|==|SUMMARY|INFO: Seed)|ERROR|panicked'
+    2>&1 | sed -e "s#$root/##g" -e "s#$root#.#g" -e "s#$corpus#<copy of fuzz/corpus/$target>#g" | tee "$log" | grep -E '^(Done|stat::|==|SUMMARY|INFO: Seed)|ERROR|panicked'
   status=${PIPESTATUS[0]}
   set -e -o pipefail
   rm -rf "$corpus"
