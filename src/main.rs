@@ -17,7 +17,7 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 use raytracer::{
     cli::{Command, parse_command, usage},
     output::atomic::remove_temporary_files,
-    platform::console::{PrintError, print_err, print_out},
+    platform::console::{PrintError, one_line, print_err, print_out},
     platform::process::{OnSignal, handle_termination_signals, start_thread_pool},
 };
 
@@ -35,7 +35,7 @@ fn main() -> ExitCode {
     let command = match parse_command(std::env::args_os().skip(1)) {
         Ok(command) => command,
         Err(error) => {
-            print_err(&format!("raytracer: {error}\n"));
+            print_err(&format!("raytracer: {}\n", one_line(&error.to_string())));
             if error.wants_usage() {
                 print_err(&format!("\n{}", usage()));
             }
@@ -72,7 +72,7 @@ fn main() -> ExitCode {
                     }
                 }
                 Err(error) => {
-                    print_err(&format!("raytracer: {error}\n"));
+                    print_err(&format!("raytracer: {}\n", one_line(&error.to_string())));
                     ExitCode::from(error.exit_status())
                 }
             }
@@ -101,6 +101,16 @@ fn print_or_fail(text: &str, status: ExitCode) -> ExitCode {
 
 #[cfg(all(feature = "gui", not(target_arch = "wasm32")))]
 fn open_viewer(request: raytracer::cli::ViewerRequest) -> ExitCode {
+    // A scene file that cannot be read is said first, whatever the display.
+    if let Some(input) = &request.input
+        && let Err(error) = std::fs::File::open(input)
+    {
+        print_err(&format!(
+            "raytracer: {}\n",
+            one_line(&format!("{}: {error}", input.display()))
+        ));
+        return ExitCode::from(1);
+    }
     if let Some(problem) = raytracer::app::environment_problem() {
         print_err(&format!("raytracer: {problem}\n"));
         return ExitCode::from(2);
@@ -119,7 +129,8 @@ fn open_viewer(request: raytracer::cli::ViewerRequest) -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
             print_err(&format!(
-                "raytracer: cannot open the viewer window: {error}\n"
+                "raytracer: {}\n",
+                one_line(&format!("cannot open the viewer window: {error}"))
             ));
             ExitCode::from(1)
         }

@@ -4,7 +4,7 @@
 //! user sees: the exit status, the message, the files (intact, complete, with their modes) and
 //! nothing left behind.
 
-use std::os::unix::fs::PermissionsExt as _;
+use std::os::unix::fs::{MetadataExt as _, PermissionsExt as _};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
@@ -57,6 +57,7 @@ fn assert_one_line_error(output: &Output) -> String {
     let text = stderr(output);
     assert!(!text.contains("panicked"), "a panic: {text}");
     assert_ne!(output.status.code(), Some(101), "a panic: {text}");
+    assert!(text.lines().count() <= 1, "more than one line: {text}");
     text
 }
 
@@ -568,10 +569,20 @@ fn without_threads_the_render_still_runs_on_one() {
     let program = folder.path().join("raytracer");
     std::fs::copy(binary(), &program).unwrap();
     std::fs::set_permissions(&program, std::fs::Permissions::from_mode(0o755)).unwrap();
-    // As an unprivileged user limited to one process: no thread can be started.
-    let output = Command::new("setpriv")
-        .args(["--reuid=65534", "--regid=65534", "--clear-groups"])
-        .args(["prlimit", "--nproc=1:1"])
+    // Limited to one process: no thread can be started. The limit does not bind root, so as
+    // root the run is made as an unprivileged user (setpriv); as anyone else, as that user.
+    let is_root = std::fs::metadata(&program).unwrap().uid() == 0;
+    let mut command = if is_root {
+        let mut command = Command::new("setpriv");
+        command
+            .args(["--reuid=65534", "--regid=65534", "--clear-groups"])
+            .arg("prlimit");
+        command
+    } else {
+        Command::new("prlimit")
+    };
+    let output = command
+        .arg("--nproc=1:1")
         .arg(&program)
         .current_dir(folder.path())
         .args(["-input", "scene.txt", "-output", "c.png", "-stats"])
@@ -652,4 +663,100 @@ fn without_a_display_the_viewer_says_so_in_one_line() {
         text.contains("no display") && text.contains("-output"),
         "{text}"
     );
+}
+
+// --- 13. What the user typed, in messages; numbers kept in 32 bits ------------------------------
+
+#[test]
+fn what_the_user_typed_reaches_the_terminal_escaped_and_shortened() {
+    let folder = tempfile::tempdir().unwrap();
+    // A file name with a newline and a colour escape sequence: one line, no raw escape.
+    let output = run_in(
+        folder.path(),
+        &["-input", "a\nb\u{1b}[31m.txt", "-output", "c.png"],
+    );
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(1), "{text}");
+    assert!(!text.contains('\u{1b}'), "{text:?}");
+    assert!(text.contains("a\\nb\\u{1b}[31m.txt"), "{text}");
+    // A 120 KB value is cut in the middle, saying how much was left out.
+    let long = "7".repeat(120_000);
+    let output = run_in(
+        folder.path(),
+        &["-input", "s.txt", "-size", &long, "10", "-output", "c.png"],
+    );
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(2), "{text}");
+    assert!(text.len() < 600, "{} bytes", text.len());
+    assert!(text.contains("characters left out"), "{text}");
+}
+
+#[test]
+fn numbers_are_not_narrowed_into_false_answers() {
+    let folder = tempfile::tempdir().unwrap();
+    // A colour channel beyond the 32-bit range (but within the documented 1e150) is accepted:
+    // the background shows full red.
+    let text = std::fs::read_to_string(scene_path("scene1_01.txt")).unwrap();
+    let background = text
+        .lines()
+        .find(|line| line.contains("Background"))
+        .unwrap();
+    let bright = text.replace(background, "Background { color 1e39 0 0 }");
+    std::fs::write(folder.path().join("bright.txt"), bright).unwrap();
+    let output = run_in(
+        folder.path(),
+        &[
+            "-input",
+            "bright.txt",
+            "-output",
+            "c.png",
+            "-size",
+            "20",
+            "20",
+        ],
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    let picture = image::open(folder.path().join("c.png")).unwrap().to_rgb8();
+    assert_eq!(picture.get_pixel(0, 0).0, [255, 0, 0]);
+    // A filter size that 32 bits would make 0 is refused as given, not as "0".
+    let output = run_in(
+        folder.path(),
+        &[
+            "-input",
+            "bright.txt",
+            "-output",
+            "t.png",
+            "-tent_filter",
+            "1e-50",
+        ],
+    );
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(2), "{text}");
+    assert!(text.contains("'1e-50'"), "{text}");
+    // A depth range wider than the largest number is refused with the reason, nothing written.
+    let output = run_in(
+        folder.path(),
+        &["-input", "bright.txt", "-depth", "-1e308", "1e308", "d.png"],
+    );
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(2), "{text}");
+    assert!(text.contains("DMAX − DMIN"), "{text}");
+    assert!(!folder.path().join("d.png").exists());
+}
+
+#[test]
+fn a_missing_scene_is_said_before_anything_about_the_display() {
+    // A display that is set but not there: the missing file is the answer.
+    let folder = tempfile::tempdir().unwrap();
+    let output = Command::new(binary())
+        .current_dir(folder.path())
+        .env("DISPLAY", ":99")
+        .env_remove("WAYLAND_DISPLAY")
+        .args(["-input", "missing.txt"])
+        .stdin(Stdio::null())
+        .output()
+        .unwrap();
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(1), "{text}");
+    assert!(text.starts_with("raytracer: missing.txt: "), "{text}");
 }

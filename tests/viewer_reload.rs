@@ -1,7 +1,8 @@
 //! Live reload and the file dialogs' fallback, driven through the real viewer (egui_kittest):
 //! an editor's save in several quick writes reloads once, a save that renames a new file over the
 //! scene reloads it, reading the file (as the viewer itself does) reloads nothing, and where no
-//! file dialog can be shown the window says so and the typed paths do the job.
+//! file dialog can be shown the window says so, Open… does nothing else, and the typed export
+//! paths do the job.
 #![cfg(feature = "gui")]
 
 mod common;
@@ -105,10 +106,23 @@ fn without_file_dialogs_the_window_says_so_and_typed_paths_work() {
             .query_by_label_contains("no file dialog is available")
             .is_some()
     );
-    // Open… opens the typed scene path (the open file's, after opening it).
+    // Open… says there is no dialog and does nothing else: the scene is not opened again, and
+    // the view's history stays.
+    harness.state_mut().view_mut().center_world.x += 0.5;
+    settle(&mut harness);
     let loads = harness.state().scene_loads();
+    let moved = harness.state().view().center_world;
+    let said = |harness: &Harness| {
+        harness
+            .query_all_by_label_contains("no file dialog is available")
+            .count()
+    };
+    let before = said(&harness);
     click(&mut harness, "Open…");
-    wait_until(&mut harness, |app| app.scene_loads() > loads);
+    run_for(&mut harness, Duration::from_millis(300));
+    assert_eq!(harness.state().scene_loads(), loads);
+    assert_eq!(harness.state().view().center_world, moved);
+    assert!(said(&harness) > before, "the status bar says so too");
     // Export… and Ctrl+S use the typed export path; Save view as scene… the typed scene path.
     harness.state_mut().settings_mut().export.path =
         folder.path().join("typed.png").display().to_string();

@@ -215,6 +215,34 @@ fn undo_and_redo_step_through_view_changes_a_burst_at_a_time() {
 }
 
 #[test]
+fn home_after_an_idle_wait_or_at_once_is_a_step_and_undo_brings_the_view_back() {
+    let mut harness = viewer(Some(scene_path("scene1_02.txt")));
+    let start = view(&harness).center_world;
+    // A move, then no frame at all for longer than the history waits (an idle window), then
+    // Home: Ctrl+Z brings the moved view back.
+    press(&mut harness, Modifiers::NONE, Key::ArrowLeft);
+    let moved = view(&harness).center_world;
+    std::thread::sleep(Duration::from_millis(600));
+    press(&mut harness, Modifiers::NONE, Key::Home);
+    assert_eq!(view(&harness).center_world, start);
+    press(&mut harness, Modifiers::COMMAND, Key::Z);
+    assert_eq!(view(&harness).center_world, moved, "the move before Home");
+    // Arrow moves and Home at once: the moves are a step of their own, and redo brings Home.
+    press(&mut harness, Modifiers::NONE, Key::ArrowUp);
+    press(&mut harness, Modifiers::NONE, Key::ArrowUp);
+    let up = view(&harness).center_world;
+    press(&mut harness, Modifiers::NONE, Key::Home);
+    press(&mut harness, Modifiers::COMMAND, Key::Z);
+    assert_eq!(
+        view(&harness).center_world,
+        up,
+        "the arrow moves before Home"
+    );
+    press(&mut harness, Modifiers::COMMAND | Modifiers::SHIFT, Key::Z);
+    assert_eq!(view(&harness).center_world, start, "Home again");
+}
+
+#[test]
 fn named_views_are_kept_per_scene_and_go_back_to_the_named_camera() {
     let folder = tempfile::tempdir().unwrap();
     let scene = folder.path().join("a.txt");

@@ -300,3 +300,59 @@ fn shows_both_images(renderer: Option<&str>, environment: &[(&str, &str)]) -> Sh
         std::thread::sleep(Duration::from_millis(500));
     }
 }
+
+/// Live reload with no input at all: the scene file is edited on disk (its sphere turns from red
+/// to green) while nobody touches the window, and the window shows the new scene by itself.
+#[test]
+fn an_edited_scene_appears_without_any_input() {
+    let (_xvfb, display) = start_xvfb();
+    let home = tempfile::tempdir().unwrap();
+    let scene = home.path().join("scene.txt");
+    let text =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_01.txt"))
+            .unwrap();
+    std::fs::write(&scene, &text).unwrap();
+    let viewer = viewer_command(&display, home.path())
+        .arg("-input")
+        .arg(&scene)
+        .spawn()
+        .unwrap();
+    let mut viewer = KillOnDrop(viewer);
+    let shot_path = home.path().join("screen.png");
+    let disc_of = |shot: &RgbImage, channel: usize| {
+        blob(shot, |p| {
+            p[channel] > 250 && (0..3).all(|c| c == channel || p[c] < 5)
+        })
+        .2
+    };
+    let wait_for = |viewer: &mut KillOnDrop, channel: usize, seconds: u64| {
+        let deadline = Instant::now() + Duration::from_secs(seconds);
+        loop {
+            if let Ok(Some(status)) = viewer.0.try_wait() {
+                panic!("the viewer exited ({status}): {}", viewer.stderr_text());
+            }
+            if screenshot(&display, &shot_path).is_some_and(|shot| disc_of(&shot, channel) > 2000) {
+                return true;
+            }
+            if Instant::now() > deadline {
+                return false;
+            }
+            std::thread::sleep(Duration::from_millis(300));
+        }
+    };
+    assert!(
+        wait_for(&mut viewer, 0, 90),
+        "no red disc on screen after 90 s"
+    );
+    // Let the first frames pass, then edit the file as an editor would.
+    std::thread::sleep(Duration::from_secs(1));
+    std::fs::write(
+        &scene,
+        text.replace("diffuseColor 1 0 0", "diffuseColor 0 1 0"),
+    )
+    .unwrap();
+    assert!(
+        wait_for(&mut viewer, 1, 10),
+        "the edited scene (a green disc) was not shown within 10 s without input"
+    );
+}

@@ -75,8 +75,25 @@ pub(crate) enum Action {
 }
 
 impl ViewerApp {
-    /// Carries out `action`.
+    /// Carries out `action`. A one-shot view change is a step of the history of its own.
     pub(crate) fn apply(&mut self, action: Action) {
+        let one_shot = matches!(
+            action,
+            Action::FrameAll
+                | Action::ResetView
+                | Action::ResetDepth
+                | Action::AutoRange
+                | Action::UseDepthRange(_)
+                | Action::GoToView(_)
+        );
+        let before = self.view;
+        self.carry_out(action);
+        if one_shot {
+            self.history.one_shot(&before, &self.view);
+        }
+    }
+
+    fn carry_out(&mut self, action: Action) {
         match action {
             Action::OpenDialog(kind) => self.open_dialog(kind),
             // In a browser page, the path field holds an address on the page's site.
@@ -334,8 +351,10 @@ impl ViewerApp {
         }
     }
 
-    /// Where no file dialog can be shown, the typed paths do the job: export and save go to the
-    /// side panel's paths; open takes the typed scene path when there is one.
+    /// Where no file dialog can be shown: export and save go to the side panel's typed paths (the
+    /// section says so under them, and replacing a file is asked first); open and compare say
+    /// that no dialog is available and do nothing else (reopening the typed scene would reset
+    /// the view and its history).
     #[cfg(not(target_arch = "wasm32"))]
     fn without_dialog(&mut self, kind: DialogKind, reason: &'static str) {
         let export = &self.settings.export;
@@ -343,10 +362,7 @@ impl ViewerApp {
         let action = match kind {
             DialogKind::Export => typed(&export.path).map(Action::ExportTo),
             DialogKind::SaveScene => typed(&export.scene_path).map(Action::SaveViewTo),
-            DialogKind::Open => typed(&self.fields.path_text).map(Action::Open),
-            DialogKind::CompareImage(kind) => {
-                typed(&self.compare.path_text).map(|path| Action::CompareImage(path, kind))
-            }
+            DialogKind::Open | DialogKind::CompareImage(_) => None,
         };
         match action {
             Some(action) => self.apply(action),

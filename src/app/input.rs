@@ -77,10 +77,12 @@ impl ViewerApp {
         for action in pressed {
             self.apply(action);
         }
-        if let Some(WatchState::Changed) =
-            self.watcher.as_ref().map(super::reload::FileWatcher::poll)
-        {
-            self.reload();
+        // The watcher wakes the window at each change; while the file settles, the window wakes
+        // itself when it will have (no input need come).
+        match self.watcher.as_ref().map(super::reload::FileWatcher::poll) {
+            Some(WatchState::Changed) => self.reload(),
+            Some(WatchState::Settling(wait)) => ctx.request_repaint_after(wait),
+            _ => {}
         }
         if let Some(file) = dropped {
             // A browser page gives the name and reads the bytes later; a desktop gives the path.

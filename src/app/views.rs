@@ -110,6 +110,14 @@ impl History {
     /// change, the view before the change becomes a step to undo to.
     pub fn observe(&mut self, view: &View, now: Instant) {
         let current = SavedView::of(view);
+        // A change that has been quiet long enough is a step, even if no frame came to see it
+        // settle (an idle window draws nothing): the next change must not replace it.
+        if let Some((at, pending)) = self.changed
+            && pending != current
+            && now.duration_since(at) >= HISTORY_QUIET
+        {
+            self.commit(pending);
+        }
         let Some(recorded) = self.recorded else {
             self.recorded = Some(current);
             return;
@@ -123,6 +131,18 @@ impl History {
             None => self.changed = Some((now, current)),
             Some((at, _)) if now.duration_since(at) >= HISTORY_QUIET => self.commit(current),
             Some(_) => {}
+        }
+    }
+
+    /// A one-shot change (Home, frame all, a named view, a fitted depth range): the view before
+    /// it, whether settled or not, and the view after it are each a step of their own.
+    pub fn one_shot(&mut self, before: &View, after: &View) {
+        let (before, after) = (SavedView::of(before), SavedView::of(after));
+        if self.recorded != Some(before) {
+            self.commit(before);
+        }
+        if after != before {
+            self.commit(after);
         }
     }
 
@@ -206,5 +226,35 @@ mod tests {
         assert_eq!(history.redo(&view(0.0)), Some(view(10.0)));
         assert_eq!(history.redo(&view(10.0)), Some(view(20.0)));
         assert_eq!(history.redo(&view(20.0)), None);
+    }
+
+    #[test]
+    fn a_change_left_alone_is_a_step_even_when_no_frame_saw_it_settle() {
+        // Drag, then nothing (an idle window draws no frame), then Home much later.
+        let start = Instant::now();
+        let mut history = History::default();
+        history.reset(&view(0.0));
+        history.observe(&view(5.0), start);
+        history.observe(&view(0.0), start + Duration::from_secs(3));
+        assert_eq!(history.undo(&view(0.0)), Some(view(5.0)));
+        assert_eq!(history.undo(&view(5.0)), Some(view(0.0)));
+        assert_eq!(history.redo(&view(0.0)), Some(view(5.0)));
+    }
+
+    #[test]
+    fn a_one_shot_change_keeps_the_unsettled_view_before_it() {
+        // Arrow keys (a change still settling), then Home at once.
+        let start = Instant::now();
+        let mut history = History::default();
+        history.reset(&view(0.0));
+        history.observe(&view(1.0), start);
+        history.observe(&view(2.0), start + Duration::from_millis(50));
+        history.one_shot(&view(2.0), &view(0.0));
+        history.observe(&view(0.0), start + Duration::from_millis(60));
+        assert_eq!(history.undo(&view(0.0)), Some(view(2.0)));
+        assert_eq!(history.undo(&view(2.0)), Some(view(0.0)));
+        assert_eq!(history.undo(&view(0.0)), None);
+        assert_eq!(history.redo(&view(0.0)), Some(view(2.0)));
+        assert_eq!(history.redo(&view(2.0)), Some(view(0.0)));
     }
 }

@@ -35,6 +35,9 @@ pub enum UsageError {
         /// The value as given.
         found: String,
     },
+    /// A depth range whose width is beyond the largest number (`-depth -1e308 1e308`).
+    #[error("{0}: DMAX − DMIN is beyond the largest number (1.8e308): give a narrower range")]
+    DepthRangeTooWide(Flag),
     /// An image size outside the supported range.
     #[error(
         "{flag}: {width_px}×{height_px} is out of range: each side 1..={MAX_SIDE_PX}, \

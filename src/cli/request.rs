@@ -243,15 +243,21 @@ impl RawArgs {
         let filter = match filter_flag {
             Some(flag) => {
                 let text = self.text(flag, 0)?;
-                let size = text
-                    .parse::<f32>()
+                let bad = |what| UsageError::BadNumber {
+                    flag,
+                    what,
+                    found: text.to_owned(),
+                };
+                let wide = text
+                    .parse::<f64>()
                     .ok()
                     .filter(|size| size.is_finite())
-                    .ok_or_else(|| UsageError::BadNumber {
-                        flag,
-                        what: "a size in pixels",
-                        found: text.to_owned(),
-                    })?;
+                    .ok_or_else(|| bad("a size in pixels"))?;
+                // Sizes are kept in 32 bits: one that would become 0 there is refused as given.
+                let size = wide as f32;
+                if wide > 0.0 && size == 0.0 {
+                    return Err(bad("a size in pixels of at least 1e-38"));
+                }
                 let make = FILTER_FLAGS
                     .iter()
                     .find(|(f, _)| *f == flag)
@@ -311,11 +317,15 @@ impl RawArgs {
         if !self.has(flag) {
             return Ok(None);
         }
+        let (min_t, max_t) = (
+            self.finite(flag, 0, "a number (DMIN)")?,
+            self.finite(flag, 1, "a number (DMAX)")?,
+        );
+        if !(max_t - min_t).is_finite() {
+            return Err(UsageError::DepthRangeTooWide(flag));
+        }
         Ok(Some(DepthOutput {
-            range: DepthRange::new(
-                self.finite(flag, 0, "a number (DMIN)")?,
-                self.finite(flag, 1, "a number (DMAX)")?,
-            ),
+            range: DepthRange::new(min_t, max_t),
             path: self.output_path(flag, 2)?.unwrap_or_default(),
         }))
     }

@@ -202,26 +202,13 @@ impl<'a> Parser<'a> {
         Ok((DVec3::new(x, y, z), location))
     }
 
-    /// A colour channel, read as a 32-bit float as the course's own parser did.
+    /// A colour channel: a number as any other (finite, at most 1e150), kept as a 32-bit float
+    /// as the course's own parser did; beyond the 32-bit range it saturates (above 1 every
+    /// channel shows full anyway).
     fn channel(&mut self, what: &'static str) -> Result<f32, ParseError> {
-        let token = self.next(|| format!("a number ({what})"))?;
-        match token.text.parse::<f32>() {
-            Ok(value) if value.is_finite() => Ok(value),
-            Ok(_) => error(
-                token.location,
-                ParseErrorKind::NotFinite {
-                    what,
-                    found: quote(token.text),
-                },
-            ),
-            Err(_) => error(
-                token.location,
-                ParseErrorKind::NotANumber {
-                    what,
-                    found: quote(token.text),
-                },
-            ),
-        }
+        let (value, _) = self.number(what)?;
+        let largest = f64::from(f32::MAX);
+        Ok(value.clamp(-largest, largest) as f32)
     }
 
     fn colour(&mut self, what: &'static str) -> Result<Vec3, ParseError> {

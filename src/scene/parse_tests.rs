@@ -218,8 +218,13 @@ fn numbers_must_be_numbers_and_finite() {
         message,
         "sphere center must be at most 1e150 in magnitude, found '1e200'"
     );
-    let (_, _, message) = fail("Background { color 1e39 0 0 }");
-    assert!(message.contains("must be a finite number"), "{message}");
+    // Colours follow the same rule; beyond the 32-bit range they are kept as its largest value.
+    let (_, _, message) = fail("Background { color 1e200 0 0 }");
+    assert!(message.contains("at most 1e150 in magnitude"), "{message}");
+    let scene = parse(&format!(
+        "{CAMERA}Background {{ color 1e39 -1e39 1e-50 }}\nGroup {{ numObjects 0 }}"
+    ));
+    assert_eq!(scene.background.to_array(), [f32::MAX, -f32::MAX, 0.0]);
 }
 
 #[test]
