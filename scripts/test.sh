@@ -10,7 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(xvfb xauth xdotool imagemagick mesa-vulkan-drivers libvulkan1 libgl1-mesa-dri libegl1
+packages=(xvfb xauth xdotool imagemagick strace mesa-vulkan-drivers libvulkan1 libgl1-mesa-dri libegl1
           libxkbcommon-x11-0 libx11-xcb1 libxcursor1 libxrandr2 libxi6 fonts-dejavu-core)
 if command -v dpkg >/dev/null 2>&1; then
   missing=()

@@ -205,6 +205,110 @@ fn a_streamed_command_that_cannot_write_its_files_replaces_none() {
     a_limit_midway_replaces_nothing("c.tga", "d.tga", &["c.tga", "d.tga"]);
 }
 
+#[test]
+fn a_rename_that_fails_midway_puts_back_every_file_already_replaced() {
+    // The second rename of the commit fails (an I/O error injected by strace, as a disk or a
+    // network folder may give): the first file, already replaced, is put back; the second was
+    // never touched; a new file that had been renamed into place is removed again.
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_02.txt");
+    let scene = scene.to_str().unwrap();
+    for existed in [true, false] {
+        let colour = folder.path().join("keep.tga");
+        let depth = folder.path().join("d.tga");
+        if existed {
+            std::fs::write(&colour, b"old colour").unwrap();
+        } else {
+            let _ = std::fs::remove_file(&colour);
+        }
+        std::fs::write(&depth, b"old depth").unwrap();
+        let output = Command::new("strace")
+            .current_dir(folder.path())
+            .args(["-f", "-qq", "-o", "/dev/null"])
+            .args(["-e", "trace=rename,renameat,renameat2"])
+            .args(["-e", "inject=rename,renameat,renameat2:error=EIO:when=2"])
+            .arg(binary())
+            .args(["-input", scene, "-size", "50", "50"])
+            .args(["-output", "keep.tga", "-depth", "9", "10", "d.tga"])
+            .output()
+            .expect("strace runs (scripts/test.sh installs it)");
+        let text = assert_one_line_error(&output);
+        assert_eq!(output.status.code(), Some(1), "{text}");
+        assert!(text.contains("d.tga: cannot write"), "{text}");
+        if existed {
+            assert!(
+                std::fs::read(&colour).unwrap() == b"old colour",
+                "keep.tga is not put back"
+            );
+        } else {
+            assert!(!colour.exists(), "the new file is removed again");
+        }
+        assert!(
+            std::fs::read(&depth).unwrap() == b"old depth",
+            "d.tga replaced"
+        );
+        let mut left = names_in(folder.path());
+        left.retain(|name| name.starts_with('.'));
+        assert!(left.is_empty(), "left behind: {left:?}");
+    }
+}
+
+#[test]
+fn a_link_is_written_through_and_never_to_a_device_or_with_set_id_bits() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_02.txt");
+    let scene = scene.to_str().unwrap();
+    let link = |target: &str, name: &str| {
+        std::os::unix::fs::symlink(target, folder.path().join(name)).unwrap();
+    };
+    // One file by two names through a link whose target does not exist yet: refused.
+    link("o.tga", "link.tga");
+    let output = run_in(
+        folder.path(),
+        &[
+            "-input", scene, "-output", "o.tga", "-depth", "8", "12", "link.tga",
+        ],
+    );
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(2), "{text}");
+    assert!(text.contains("same file"), "{text}");
+    assert!(!folder.path().join("o.tga").exists());
+    // A link to a file: the file gets the picture (its mode kept without the set-user-id bit
+    // and write for others), the link stays a link.
+    let real = folder.path().join("real.png");
+    std::fs::write(&real, b"old").unwrap();
+    std::fs::set_permissions(&real, std::fs::Permissions::from_mode(0o4777)).unwrap();
+    link("real.png", "out.png");
+    let output = run_in(folder.path(), &["-input", scene, "-output", "out.png"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let out = folder.path().join("out.png");
+    assert!(
+        std::fs::symlink_metadata(&out)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert!(
+        image::open(&real).is_ok(),
+        "the link's target holds the picture"
+    );
+    let mode = std::fs::metadata(&real).unwrap().permissions().mode() & 0o7777;
+    assert_eq!(mode, 0o775);
+    // A link to a device: refused, the device untouched, the link still a link.
+    link("/dev/null", "null.png");
+    let output = run_in(folder.path(), &["-input", scene, "-output", "null.png"]);
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(1), "{text}");
+    assert!(text.contains("not a regular file"), "{text}");
+    assert!(
+        std::fs::symlink_metadata(folder.path().join("null.png"))
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert!(!std::fs::metadata("/dev/null").unwrap().is_file());
+}
+
 // --- 3. Modes -----------------------------------------------------------------------------
 
 #[test]

@@ -2,9 +2,17 @@
 //!
 //! * **All or nothing**: a [`FileSet`] writes every file of a run to a temporary file beside its
 //!   destination first (synced to disk), and only when all of them are complete renames them over
-//!   their destinations. A failure on any file leaves every old file as it was.
+//!   their destinations. A failure on any file leaves every old file as it was: while the renames
+//!   run, each file they replace is kept under a second name (a hard link, or a copy where the
+//!   file system has none), and a rename that fails puts every file already replaced back. A
+//!   terminating signal waits for the renames to end (they take microseconds), so it never
+//!   splits them. What remains is a power cut between two renames.
 //! * **Modes** (Unix): a new file gets the mode the umask gives (0644 under the usual 022); a
-//!   replaced file keeps the mode it had. Windows has no modes ([`crate::platform::files`]).
+//!   replaced file keeps the mode it had, without set-id bits or write for others. Windows has no
+//!   modes ([`crate::platform::files`]).
+//! * **Links**: a destination that is a symbolic link is written through, as `cp` and the shell
+//!   do: the file it leads to is replaced and the link stays; one that leads to something other
+//!   than a regular file (a device such as `/dev/null`, a pipe) is refused.
 //! * **Nothing left behind**: a temporary file is removed when its write fails or is abandoned;
 //!   [`remove_temporary_files`] removes the ones still open when the program is stopped by a
 //!   signal (the binary calls it from its signal handler thread).
@@ -30,6 +38,27 @@ pub enum WriteError {
         path: PathBuf,
         /// The extensions that would do, as a list for the message.
         expected: &'static str,
+    },
+    /// A rename failed, and a file already replaced could not be put back: its old content is
+    /// in `kept`.
+    #[error(
+        "{}: cannot write: {source}; and '{}' could not be put back ({restore}): its old \
+         content is in '{}'",
+        path.display(),
+        replaced.display(),
+        kept.display()
+    )]
+    NotPutBack {
+        /// The destination whose rename failed.
+        path: PathBuf,
+        /// Why.
+        source: std::io::Error,
+        /// A destination already replaced.
+        replaced: PathBuf,
+        /// Why it could not be put back.
+        restore: std::io::Error,
+        /// Where its old content is.
+        kept: PathBuf,
     },
     /// Creating, writing or renaming failed.
     #[error("{}: cannot write: {source}", path.display())]
@@ -64,9 +93,14 @@ fn open_temporaries() -> std::sync::MutexGuard<'static, BTreeSet<PathBuf>> {
         .unwrap_or_else(PoisonError::into_inner)
 }
 
+/// Held while a [`FileSet`] renames its files, so that a signal handler never runs between two
+/// renames.
+static COMMITTING: Mutex<()> = Mutex::new(());
+
 /// Removes every temporary file still being written. For the signal handler: the program is
-/// about to exit without running destructors.
+/// about to exit without running destructors. Waits for renames under way to end first.
 pub fn remove_temporary_files() {
+    let _committing = COMMITTING.lock().unwrap_or_else(PoisonError::into_inner);
     for path in open_temporaries().iter() {
         let _ = std::fs::remove_file(path);
     }
@@ -135,12 +169,12 @@ pub(crate) struct Staging {
 }
 
 impl Staging {
-    /// Creates the temporary file for `destination` (with `mode` before the umask).
+    /// Creates the temporary file for `destination` (with `mode` before the umask). A symbolic
+    /// link is written through: the file it leads to is replaced, and the link stays.
     pub(crate) fn begin(destination: &Path, mode: u32) -> Result<Self, WriteError> {
+        let destination = &files::through_links(destination);
         let error = |source| io_error(destination, source);
-        if destination.is_dir() {
-            return Err(error(is_a_folder()));
-        }
+        check_not_special(destination).map_err(error)?;
         let temporary = Temporary::create(folder_of(destination), mode).map_err(error)?;
         Ok(Self {
             staged: Staged {
@@ -308,7 +342,8 @@ impl FileSet {
     }
 
     /// Renames every staged file over its destination, in the order staged. A replaced file's
-    /// mode is kept. Returns the destinations.
+    /// mode is kept. All or nothing: a rename that fails puts back every file replaced before it
+    /// (see the module docs). Returns the destinations.
     pub fn commit(self) -> Result<Vec<PathBuf>, WriteError> {
         // Every destination can be replaced now, or none is (on Windows, a file another
         // program holds open or a read-only one).
@@ -316,20 +351,123 @@ impl FileSet {
             files::check_replaceable(&staged.destination)
                 .map_err(|source| io_error(&staged.destination, source))?;
         }
-        let mut written = Vec::with_capacity(self.staged.len());
-        for mut staged in self.staged {
-            let destination = staged.destination;
-            let error = |source| io_error(&destination, source);
-            if let Ok(existing) = std::fs::metadata(&destination) {
-                files::keep_mode(&existing, &staged.temporary.path).map_err(error)?;
+        let _committing = COMMITTING.lock().unwrap_or_else(PoisonError::into_inner);
+        // Each file to be replaced, kept under a second name until every rename has succeeded.
+        let mut kept: Vec<Option<OldFile>> = Vec::with_capacity(self.staged.len());
+        for staged in &self.staged {
+            let destination = &staged.destination;
+            if let Ok(existing) = std::fs::metadata(destination) {
+                files::keep_mode(&existing, &staged.temporary.path)
+                    .map_err(|source| io_error(destination, source))?;
             }
+            let old = match std::fs::symlink_metadata(destination) {
+                Ok(_) => Some(
+                    OldFile::keep(destination).map_err(|source| io_error(destination, source))?,
+                ),
+                Err(_) => None,
+            };
+            kept.push(old);
+        }
+        let mut written: Vec<PathBuf> = Vec::with_capacity(self.staged.len());
+        for mut staged in self.staged {
             // Closed before the rename (Windows cannot rename an open file).
             staged.temporary.file = None;
-            files::rename_over(&staged.temporary.path, &destination).map_err(error)?;
+            if let Err(source) = files::rename_over(&staged.temporary.path, &staged.destination) {
+                return Err(put_back(&written, &mut kept, staged.destination, source));
+            }
             open_temporaries().remove(&staged.temporary.path);
-            written.push(destination);
+            written.push(staged.destination);
+        }
+        // Every rename succeeded: the old files go.
+        for old in kept.into_iter().flatten() {
+            old.forget();
         }
         Ok(written)
+    }
+}
+
+/// A replaced file's old content, kept under a hidden name beside it while the renames run.
+struct OldFile {
+    /// The hidden name.
+    path: PathBuf,
+}
+
+impl OldFile {
+    /// Keeps `destination` under a new hidden name in its folder: a hard link, or a copy.
+    fn keep(destination: &Path) -> std::io::Result<Self> {
+        let folder = folder_of(destination);
+        loop {
+            let number = TEMPORARY_COUNTER.fetch_add(1, Ordering::Relaxed);
+            let path = folder.join(format!(
+                "{TEMPORARY_PREFIX}{}-{number}.old",
+                std::process::id()
+            ));
+            let linked = std::fs::hard_link(destination, &path);
+            match linked {
+                Ok(()) => return Ok(Self { path }),
+                Err(error) if error.kind() == std::io::ErrorKind::AlreadyExists => {}
+                Err(_) => {
+                    // No hard links here (or none allowed for this file): a copy.
+                    let mut copy = files::create_new(&path, 0o600)?;
+                    let copied = File::open(destination)
+                        .and_then(|mut from| std::io::copy(&mut from, &mut copy))
+                        .and_then(|_| copy.sync_all());
+                    drop(copy);
+                    if let Err(error) = copied {
+                        let _ = std::fs::remove_file(&path);
+                        return Err(error);
+                    }
+                    if let Ok(existing) = std::fs::metadata(destination) {
+                        files::keep_mode(&existing, &path)?;
+                    }
+                    return Ok(Self { path });
+                }
+            }
+        }
+    }
+
+    /// The old content is not needed any more.
+    fn forget(self) {
+        let _ = std::fs::remove_file(&self.path);
+    }
+}
+
+/// After the rename over `failed` went wrong with `source`: puts back every file in `written`
+/// (its old content where there was one, nothing where there was none), and forgets the other
+/// old files. The error names what could not be put back, if anything.
+fn put_back(
+    written: &[PathBuf],
+    kept: &mut [Option<OldFile>],
+    failed: PathBuf,
+    source: std::io::Error,
+) -> WriteError {
+    let mut not_put_back = None;
+    for (index, destination) in written.iter().enumerate().rev() {
+        let restored = match kept[index].take() {
+            Some(old) => match files::rename_over(&old.path, destination) {
+                Ok(()) => Ok(()),
+                Err(error) => Err((error, old.path)),
+            },
+            None => std::fs::remove_file(destination).map_err(|error| (error, PathBuf::new())),
+        };
+        if let Err((restore, kept_at)) = restored
+            && not_put_back.is_none()
+        {
+            not_put_back = Some((destination.clone(), restore, kept_at));
+        }
+    }
+    for old in kept.iter_mut().filter_map(Option::take) {
+        old.forget();
+    }
+    match not_put_back {
+        None => io_error(&failed, source),
+        Some((replaced, restore, kept)) => WriteError::NotPutBack {
+            path: failed,
+            source,
+            replaced,
+            restore,
+            kept,
+        },
     }
 }
 
@@ -344,12 +482,24 @@ fn is_a_folder() -> std::io::Error {
     std::io::Error::new(std::io::ErrorKind::IsADirectory, "is a folder")
 }
 
-/// `path` is not a folder, a temporary file can be created (and is removed) beside it, and the
-/// file there, if any, can be replaced.
-pub(crate) fn check_folder_writable(path: &Path) -> Result<(), WriteError> {
-    if path.is_dir() {
-        return Err(io_error(path, is_a_folder()));
+/// A destination (its links followed) that is there must be a regular file: never a folder, a
+/// device (a link to `/dev/null`), a named pipe or a socket.
+fn check_not_special(destination: &Path) -> std::io::Result<()> {
+    match std::fs::metadata(destination) {
+        Ok(metadata) if metadata.is_dir() => Err(is_a_folder()),
+        Ok(metadata) if !metadata.is_file() => Err(std::io::Error::new(
+            std::io::ErrorKind::InvalidInput,
+            "not a regular file (a device, a pipe or a socket): give a file to write",
+        )),
+        _ => Ok(()),
     }
+}
+
+/// `path` (its links followed) is not a folder or a device, a temporary file can be created (and
+/// is removed) beside it, and the file there, if any, can be replaced.
+pub(crate) fn check_folder_writable(path: &Path) -> Result<(), WriteError> {
+    let path = &files::through_links(path);
+    check_not_special(path).map_err(|source| io_error(path, source))?;
     Temporary::create(folder_of(path), 0o600)
         .map(drop)
         .and_then(|()| files::check_replaceable(path))

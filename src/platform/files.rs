@@ -109,12 +109,17 @@ pub fn create_new(path: &Path, mode: u32) -> std::io::Result<File> {
     options.open(path)
 }
 
-/// Gives `temporary`, about to replace a file described by `replaced`, that file's mode (Unix).
-/// Nothing on Windows (see the module docs).
+/// Gives `temporary`, about to replace a file described by `replaced`, that file's mode (Unix),
+/// without the set-id and sticky bits and without write for others. Nothing on Windows (see the
+/// module docs).
 pub fn keep_mode(replaced: &std::fs::Metadata, temporary: &Path) -> std::io::Result<()> {
     #[cfg(unix)]
     {
-        std::fs::set_permissions(temporary, replaced.permissions())
+        use std::os::unix::fs::PermissionsExt as _;
+        // Never the set-user-id, set-group-id or sticky bits, nor writable by everyone: an
+        // image is not a program, and a file made for one user stays that user's.
+        let mode = replaced.permissions().mode() & 0o775;
+        std::fs::set_permissions(temporary, std::fs::Permissions::from_mode(mode))
     }
     #[cfg(not(unix))]
     {
@@ -224,8 +229,36 @@ pub enum FileIdentity {
     New(PathBuf),
 }
 
-/// The identity of the file `path` names; `None` when not even its folder exists.
+/// Symbolic links a path is followed through before giving up (as the kernel does).
+const MAX_LINKS: usize = 40;
+
+/// The file `path` names once its symbolic links are followed, as `cp` and the shell follow
+/// them when they write: each link's target, relative to the link's folder, until a name that
+/// is no link (which need not exist yet). A loop or an unreadable link ends the walk there.
+pub fn through_links(path: &Path) -> PathBuf {
+    let mut current = path.to_path_buf();
+    for _ in 0..MAX_LINKS {
+        let is_link = std::fs::symlink_metadata(&current)
+            .is_ok_and(|metadata| metadata.file_type().is_symlink());
+        if !is_link {
+            break;
+        }
+        let Ok(target) = std::fs::read_link(&current) else {
+            break;
+        };
+        current = if target.is_absolute() {
+            target
+        } else {
+            folder_of(&current).join(target)
+        };
+    }
+    current
+}
+
+/// The identity of the file `path` names (through its links); `None` when not even its folder
+/// exists.
 pub fn identity(path: &Path) -> Option<FileIdentity> {
+    let path = &through_links(path);
     if let Some(existing) = existing_identity(path) {
         return Some(existing);
     }
