@@ -389,7 +389,13 @@ fn interrupt_a_write(folder: &Path, signal: &str) -> Option<std::process::ExitSt
 
 #[test]
 fn a_termination_signal_during_the_write_leaves_no_temporary_file() {
-    for (signal, code) in [("-TERM", 143), ("-INT", 130)] {
+    for (signal, code) in [
+        ("-TERM", 143),
+        ("-INT", 130),
+        ("-QUIT", 131),
+        ("-USR1", 138),
+        ("-ALRM", 142),
+    ] {
         let folder = tempfile::tempdir().unwrap();
         let status = (0..5)
             .find_map(|_| interrupt_a_write(folder.path(), signal))
@@ -409,6 +415,42 @@ fn a_termination_signal_during_the_write_leaves_no_temporary_file() {
             "{signal}: no output is half there: {left:?}"
         );
     }
+}
+
+#[test]
+fn a_killed_run_s_temporary_files_are_removed_by_the_next_run_in_that_folder() {
+    // A run killed with SIGKILL (nothing can be caught) leaves its temporary files; the next run
+    // writing to that folder removes those of processes that have ended, and never a live
+    // process's, nor a kept old file.
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_02.txt");
+    let stale = || -> Vec<String> {
+        names_in(folder.path())
+            .into_iter()
+            .filter(|n| n.starts_with(".raytracer-"))
+            .collect()
+    };
+    for _ in 0..20 {
+        let _ = interrupt_a_write(folder.path(), "-KILL");
+        if !stale().is_empty() {
+            break;
+        }
+    }
+    assert!(!stale().is_empty(), "no killed run left a temporary file");
+    // A live process's temporary file (this test's own process id) and a kept old file stay.
+    let live = format!(".raytracer-{}-0-0.tmp", std::process::id());
+    std::fs::write(folder.path().join(&live), b"live").unwrap();
+    std::fs::write(folder.path().join(".raytracer-1-0.old"), b"old").unwrap();
+    let output = run_in(
+        folder.path(),
+        &["-input", scene.to_str().unwrap(), "-output", "new.png"],
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    let left: Vec<String> = names_in(folder.path())
+        .into_iter()
+        .filter(|n| n.starts_with(".raytracer-"))
+        .collect();
+    assert_eq!(left, [".raytracer-1-0.old".to_owned(), live]);
 }
 
 // --- 8. Closed pipes and full devices --------------------------------------------------------

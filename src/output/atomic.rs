@@ -116,6 +116,7 @@ struct Temporary {
 impl Temporary {
     /// Creates a new temporary file in `folder` with `mode` (before the umask).
     fn create(folder: &Path, mode: u32) -> std::io::Result<Self> {
+        sweep_stale_temporaries(folder);
         loop {
             let number = TEMPORARY_COUNTER.fetch_add(1, Ordering::Relaxed);
             let nanos = std::time::SystemTime::now()
@@ -142,6 +143,51 @@ impl Temporary {
                     }
                 }
             }
+        }
+    }
+}
+
+impl Temporary {
+    /// Removes the file now, saying whether that worked (a folder may let files be created but
+    /// not removed).
+    fn remove(mut self) -> std::io::Result<()> {
+        self.file = None;
+        open_temporaries().remove(&self.path);
+        std::fs::remove_file(&self.path)
+    }
+}
+
+/// Folders whose stale temporary files this run has removed already.
+static SWEPT_FOLDERS: Mutex<BTreeSet<PathBuf>> = Mutex::new(BTreeSet::new());
+
+/// Removes, once per run and folder, the temporary files (`.raytracer-PID-….tmp`) that a process
+/// no longer running left there (one killed by SIGKILL or a power cut). A kept old file
+/// (`….old`) is never removed: it may hold the only copy of a file's old content. Where it cannot
+/// be told whether the process still runs (Windows), nothing is removed.
+fn sweep_stale_temporaries(folder: &Path) {
+    let first_time = SWEPT_FOLDERS
+        .lock()
+        .unwrap_or_else(PoisonError::into_inner)
+        .insert(folder.to_path_buf());
+    if !first_time {
+        return;
+    }
+    let Ok(entries) = std::fs::read_dir(folder) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let name = entry.file_name();
+        let Some(name) = name.to_str() else { continue };
+        let pid = name
+            .strip_prefix(TEMPORARY_PREFIX)
+            .filter(|rest| rest.ends_with(".tmp"))
+            .and_then(|rest| rest.split('-').next())
+            .and_then(|pid| pid.parse::<u32>().ok());
+        if let Some(pid) = pid
+            && pid != std::process::id()
+            && files::process_has_ended(pid)
+        {
+            let _ = std::fs::remove_file(entry.path());
         }
     }
 }
@@ -501,7 +547,17 @@ pub(crate) fn check_folder_writable(path: &Path) -> Result<(), WriteError> {
     let path = &files::through_links(path);
     check_not_special(path).map_err(|source| io_error(path, source))?;
     Temporary::create(folder_of(path), 0o600)
-        .map(drop)
+        .and_then(|probe| {
+            probe.remove().map_err(|error| {
+                std::io::Error::new(
+                    error.kind(),
+                    format!(
+                        "the folder lets files be created but not removed ({error}), so a run \
+                         would leave its temporary files there"
+                    ),
+                )
+            })
+        })
         .and_then(|()| files::check_replaceable(path))
         .map_err(|source| io_error(path, source))
 }

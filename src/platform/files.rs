@@ -211,6 +211,29 @@ pub fn folder_of(path: &Path) -> &Path {
     }
 }
 
+/// Whether the process `pid` has ended (so a temporary file it left is stale). `false` where it
+/// cannot be told: it may run as another user (it exists), or this is not Unix.
+pub fn process_has_ended(pid: u32) -> bool {
+    #[cfg(unix)]
+    {
+        let Some(pid) = i32::try_from(pid)
+            .ok()
+            .and_then(rustix::process::Pid::from_raw)
+        else {
+            return false;
+        };
+        matches!(
+            rustix::process::test_kill_process(pid),
+            Err(rustix::io::Errno::SRCH)
+        )
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = pid;
+        false
+    }
+}
+
 /// A file's identity; see the module docs.
 #[derive(Debug, PartialEq, Eq)]
 pub enum FileIdentity {

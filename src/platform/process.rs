@@ -5,8 +5,9 @@
 //! * [`handle_termination_signals`]: when the user or the system asks the program to stop, the
 //!   caller's clean-up runs (the command line removes the temporary files being written) and the
 //!   program ends — at once on the command line, after the viewer has saved its settings in the
-//!   window. On Unix that is SIGINT, SIGTERM or SIGHUP, and the program ends with 128 + the
-//!   signal's number, as shells report it; SIGXFSZ (a file-size limit) is caught so that the
+//!   window. On Unix that is SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM or
+//!   SIGVTALRM (every signal whose default action ends the program, but SIGKILL and a crash's),
+//!   and the program ends with 128 + the signal's number, as shells report it; SIGXFSZ (a file-size limit) is caught so that the
 //!   write fails with an error instead of killing the program. On Windows it is the console's
 //!   Ctrl-C and Ctrl-Break (through the `ctrlc` crate), both reported as an interrupt: status
 //!   130, as Ctrl-C gives on Unix. Closing the console window ends the program at once (Windows
@@ -111,7 +112,9 @@ fn stop(signal: i32, on_signal: OnSignal, clean_up: fn()) {
 /// default action (the program ends at once).
 #[cfg(unix)]
 pub fn handle_termination_signals(on_signal: OnSignal, clean_up: fn()) {
-    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM, SIGXFSZ};
+    use signal_hook::consts::{
+        SIGALRM, SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGUSR1, SIGUSR2, SIGVTALRM, SIGXFSZ,
+    };
     // A file-size limit makes writes fail (EFBIG) instead of killing the program.
     let _ =
         signal_hook::flag::register(SIGXFSZ, Arc::new(std::sync::atomic::AtomicBool::new(false)));
@@ -122,8 +125,12 @@ pub fn handle_termination_signals(on_signal: OnSignal, clean_up: fn()) {
     let spawned = std::thread::Builder::new()
         .name("signals".into())
         .spawn(move || {
-            let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP])
-            else {
+            // Every signal whose default action ends the program and that a user or a system
+            // sends to stop one (not SIGKILL, which cannot be caught, nor a crash's).
+            let stopping = [
+                SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM,
+            ];
+            let Ok(mut signals) = signal_hook::iterator::Signals::new(stopping) else {
                 return;
             };
             let _ = registered.send(());
