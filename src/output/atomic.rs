@@ -180,7 +180,7 @@ fn sweep_stale_temporaries(folder: &Path) {
         let Some(name) = name.to_str() else { continue };
         let pid = name
             .strip_prefix(TEMPORARY_PREFIX)
-            .filter(|rest| rest.ends_with(".tmp"))
+            .filter(|_| Path::new(name).extension().is_some_and(|e| e == "tmp"))
             .and_then(|rest| rest.split('-').next())
             .and_then(|pid| pid.parse::<u32>().ok());
         if let Some(pid) = pid
