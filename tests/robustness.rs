@@ -701,6 +701,26 @@ fn a_request_that_cannot_fit_in_memory_is_refused_with_the_figure() {
     }
 }
 
+#[test]
+fn small_runs_are_not_refused_for_memory_the_program_already_holds() {
+    // Under 250 MB of address space, most of it reserved by the program itself before any
+    // work (code, libraries, thread stacks), a 200×200 render (a peak of about 20 MB) and a 1×1
+    // one run: the check counts what the run adds.
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_02.txt");
+    for size in ["200", "1"] {
+        let output = Command::new("prlimit")
+            .arg("--as=250000000:250000000")
+            .arg(binary())
+            .current_dir(folder.path())
+            .args(["-input", scene.to_str().unwrap(), "-size", size, size])
+            .args(["-output", "c.png"])
+            .output()
+            .unwrap();
+        assert!(output.status.success(), "{size}: {}", stderr(&output));
+    }
+}
+
 // --- 11. No thread can be created -----------------------------------------------------------
 
 #[test]

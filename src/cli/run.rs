@@ -22,7 +22,9 @@ use crate::output::image_file::{check_writable, stage_image};
 use crate::platform::files::{FileIdentity, identity};
 use crate::platform::memory::{available_memory_bytes, peak_memory_bytes};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
-use crate::render::memory::{load_bound_bytes, render_bound_bytes, streamed_bound_bytes};
+use crate::render::memory::{
+    BASELINE_BYTES, load_bound_bytes, render_bound_bytes, streamed_bound_bytes,
+};
 use crate::render::{
     Frame, Quality, View, ViewError, render_with_progress, renders_strip_by_strip,
 };
@@ -43,8 +45,8 @@ pub enum RunError {
     View(#[from] ViewError),
     /// The render needs more memory than the program may use.
     #[error(
-        "{width_px}×{height_px} needs about {needed_mb:.0} MB of memory, and {available_mb:.0} MB \
-         is available: choose a smaller -size or fewer samples"
+        "{width_px}×{height_px} needs about {needed_mb:.0} MB more memory, and {available_mb:.0} \
+         MB is available: choose a smaller -size or fewer samples"
     )]
     Memory {
         /// Image width.
@@ -216,13 +218,16 @@ fn check_distinct_files(request: &RenderRequest) -> Result<(), UsageError> {
     Ok(())
 }
 
-/// Refuses work whose memory bound (`bound` bytes) exceeds what the program may still use.
+/// Refuses work whose memory bound (`bound` bytes) exceeds what the program may still use. The
+/// program itself ([`BASELINE_BYTES`] of the bound) is running already, and what it holds is
+/// not available any more: the part of the bound the run adds is what must fit.
 fn check_memory(request: &RenderRequest, bound: u64) -> Result<u64, RunError> {
+    let added = bound.saturating_sub(BASELINE_BYTES);
     match available_memory_bytes() {
-        Some(available) if bound > available => Err(RunError::Memory {
+        Some(available) if added > available => Err(RunError::Memory {
             width_px: request.width_px,
             height_px: request.height_px,
-            needed_mb: bound as f64 / 1e6,
+            needed_mb: added as f64 / 1e6,
             available_mb: available as f64 / 1e6,
         }),
         _ => Ok(bound),
