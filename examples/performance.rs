@@ -8,10 +8,12 @@
 //! with like on a shared, noisy machine. Peak memory of the million-sphere case is measured in a
 //! child process of its own (`VmHWM` of /proc/self/status).
 
+#[path = "support/timing.rs"]
+mod timing;
+
 use std::fmt::Write as _;
 use std::path::Path;
 use std::process::Command;
-use std::time::Instant;
 
 #[cfg(all(feature = "mimalloc", not(target_os = "macos")))]
 #[global_allocator]
@@ -25,19 +27,7 @@ use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{View, render};
 use raytracer::scene::{Scene, parse_scene};
 use raytracer::{oracle::random_scene, scene::scene_to_text};
-
-fn median_ms(runs: usize, mut run: impl FnMut()) -> f64 {
-    run(); // warm-up
-    let mut times: Vec<f64> = (0..runs)
-        .map(|_| {
-            let started = Instant::now();
-            run();
-            started.elapsed().as_secs_f64() * 1e3
-        })
-        .collect();
-    times.sort_by(f64::total_cmp);
-    times[times.len() / 2]
-}
+use timing::median_ms;
 
 fn view_of(scene: &Scene, side: u32) -> View {
     let mut view = View::of_camera(&scene.camera, side, side, DepthRange::new(0.0, 1.0));
@@ -84,7 +74,7 @@ fn viewer_frame_ms(scene: &Scene, runs: usize) -> f64 {
         quality: Default::default(),
         depth_style: Default::default(),
     };
-    median_ms(runs, || {
+    median_ms(runs, true, || {
         std::hint::black_box(raytracer::app::job::prepare_frame(&job).ok());
     })
 }
@@ -153,7 +143,7 @@ fn dense(count: usize) -> Dense {
         count,
         depth_complexity,
         tests_per_pixel: tests as f64 / (1024.0 * 1024.0),
-        render_ms: median_ms(runs, || {
+        render_ms: median_ms(runs, true, || {
             std::hint::black_box(render(&scene, &view).ok());
         }),
         viewer_ms: viewer_frame_ms(&scene, runs),
@@ -185,14 +175,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let entry = Course {
             name: format!("scene1_0{n}"),
             viewer_ms: viewer_frame_ms(&scene, 15),
-            render_ms: median_ms(15, || {
+            render_ms: median_ms(15, true, || {
                 std::hint::black_box(render(&scene, &view).ok());
             }),
-            oracle_ms: median_ms(3, || {
+            oracle_ms: median_ms(3, true, || {
                 std::hint::black_box(render_reference(&scene, &view).ok());
             }),
-            command_ms: median_ms(9, || whole_command(&text, 2000, false)),
-            oracle_command_ms: median_ms(3, || whole_command(&text, 2000, true)),
+            command_ms: median_ms(9, true, || whole_command(&text, 2000, false)),
+            oracle_command_ms: median_ms(3, true, || whole_command(&text, 2000, true)),
         };
         eprintln!(
             "{}: {:.2} ms render, {:.0} ms oracle",
@@ -205,16 +195,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for count in [10usize, 1_000, 100_000, 1_000_000] {
         let text = scene_to_text(&random_scene(1, count));
         let runs = if count >= 100_000 { 3 } else { 9 };
-        let parse_ms = median_ms(runs, || {
+        let parse_ms = median_ms(runs, true, || {
             std::hint::black_box(parse_scene(&text).ok());
         });
         let scene = parse_scene(&text)?;
         let view = view_of(&scene, 1024);
-        let render_ms = median_ms(runs, || {
+        let render_ms = median_ms(runs, true, || {
             std::hint::black_box(render(&scene, &view).ok());
         });
         let brute_ms = (count <= 1_000).then(|| {
-            median_ms(1, || {
+            median_ms(1, true, || {
                 std::hint::black_box(render_reference(&scene, &view).ok());
             })
         });

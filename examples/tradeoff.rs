@@ -10,9 +10,11 @@
 //! rays a pixel through the careful ray–sphere routine, sharing no code with the supersampler),
 //! and marks the Pareto front.
 
+#[path = "support/timing.rs"]
+mod timing;
+
 use std::fmt::Write as _;
 use std::path::Path;
-use std::time::Instant;
 
 use plotters::prelude::*;
 use raytracer::explore::initial_depth_range;
@@ -21,6 +23,7 @@ use raytracer::oracle::random_scene;
 use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{Filter, Frame, Quality, Sampler, Sampling, View, render_with};
 use raytracer::scene::{Scene, load_scene};
+use timing::median_ms;
 
 /// Side of the study images, pixels.
 const SIDE_PX: u32 = 256;
@@ -119,24 +122,12 @@ fn render_setting(scene: &Scene, view: &View, setting: &Setting) -> Frame {
     frame
 }
 
-fn median_ms(mut run: impl FnMut()) -> f64 {
-    let mut times: Vec<f64> = (0..RUNS)
-        .map(|_| {
-            let started = Instant::now();
-            run();
-            started.elapsed().as_secs_f64() * 1e3
-        })
-        .collect();
-    times.sort_by(f64::total_cmp);
-    times[times.len() / 2]
-}
-
 /// Rays per pixel side of the area-average oracle.
 const ORACLE_GRID: u32 = 32;
 
 fn measure(scene: &Scene, view: &View, reference: &AreaAverage, setting: &Setting) -> Measured {
     let frame = render_setting(scene, view, setting);
-    let time_ms = median_ms(|| {
+    let time_ms = median_ms(RUNS, false, || {
         std::hint::black_box(render_setting(scene, view, setting));
     });
     let (mut sum, mut max, mut wrong) = (0f64, 0f64, 0usize);

@@ -1,6 +1,10 @@
 //! The real `raytracer` binary in a temporary folder: exit statuses (0 ok, 1 scene or file
 //! error, 2 usage), one-line messages, and nothing written when a run fails.
 
+#[path = "common/command.rs"]
+mod command;
+
+use command::{names_in, stderr};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -16,19 +20,6 @@ fn run(folder: &Path, arguments: &[&str]) -> Output {
         .args(arguments)
         .output()
         .unwrap()
-}
-
-fn stderr(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stderr).into_owned()
-}
-
-fn files_in(folder: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(folder)
-        .unwrap()
-        .map(|entry| entry.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    names.sort();
-    names
 }
 
 #[test]
@@ -52,7 +43,7 @@ fn renders_and_exits_zero() {
         ],
     );
     assert!(output.status.success(), "{}", stderr(&output));
-    assert_eq!(files_in(folder.path()), ["c.png", "d.tga"]);
+    assert_eq!(names_in(folder.path()), ["c.png", "d.tga"]);
     let colour = image::open(folder.path().join("c.png")).unwrap();
     assert_eq!((colour.width(), colour.height()), (64, 48));
 }
@@ -73,7 +64,7 @@ fn either_output_alone_is_enough() {
         ],
     );
     assert!(output.status.success(), "{}", stderr(&output));
-    assert_eq!(files_in(folder.path()), ["d.png"]);
+    assert_eq!(names_in(folder.path()), ["d.png"]);
 }
 
 #[test]
@@ -106,7 +97,7 @@ fn usage_errors_exit_two_with_one_line_and_write_nothing() {
             assert_eq!(message.lines().count(), 1, "{arguments:?}: {message}");
         }
     }
-    assert!(files_in(folder.path()).is_empty());
+    assert!(names_in(folder.path()).is_empty());
 }
 
 #[test]
@@ -135,7 +126,7 @@ fn an_unwritable_output_is_refused_before_any_file_is_written() {
             stderr(&output)
         );
         assert_eq!(
-            files_in(folder.path()),
+            names_in(folder.path()),
             ["folder.png"],
             "c.png must not be written"
         );
@@ -184,7 +175,7 @@ fn scene_and_file_errors_exit_one() {
         "{}",
         stderr(&output)
     );
-    assert_eq!(files_in(folder.path()), ["broken.txt"]);
+    assert_eq!(names_in(folder.path()), ["broken.txt"]);
 }
 
 #[test]
@@ -237,7 +228,7 @@ fn lossless_depth_files_hold_the_exact_t() {
     );
     assert!(exr.status.success(), "{}", stderr(&exr));
     assert_eq!(
-        files_in(folder.path()),
+        names_in(folder.path()),
         ["d.png", "d16.png", "t.exr", "t.pfm"]
     );
 
@@ -287,7 +278,7 @@ fn a_raw_depth_file_of_unknown_format_is_a_usage_error() {
         "{}",
         stderr(&output)
     );
-    assert!(files_in(folder.path()).is_empty());
+    assert!(names_in(folder.path()).is_empty());
 }
 
 #[test]
@@ -313,7 +304,7 @@ fn the_removed_precision_flag_is_refused_and_nothing_is_written() {
         "{}",
         stderr(&output)
     );
-    assert!(files_in(folder.path()).is_empty());
+    assert!(names_in(folder.path()).is_empty());
 }
 
 #[test]
@@ -340,7 +331,7 @@ fn images_over_64_megapixels_are_refused() {
             "{size:?}: {text}"
         );
     }
-    assert!(files_in(folder.path()).is_empty());
+    assert!(names_in(folder.path()).is_empty());
 }
 
 #[test]

@@ -3,6 +3,10 @@
 //! to TGA and PNG files, and the binary must name exactly those mistakes (exit 3), name nothing
 //! for exact images (exit 0) and for another scene's images, and refuse what it cannot compare.
 
+#[path = "common/command.rs"]
+mod command;
+
+use command::stderr;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -26,10 +30,6 @@ fn run(folder: &Path, arguments: &[&str]) -> Output {
 
 fn stdout(output: &Output) -> String {
     String::from_utf8_lossy(&output.stdout).into_owned()
-}
-
-fn stderr(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stderr).into_owned()
 }
 
 /// The `diagnosis:` words of a run, in order.

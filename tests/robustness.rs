@@ -4,6 +4,10 @@
 //! user sees: the exit status, the message, the files (intact, complete, with their modes) and
 //! nothing left behind.
 
+#[path = "common/command.rs"]
+mod command;
+
+use command::{names_in, stderr};
 use std::os::unix::fs::{MetadataExt as _, PermissionsExt as _};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -37,19 +41,6 @@ fn run_shell(folder: &Path, script: &str, arguments: &[&str]) -> Output {
         .args(arguments)
         .output()
         .unwrap()
-}
-
-fn stderr(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stderr).into_owned()
-}
-
-fn names_in(folder: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(folder)
-        .unwrap()
-        .map(|entry| entry.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    names.sort();
-    names
 }
 
 /// The one-line error the program printed, with no panic and no backtrace.

@@ -9,6 +9,10 @@
 //! `bash scripts/windows.sh test` builds the .exe and its test scaffolding and runs these with
 //! `RAYTRACER_WINDOWS_EXE` naming it; a plain `cargo test` leaves them out (ignored).
 
+#[path = "common/command.rs"]
+mod command;
+
+use command::{names_in, stderr};
 use std::io::{BufRead as _, BufReader};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -36,19 +40,6 @@ fn run(folder: &Path, arguments: &[&str]) -> Output {
         .stdin(Stdio::null())
         .output()
         .unwrap()
-}
-
-fn stderr(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stderr).into_owned()
-}
-
-fn names_in(folder: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(folder)
-        .unwrap()
-        .map(|entry| entry.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    names.sort();
-    names
 }
 
 fn project_path(relative: &str) -> PathBuf {
