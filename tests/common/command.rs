@@ -1,9 +1,10 @@
 //! Helpers shared by the tests that run the real binary (included by path, so that they need no
-//! viewer): its standard error as text, and the names in a folder.
+//! viewer): running it in a folder (directly or through `sh -c`), its one-line errors, its standard
+//! error as text, and the names in a folder.
 #![allow(dead_code)] // each test file uses its own share
 
-use std::path::Path;
-use std::process::Output;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
 
 /// The run's standard error, as text.
 pub(crate) fn stderr(output: &Output) -> String {
@@ -18,4 +19,43 @@ pub(crate) fn names_in(folder: &Path) -> Vec<String> {
         .collect();
     names.sort();
     names
+}
+
+pub(crate) fn binary() -> &'static str {
+    env!("CARGO_BIN_EXE_raytracer")
+}
+
+pub(crate) fn scene_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(name)
+}
+
+pub(crate) fn run_in(folder: &Path, arguments: &[&str]) -> Output {
+    Command::new(binary())
+        .current_dir(folder)
+        .args(arguments)
+        .output()
+        .unwrap()
+}
+
+/// Runs the binary through `sh -c` (for umask and ulimit), in `folder`.
+pub(crate) fn run_shell(folder: &Path, script: &str, arguments: &[&str]) -> Output {
+    Command::new("sh")
+        .current_dir(folder)
+        .arg("-c")
+        .arg(format!("{script} \"$0\" \"$@\""))
+        .arg(binary())
+        .args(arguments)
+        .output()
+        .unwrap()
+}
+
+/// The one-line error the program printed, with no panic and no backtrace.
+pub(crate) fn assert_one_line_error(output: &Output) -> String {
+    let text = stderr(output);
+    assert!(!text.contains("panicked"), "a panic: {text}");
+    assert_ne!(output.status.code(), Some(101), "a panic: {text}");
+    assert!(text.lines().count() <= 1, "more than one line: {text}");
+    text
 }
