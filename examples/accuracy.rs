@@ -1,10 +1,5 @@
-//! The error study behind `docs/accuracy.md` and `docs/accuracy.svg`:
-//!
-//! ```sh
-//! cargo run --release --example accuracy
-//! ```
-//!
-//! For the program's renderer (f64, camera-relative discs) and the textbook world-space `b² − 4ac`
+//! The error study behind `docs/accuracy.md` and `docs/accuracy.svg`
+//! (`cargo run --release --example accuracy`). For the program's renderer (f64, camera-relative discs) and the textbook world-space `b² − 4ac`
 //! in f32 (the baseline a first ray caster is written as), and three sweeps — distance/radius from
 //! 1e1 to 1e10, world coordinates up to 1e9, the view shrinking to 1e-9 of the scene's scale — it
 //! renders a small image and compares every pixel with the double-double reference of
@@ -244,15 +239,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 }
 
 /// The course's seven command lines' depth ranges (the README's), by scene number.
-const COURSE_DEPTH_RANGES: [(f64, f64); 7] = [
-    (9.0, 10.0),
-    (8.0, 12.0),
-    (8.0, 12.0),
-    (12.0, 17.0),
-    (14.5, 19.5),
-    (3.0, 7.0),
-    (-2.0, 2.0),
-];
+#[rustfmt::skip]
+const COURSE_DEPTH_RANGES: [(f64, f64); 7] =
+    [(9.0, 10.0), (8.0, 12.0), (8.0, 12.0), (12.0, 17.0), (14.5, 19.5), (3.0, 7.0), (-2.0, 2.0)];
 
 /// Each course scene at 200×200 against the course's reference images (tests/reference/): how
 /// many pixels differ and by how much (`tests/reference_images.rs` asserts the SPEC's tolerance).

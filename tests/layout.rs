@@ -1,7 +1,8 @@
 //! The source tree's house rules, checked on the files themselves: imports run downward through
 //! the layers (geometry, scene, render at the bottom; the viewer at the top), no two modules
-//! import each other, no file of `src/` is longer than 500 lines (unit-test files excepted) and
-//! the viewer's coordinator stays under 300; what differs by operating system is named in
+//! import each other, no file (of `src/`, `tests/`, `examples/`, `benches/`, the fuzz targets;
+//! unit tests included) is longer than 500 lines and the viewer's coordinator's code stays under
+//! 300; what differs by operating system is named in
 //! `src/platform/` alone.
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -26,11 +27,18 @@ fn rust_files(folder: &Path, found: &mut Vec<PathBuf>) {
 }
 
 fn source_files() -> Vec<PathBuf> {
+    files_under(&["src"])
+}
+
+/// The Rust files under these folders of the project.
+fn files_under(folders: &[&str]) -> Vec<PathBuf> {
     let mut files = Vec::new();
-    rust_files(
-        &Path::new(env!("CARGO_MANIFEST_DIR")).join("src"),
-        &mut files,
-    );
+    for folder in folders {
+        let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join(folder);
+        if folder.is_dir() {
+            rust_files(&folder, &mut files);
+        }
+    }
     files.sort();
     files
 }
@@ -49,32 +57,78 @@ fn module_path(file: &Path) -> Vec<String> {
     parts
 }
 
-/// The code of a file without its unit tests (a `#[cfg(test)] mod tests` block at the end).
+/// The code of a file without its unit tests (a `#[cfg(test)] mod tests { … }` block at the
+/// end). A `mod tests;` declaration (the tests in a file of their own) cuts nothing: what
+/// follows it is code.
 fn without_tests(text: &str) -> &str {
-    text.find("#[cfg(test)]\nmod tests")
+    text.find("#[cfg(test)]\nmod tests {")
         .map_or(text, |start| &text[..start])
 }
 
-/// The modules a file refers to as `crate::a::b…`, as far as `depth` segments.
+/// The modules a file refers to as `crate::a::b…`, as far as `depth` segments, grouped imports
+/// (`crate::{a::b, c}`) included.
 fn crate_references(text: &str, depth: usize) -> BTreeSet<Vec<String>> {
     let mut found = BTreeSet::new();
     for (start, _) in text.match_indices("crate::") {
         let rest = &text[start + "crate::".len()..];
-        let path: String = rest
-            .chars()
-            .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':')
-            .collect();
-        let parts: Vec<String> = path
-            .split("::")
-            .filter(|p| !p.is_empty())
-            .take(depth)
-            .map(str::to_owned)
-            .collect();
-        if !parts.is_empty() {
-            found.insert(parts);
+        // A group: each of its top-level items is a path from the crate's root.
+        let paths: Vec<String> = if let Some(group) = rest.strip_prefix('{') {
+            let mut items = vec![String::new()];
+            let mut nesting = 0;
+            for c in group.chars() {
+                match c {
+                    '{' => nesting += 1,
+                    '}' if nesting == 0 => break,
+                    '}' => nesting -= 1,
+                    ',' if nesting == 0 => items.push(String::new()),
+                    _ => {}
+                }
+                if let Some(item) = items.last_mut() {
+                    item.push(c);
+                }
+            }
+            items
+                .iter()
+                .map(|item| item.trim_start_matches([',', ' ', '\n', '\t']).to_owned())
+                .collect()
+        } else {
+            vec![rest.to_owned()]
+        };
+        for path in paths {
+            let path: String = path
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':')
+                .collect();
+            let parts: Vec<String> = path
+                .split("::")
+                .filter(|p| !p.is_empty())
+                .take(depth)
+                .map(str::to_owned)
+                .collect();
+            if !parts.is_empty() {
+                found.insert(parts);
+            }
         }
     }
     found
+}
+
+#[test]
+fn the_checks_read_test_declarations_and_grouped_imports() {
+    // A `mod tests;` declaration is no test block: the re-exports after it are code.
+    let text = "mod a;\n#[cfg(test)]\nmod tests;\npub use a::X;\n";
+    assert_eq!(without_tests(text), text);
+    let text = "fn f() {}\n#[cfg(test)]\nmod tests {\n    use crate::app::X;\n}\n";
+    assert_eq!(without_tests(text), "fn f() {}\n");
+    // Grouped imports name every module in the group.
+    let found = crate_references(
+        "use crate::{\n    render::{View, Frame},\n    app::ViewerApp,\n};",
+        1,
+    );
+    let expected: BTreeSet<Vec<String>> = [vec!["render".to_owned()], vec!["app".to_owned()]]
+        .into_iter()
+        .collect();
+    assert_eq!(found, expected);
 }
 
 #[test]
@@ -193,17 +247,13 @@ fn no_import_circles_between_modules() {
 #[test]
 fn files_stay_short_and_the_coordinator_small() {
     let mut long = Vec::new();
-    for file in source_files() {
-        let name = file.file_name().unwrap().to_string_lossy();
-        if name.ends_with("tests.rs") {
-            continue; // unit tests in a file of their own
-        }
+    for file in files_under(&["src", "tests", "examples", "benches", "fuzz/fuzz_targets"]) {
         let text = std::fs::read_to_string(&file).unwrap();
-        let lines = without_tests(&text).lines().count();
-        let limit = if file.ends_with("app/mod.rs") {
-            300
+        // Every file, its unit tests included; the coordinator's code alone.
+        let (lines, limit) = if file.ends_with("app/mod.rs") {
+            (without_tests(&text).lines().count(), 300)
         } else {
-            500
+            (text.lines().count(), 500)
         };
         if lines > limit {
             long.push(format!("{}: {lines} lines (limit {limit})", file.display()));
