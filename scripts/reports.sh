@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Regenerates the generated reports and pictures of docs/ (docs/README.md lists each with what it
+# shows), then refreshes the README's tables copied from them.
+#   bash scripts/reports.sh            every report (long: about an hour on two cores)
+#   bash scripts/reports.sh NAME…      only these, e.g. `accuracy tradeoff screenshot`
+# Names: accuracy performance tradeoff mistakes diagnosis compare-diff memory command-vs-cpp
+# dense-speedup window-frame-times window-frame-times-wgpu painter-priority setup-times web
+# windows windows-viewer screenshot readme-screenshots window-sizes fuzz.
+# Each runs the command docs/README.md names for it; a failure stops the script.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+all=(accuracy performance tradeoff mistakes diagnosis compare-diff memory command-vs-cpp
+     dense-speedup window-frame-times window-frame-times-wgpu painter-priority setup-times web
+     windows windows-viewer screenshot readme-screenshots window-sizes fuzz)
+wanted=("$@")
+[ ${#wanted[@]} -eq 0 ] && wanted=("${all[@]}")
+
+report() {
+  case "$1" in
+    accuracy) cargo run --release --example accuracy ;;
+    performance) cargo run --release --example performance ;;
+    tradeoff) cargo run --release --example tradeoff ;;
+    mistakes) cargo run --release --example mistakes ;;
+    diagnosis) cargo build --release && cargo run --release --example diagnosis_report ;;
+    compare-diff) bash scripts/compare-example.sh ;;
+    memory) bash scripts/memory.sh ;;
+    command-vs-cpp) bash scripts/command-vs-cpp.sh ;;
+    dense-speedup) bash scripts/dense-speedup.sh ;;
+    window-frame-times) bash scripts/window-frame-times.sh ;;
+    window-frame-times-wgpu)
+      RAYTRACER_RENDERER=wgpu bash scripts/window-frame-times.sh docs/window-frame-times-wgpu.md ;;
+    painter-priority) bash scripts/painter-priority.sh ;;
+    setup-times) bash scripts/setup-times.sh ;;
+    web) bash scripts/web.sh report ;;
+    windows) bash scripts/windows-report.sh 11 ;;
+    windows-viewer) bash scripts/windows-viewer-screenshot.sh ;;
+    screenshot) bash scripts/screenshot.sh ;;
+    readme-screenshots) bash scripts/readme-screenshots.sh ;;
+    window-sizes) bash scripts/window-sizes.sh ;;
+    fuzz) bash scripts/fuzz.sh 240 docs/fuzz && bash scripts/fuzz-self-test.sh ;;
+    *) echo "reports.sh: unknown report '$1' (see the list at the top of this script)" >&2
+       return 2 ;;
+  esac
+}
+
+for name in "${wanted[@]}"; do
+  echo "== $name"
+  started=$(date +%s)
+  report "$name"
+  echo "== $name: $(( $(date +%s) - started )) s"
+done
+python3 scripts/sync-readme-tables.py
