@@ -94,8 +94,8 @@ rows = [line.rstrip("\n").split("\t") for line in sys.stdin if line.strip()]
 series = [(r[0], [(int(c), float(v)) for c, v in (p.split(":") for p in r[1:])]) for r in rows]
 cores = [c for c, _ in series[0][1]]
 top = max(cores)
-W, H, L, B = 640, 400, 60, 50
-x = lambda c: L + (W - L - 220) * (c - 1) / max(top - 1, 1)
+W, H, L, B = 820, 400, 60, 50
+x = lambda c: L + (W - L - 360) * (c - 1) / max(top - 1, 1)
 y = lambda s: H - B - (H - B - 20) * (s - 1) / max(top - 1, 1)
 colours = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2"]
 out = [f"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{W}\" height=\"{H}\" font-family=\"sans-serif\" font-size=\"11\">",
@@ -114,7 +114,7 @@ for k, (name, points) in enumerate(series):
     colour = colours[k % len(colours)]
     path = " ".join(f"{x(c):.1f},{y(base / v):.1f}" for c, v in points)
     out.append(f"<polyline points=\"{path}\" fill=\"none\" stroke=\"{colour}\" stroke-width=\"2\"/>")
-    out.append(f"<text x=\"{W-210}\" y=\"{30 + 16*k}\" fill=\"{colour}\">{html.escape(name)}</text>")
+    out.append(f"<text x=\"{W-340}\" y=\"{30 + 16*k}\" fill=\"{colour}\">{html.escape(name)}</text>")
 out.append("</svg>")
 print("\n".join(out))
 ' > "$plot"
