@@ -103,7 +103,7 @@ fn print_or_fail(text: &str, status: ExitCode) -> ExitCode {
 fn open_viewer(request: raytracer::cli::ViewerRequest) -> ExitCode {
     // A scene file that cannot be read is said first, whatever the display.
     if let Some(input) = &request.input
-        && let Err(error) = std::fs::File::open(input)
+        && let Err(error) = std::fs::metadata(input)
     {
         print_err(&format!(
             "raytracer: {}\n",

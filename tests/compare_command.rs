@@ -315,6 +315,17 @@ fn a_depth_image_without_its_range_is_compared_over_the_range_it_was_made_over()
     );
     assert_eq!(value(&output, "depth_range_inferred"), "6.3 10.7");
     assert_ne!(diagnosis(&output), ["flipped-vertically"]);
+    // A range a coarse rounding would move by most of a grey level (6.385 to 6.4) is read back
+    // finely enough that the exact image matches.
+    let view = View::of_camera(&scene.camera, 120, 80, DepthRange::new(6.385, 10.0));
+    let (_, depth) = render_variant(&scene, &view, MistakeSet::NONE);
+    depth.save(folder.path().join("exact.png")).unwrap();
+    let output = run(
+        folder.path(),
+        &["-input", scene_arg, "-compare_depth", "exact.png"],
+    );
+    assert_eq!(output.status.code(), Some(0), "{}", stdout(&output));
+    assert_ne!(value(&output, "depth_range_inferred"), "6.4 10");
     // An image with no grey ramp (all black) has no range to read: refused, nothing written.
     image::RgbImage::new(120, 80)
         .save(folder.path().join("black.png"))

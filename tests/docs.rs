@@ -32,7 +32,7 @@ fn pages_with_markers() -> Vec<String> {
     let mut docs: Vec<String> = std::fs::read_dir(root().join("docs"))
         .unwrap()
         .map(|entry| entry.unwrap().file_name().to_string_lossy().into_owned())
-        .filter(|name| name.ends_with(".md"))
+        .filter(|name| Path::new(name).extension().is_some_and(|e| e == "md"))
         .map(|name| format!("docs/{name}"))
         .collect();
     docs.sort();

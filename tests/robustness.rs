@@ -372,8 +372,8 @@ fn a_termination_signal_during_the_write_leaves_no_temporary_file() {
 #[test]
 fn a_killed_run_s_temporary_files_are_removed_by_the_next_run_in_that_folder() {
     // A run killed with SIGKILL (nothing can be caught) leaves its temporary files; the next run
-    // writing to that folder removes those of processes that have ended, and never a live
-    // process's, nor a kept old file.
+    // writing to that folder removes those of processes that have ended (left an hour ago at
+    // least), and never a live process's, nor a kept old file.
     let folder = tempfile::tempdir().unwrap();
     let scene = scene_path("scene1_02.txt");
     let stale = || -> Vec<String> {
@@ -389,6 +389,16 @@ fn a_killed_run_s_temporary_files_are_removed_by_the_next_run_in_that_folder() {
         }
     }
     assert!(!stale().is_empty(), "no killed run left a temporary file");
+    // Left two hours ago (a file touched in the last hour may be another machine's).
+    let two_hours_ago = std::time::SystemTime::now() - Duration::from_secs(7200);
+    for name in stale() {
+        std::fs::File::options()
+            .write(true)
+            .open(folder.path().join(name))
+            .unwrap()
+            .set_modified(two_hours_ago)
+            .unwrap();
+    }
     // A live process's temporary file (this test's own process id) and a kept old file stay.
     let live = format!(".raytracer-{}-0-0.tmp", std::process::id());
     std::fs::write(folder.path().join(&live), b"live").unwrap();

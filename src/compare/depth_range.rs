@@ -1,7 +1,8 @@
 //! The depth range behind a depth image, when its maker does not remember it: a straight line
 //! fitted to the image's grey levels against the exact t of each pixel (the ramp between the
 //! clamped ends), read back as the t shown white and the t shown black, then rounded to the
-//! coarsest step (1, ½, ¼, a tenth, …) that moves neither end by more than a level and a half.
+//! coarsest step (1, ½, ¼, a tenth, …) that moves neither end by more than a level and a half
+//! and draws their image as well as the fitted range (within a pixel in 2,000 of the ramp).
 //!
 //! A grey level g of the course's depth image is `255·(DMAX − t)/(DMAX − DMIN)` truncated, so the
 //! pixel's true value lies in `[g, g + 1)`: the fit takes `g + ½` and drops what is off the line
@@ -13,8 +14,9 @@
 
 use image::RgbImage;
 
+use super::difference::Difference;
 use super::mistake::{Mistake, MistakeSet};
-use super::variant::{Hits, render_hits};
+use super::variant::{Hits, depth_image, render_hits};
 use crate::render::View;
 use crate::render::depth_map::DepthRange;
 use crate::scene::Scene;
@@ -116,25 +118,50 @@ pub fn infer_depth_range(scene: &Scene, view: &View, theirs: &RgbImage) -> Optio
         ..*view
     };
     // The placement and orientation whose line holds the most pixels.
-    let mut best: Option<((f64, f64), usize)> = None;
+    let mut best: Option<((f64, f64), usize, Hits, bool)> = None;
     for variant in hit_variants() {
         let hits = render_hits(scene, &view, variant);
+        let mut found = None;
         for upside_down in [false, true] {
             if let Some((line, held)) = fit_ramp(&hits, theirs, upside_down)
-                && best.is_none_or(|(_, most)| held > most)
+                && best.as_ref().is_none_or(|(_, most, _, _)| held > *most)
+                && found.is_none_or(|(_, most, _): (_, usize, _)| held > most)
             {
-                best = Some((line, held));
+                found = Some((line, held, upside_down));
             }
         }
+        if let Some((line, held, upside_down)) = found {
+            best = Some((line, held, hits, upside_down));
+        }
     }
-    let ((a, b), _) = best?;
+    let ((a, b), held, hits, upside_down) = best?;
     // White (level 255) and black (level 0) along the line; a rising line is a reversed ramp.
     let (white_t, black_t) = ((255.0 - a) / b, -a / b);
     if !white_t.is_finite() || !black_t.is_finite() {
         return None;
     }
     let fitted = DepthRange::new(white_t.min(black_t), white_t.max(black_t));
-    // The coarsest rounding that moves neither end by more than the fit can tell.
+    // How many pixels of their image a range draws otherwise (by any level: the course's rule
+    // allows few off by one), from the variant's t as the fit saw it.
+    let mut made_with = MistakeSet::NONE;
+    if b > 0.0 {
+        made_with = made_with.with(Mistake::DepthReversed);
+    }
+    if upside_down {
+        made_with = made_with.with(Mistake::FlippedVertically);
+    }
+    let differing = |range: DepthRange| {
+        let view = View {
+            depth_range: range,
+            ..view
+        };
+        Difference::of(&depth_image(&view, &hits, made_with), theirs).pixels_differing()
+    };
+    let fitted_differing = differing(fitted);
+    let allowed = fitted_differing + (held / 2000).max(1);
+    // The coarsest rounding that moves neither end by more than the fit can tell, and draws
+    // their image as well as the fitted range does (a rounding that moves an end by most of a
+    // level shows as pixels off).
     let slack = ROUNDING_LEVELS * (fitted.max_t - fitted.min_t) / 255.0;
     let round = |value: f64, per_unit: f64| (value * per_unit).round() / per_unit;
     STEPS_PER_UNIT
@@ -142,10 +169,11 @@ pub fn infer_depth_range(scene: &Scene, view: &View, theirs: &RgbImage) -> Optio
         .map(|&per_unit| {
             DepthRange::new(round(fitted.min_t, per_unit), round(fitted.max_t, per_unit))
         })
-        .find(|range| {
+        .find(|&range| {
             range.min_t < range.max_t
                 && (range.min_t - fitted.min_t).abs() <= slack
                 && (range.max_t - fitted.max_t).abs() <= slack
+                && differing(range) <= allowed
         })
         .or(Some(fitted))
 }

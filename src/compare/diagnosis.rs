@@ -119,10 +119,10 @@ struct Search<'a> {
 
 impl Search<'_> {
     /// `set` without the mistakes it does not need: each left explains more than
-    /// [`NEEDED_SHARE`] of the `differing_exact` pixels (one at least) on its own. The cheapest to
-    /// leave out goes first.
+    /// [`NEEDED_SHARE`] of the `differing_exact` pixels, and one pixel at least, on its own. The
+    /// cheapest to leave out goes first.
     fn needed(&mut self, mut set: MistakeSet, differing_exact: usize) -> MistakeSet {
-        let needed_px = (NEEDED_SHARE * differing_exact as f64).max(1.0);
+        let needed_px = NEEDED_SHARE * differing_exact as f64;
         loop {
             let score = self.score(set);
             let cheapest = set
@@ -131,7 +131,9 @@ impl Search<'_> {
                 .map(|mistake| (self.score(set.without(mistake)), mistake))
                 .min();
             match cheapest {
-                Some((without, mistake)) if (without as f64 - score as f64) < needed_px => {
+                Some((without, mistake))
+                    if without <= score || (without - score) as f64 <= needed_px =>
+                {
                     set = set.without(mistake);
                 }
                 _ => return set,

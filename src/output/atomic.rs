@@ -40,26 +40,15 @@ pub enum WriteError {
         /// The extensions that would do, as a list for the message.
         expected: &'static str,
     },
-    /// A rename failed, and a file already replaced could not be put back: its old content is
-    /// in `kept`.
-    #[error(
-        "{}: cannot write: {source}; and '{}' could not be put back ({restore}): its old \
-         content is in '{}'",
-        path.display(),
-        replaced.display(),
-        kept.display()
-    )]
+    /// A rename failed, and a file already replaced could not be put back.
+    #[error("{}: cannot write: {source}; and {not_put_back}", path.display())]
     NotPutBack {
         /// The destination whose rename failed.
         path: PathBuf,
         /// Why.
         source: std::io::Error,
-        /// A destination already replaced.
-        replaced: PathBuf,
-        /// Why it could not be put back.
-        restore: std::io::Error,
-        /// Where its old content is.
-        kept: PathBuf,
+        /// Each file that could not be put back, why, and where its old content is.
+        not_put_back: String,
     },
     /// Creating, writing or renaming failed.
     #[error("{}: cannot write: {source}", path.display())]
@@ -278,18 +267,16 @@ impl FileSet {
         // Each file to be replaced, kept under a second name until every rename has succeeded.
         let mut kept: Vec<Option<OldFile>> = Vec::with_capacity(self.staged.len());
         for staged in &self.staged {
-            let destination = &staged.destination;
-            if let Ok(existing) = std::fs::metadata(destination) {
-                files::keep_mode(&existing, &staged.temporary.path)
-                    .map_err(|source| io_error(destination, source))?;
+            match keep_old(staged) {
+                Ok(old) => kept.push(old),
+                Err(error) => {
+                    // Nothing is replaced: the old files kept so far go.
+                    for old in kept.into_iter().flatten() {
+                        old.forget();
+                    }
+                    return Err(error);
+                }
             }
-            let old = match std::fs::symlink_metadata(destination) {
-                Ok(_) => Some(
-                    OldFile::keep(destination).map_err(|source| io_error(destination, source))?,
-                ),
-                Err(_) => None,
-            };
-            kept.push(old);
         }
         let mut written: Vec<PathBuf> = Vec::with_capacity(self.staged.len());
         for mut staged in self.staged {
@@ -306,6 +293,20 @@ impl FileSet {
             old.forget();
         }
         Ok(written)
+    }
+}
+
+/// Gives `staged`'s temporary file the mode of the file it replaces, and keeps that file under a
+/// second name (`None`: there is none).
+fn keep_old(staged: &Staged) -> Result<Option<OldFile>, WriteError> {
+    let destination = &staged.destination;
+    let error = |source| io_error(destination, source);
+    if let Ok(existing) = std::fs::metadata(destination) {
+        files::keep_mode(&existing, &staged.temporary.path).map_err(error)?;
+    }
+    match std::fs::symlink_metadata(destination) {
+        Ok(_) => OldFile::keep(destination).map(Some).map_err(error),
+        Err(_) => Ok(None),
     }
 }
 
@@ -340,8 +341,11 @@ impl OldFile {
                         let _ = std::fs::remove_file(&path);
                         return Err(error);
                     }
-                    if let Ok(existing) = std::fs::metadata(destination) {
-                        files::keep_mode(&existing, &path)?;
+                    if let Ok(existing) = std::fs::metadata(destination)
+                        && let Err(error) = files::keep_mode(&existing, &path)
+                    {
+                        let _ = std::fs::remove_file(&path);
+                        return Err(error);
                     }
                     return Ok(Self { path });
                 }
@@ -356,41 +360,53 @@ impl OldFile {
 }
 
 /// After the rename over `failed` went wrong with `source`: puts back every file in `written`
-/// (its old content where there was one, nothing where there was none), and forgets the other
-/// old files. The error names what could not be put back, if anything.
+/// (its old content where there was one, nothing where there was none) and `failed` itself (a
+/// network file system may report a rename that happened as failed), and forgets the other old
+/// files. The error names each file that could not be put back.
 fn put_back(
     written: &[PathBuf],
     kept: &mut [Option<OldFile>],
     failed: PathBuf,
     source: std::io::Error,
 ) -> WriteError {
-    let mut not_put_back = None;
-    for (index, destination) in written.iter().enumerate().rev() {
-        let restored = match kept[index].take() {
-            Some(old) => match files::rename_over(&old.path, destination) {
-                Ok(()) => Ok(()),
-                Err(error) => Err((error, old.path)),
+    let mut not_put_back = Vec::new();
+    let destinations: Vec<&PathBuf> = written.iter().chain(std::iter::once(&failed)).collect();
+    for (index, destination) in destinations.into_iter().enumerate().rev() {
+        let is_failed = index == written.len();
+        match kept[index].take() {
+            Some(old) => {
+                // Over a rename that did not happen, both names are one file and this does
+                // nothing; the second name then goes.
+                match files::rename_over(&old.path, destination) {
+                    Ok(()) => old.forget(),
+                    Err(error) => not_put_back.push(format!(
+                        "'{}' could not be put back ({error}): its old content is in '{}'",
+                        destination.display(),
+                        old.path.display()
+                    )),
+                }
+            }
+            None => match std::fs::remove_file(destination) {
+                Ok(()) => {}
+                Err(error) if is_failed && error.kind() == std::io::ErrorKind::NotFound => {}
+                Err(error) => not_put_back.push(format!(
+                    "the new '{}' could not be removed again ({error})",
+                    destination.display()
+                )),
             },
-            None => std::fs::remove_file(destination).map_err(|error| (error, PathBuf::new())),
-        };
-        if let Err((restore, kept_at)) = restored
-            && not_put_back.is_none()
-        {
-            not_put_back = Some((destination.clone(), restore, kept_at));
         }
     }
     for old in kept.iter_mut().filter_map(Option::take) {
         old.forget();
     }
-    match not_put_back {
-        None => io_error(&failed, source),
-        Some((replaced, restore, kept)) => WriteError::NotPutBack {
+    if not_put_back.is_empty() {
+        io_error(&failed, source)
+    } else {
+        WriteError::NotPutBack {
             path: failed,
             source,
-            replaced,
-            restore,
-            kept,
-        },
+            not_put_back: not_put_back.join("; "),
+        }
     }
 }
 

@@ -31,13 +31,17 @@ pub(super) fn open_temporaries() -> std::sync::MutexGuard<'static, BTreeSet<Path
 /// renames.
 pub(super) static COMMITTING: Mutex<()> = Mutex::new(());
 
-/// Removes every temporary file still being written. For the signal handler: the program is
-/// about to exit without running destructors. Waits for renames under way to end first.
+/// Removes every temporary file still being written. For the signal handler and the program's
+/// last step: the program is about to exit without running destructors. Waits for renames
+/// under way to end first, and lets no commit start after it.
 pub fn remove_temporary_files() {
-    let _committing = COMMITTING.lock().unwrap_or_else(PoisonError::into_inner);
+    let committing = COMMITTING.lock().unwrap_or_else(PoisonError::into_inner);
     for path in open_temporaries().iter() {
         let _ = std::fs::remove_file(path);
     }
+    // The program ends now: no commit may start after this clean-up (its temporaries would be
+    // left), so the lock is never released.
+    std::mem::forget(committing);
 }
 
 /// A temporary file beside a destination: registered for signal cleanup before it exists,
@@ -91,11 +95,16 @@ impl Temporary {
     }
 }
 
+/// How long a temporary file of a process that has ended must have been left before it is
+/// removed as stale.
+const STALE_AFTER: std::time::Duration = std::time::Duration::from_secs(3600);
+
 /// Folders whose stale temporary files this run has removed already.
 static SWEPT_FOLDERS: Mutex<BTreeSet<PathBuf>> = Mutex::new(BTreeSet::new());
 
 /// Removes, once per run and folder, the temporary files (`.raytracer-PID-….tmp`) that a process
-/// no longer running left there (one killed by SIGKILL or a power cut). A kept old file
+/// no longer running left there at least [`STALE_AFTER`] ago (one killed by SIGKILL or a power
+/// cut). A kept old file
 /// (`….old`) is never removed: it may hold the only copy of a file's old content. Where it cannot
 /// be told whether the process still runs (Windows), nothing is removed.
 fn sweep_stale_temporaries(folder: &Path) {
@@ -117,8 +126,16 @@ fn sweep_stale_temporaries(folder: &Path) {
             .filter(|_| Path::new(name).extension().is_some_and(|e| e == "tmp"))
             .and_then(|rest| rest.split('-').next())
             .and_then(|pid| pid.parse::<u32>().ok());
+        // Left for an hour at least: a folder shared with another machine (a network folder, a
+        // container's mount) may hold a file another machine's process of that number writes.
+        let idle_for = entry
+            .metadata()
+            .and_then(|metadata| metadata.modified())
+            .ok()
+            .and_then(|modified| modified.elapsed().ok());
         if let Some(pid) = pid
             && pid != std::process::id()
+            && idle_for.is_some_and(|idle| idle >= STALE_AFTER)
             && files::process_has_ended(pid)
         {
             let _ = std::fs::remove_file(entry.path());

@@ -54,16 +54,24 @@ const MAX_WORD_CHARS: usize = 300;
 const WORD_HEAD_CHARS: usize = 200;
 const WORD_TAIL_CHARS: usize = 60;
 
-/// `message` as one printable line: control characters (a newline, an escape sequence's ESC)
-/// written as escapes (`\n`, `\u{1b}`), and each word longer than [`MAX_WORD_CHARS`] cut in the
+/// `message` as one printable line: control characters (a newline, an escape sequence's ESC),
+/// line separators and the characters that reorder text written as escapes (`\n`, `\u{1b}`,
+/// `\u{202e}`), and each word longer than [`MAX_WORD_CHARS`] cut in the
 /// middle with the count of characters left out.
 pub fn one_line(message: &str) -> String {
     let escaped: String = message
         .chars()
         .flat_map(|c| {
-            let escape = c
-                .is_control()
-                .then(|| c.escape_default().collect::<String>());
+            // Control characters, the line and paragraph separators, and the characters that
+            // reorder text (bidirectional overrides and isolates) are shown as escapes.
+            let reorders = matches!(c, '\u{2028}'..='\u{202E}' | '\u{2066}'..='\u{2069}');
+            let escape = (c.is_control() || reorders).then(|| {
+                if c.is_control() {
+                    c.escape_default().collect::<String>()
+                } else {
+                    c.escape_unicode().collect::<String>()
+                }
+            });
             escape
                 .unwrap_or_else(|| c.to_string())
                 .chars()
@@ -97,6 +105,7 @@ mod tests {
             "cannot open 'a\\nb\\u{1b}[31m.txt'"
         );
         assert_eq!(one_line("plain text, é ü"), "plain text, é ü");
+        assert_eq!(one_line("a\u{202E}b\u{2028}c"), "a\\u{202e}b\\u{2028}c");
         let long = "9".repeat(120_000);
         let shown = one_line(&format!("-size: expected a number, found '{long}'"));
         assert!(shown.len() < 400, "{} bytes", shown.len());
