@@ -129,14 +129,19 @@ pub(crate) fn programs() -> Vec<Program> {
         .collect()
 }
 
-/// Compares `program`'s `image` with the `raytracer` binary at `binary`.
-pub(crate) fn compare(binary: &Path, program: &Program, image: &Image) -> Outcome {
+/// The image file of `program` and the scene file it was rendered from.
+fn files_of(program: &Program, image: &Image) -> (PathBuf, PathBuf) {
     let root = root();
     let file = root
         .join("tests/corpus")
         .join(&program.name)
         .join(image.file);
-    let scene = root.join("scenes").join(format!("{}.txt", image.scene));
+    (file, root.join("scenes").join(format!("{}.txt", image.scene)))
+}
+
+/// Compares `program`'s `image` with the `raytracer` binary at `binary`.
+pub(crate) fn compare(binary: &Path, program: &Program, image: &Image) -> Outcome {
+    let (file, scene) = files_of(program, image);
     let mut command = Command::new(binary);
     command.arg("-input").arg(&scene);
     match image.depth_range {
@@ -174,12 +179,7 @@ pub(crate) fn compare(binary: &Path, program: &Program, image: &Image) -> Outcom
 /// The depth range the binary reads back from a depth image given without one
 /// (`depth_range_inferred:`), as printed, or `none` when it refuses the image.
 pub(crate) fn infer_range(binary: &Path, program: &Program, image: &Image) -> String {
-    let root = root();
-    let file = root
-        .join("tests/corpus")
-        .join(&program.name)
-        .join(image.file);
-    let scene = root.join("scenes").join(format!("{}.txt", image.scene));
+    let (file, scene) = files_of(program, image);
     let output = Command::new(binary)
         .arg("-input")
         .arg(&scene)
