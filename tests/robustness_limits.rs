@@ -160,6 +160,58 @@ fn supersampling_memory_stays_within_the_stated_bound() {
 }
 
 #[test]
+fn comparing_images_stays_within_the_stated_bound_and_is_refused_when_it_cannot_fit() {
+    // Their images with a mistake at 768² (the diagnosis tries dozens of renders; it keeps six
+    // at once): the peak stays within the bound -stats states.
+    let folder = tempfile::tempdir().unwrap();
+    let scene_file = scene_path("scene1_07.txt");
+    let scene = raytracer::scene::load_scene(&scene_file).unwrap();
+    let view = raytracer::render::View::of_camera(
+        &scene.camera,
+        768,
+        768,
+        raytracer::render::depth_map::DepthRange::new(-2.0, 2.0),
+    );
+    let mistakes = raytracer::compare::MistakeSet::of(&[raytracer::compare::Mistake::PixelCorners]);
+    let (colour, depth) = raytracer::compare::render_variant(&scene, &view, mistakes);
+    colour.save(folder.path().join("mine.png")).unwrap();
+    depth.save(folder.path().join("mine_depth.png")).unwrap();
+    let scene_arg = scene_file.to_str().unwrap();
+    let compare = [
+        "-input",
+        scene_arg,
+        "-compare_output",
+        "mine.png",
+        "-compare_depth",
+        "mine_depth.png",
+        "-diff",
+        "diff.png",
+        "-stats",
+    ];
+    let (output, peak) = run_measuring_peak(folder.path(), &compare);
+    assert_eq!(output.status.code(), Some(3), "{}", stderr(&output));
+    let bound = stats_value(&output, "memory_bound_mb") * 1e6;
+    assert!(
+        peak as f64 <= bound,
+        "peak {peak} B over the bound {bound} B"
+    );
+    std::fs::remove_file(folder.path().join("diff.png")).unwrap();
+    // Under a limit the comparison cannot fit in, it is refused before any work, with the
+    // figure, and nothing is written.
+    let output = Command::new("prlimit")
+        .arg("--as=350000000:350000000")
+        .arg(binary())
+        .current_dir(folder.path())
+        .args(compare)
+        .output()
+        .unwrap();
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(1), "{text}");
+    assert!(text.contains("MB more memory"), "{text}");
+    assert!(!folder.path().join("diff.png").exists());
+}
+
+#[test]
 fn a_request_that_cannot_fit_in_memory_is_refused_with_the_figure() {
     let folder = tempfile::tempdir().unwrap();
     let scene = scene_path("scene1_02.txt");

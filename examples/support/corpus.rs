@@ -136,7 +136,10 @@ fn files_of(program: &Program, image: &Image) -> (PathBuf, PathBuf) {
         .join("tests/corpus")
         .join(&program.name)
         .join(image.file);
-    (file, root.join("scenes").join(format!("{}.txt", image.scene)))
+    (
+        file,
+        root.join("scenes").join(format!("{}.txt", image.scene)),
+    )
 }
 
 /// Compares `program`'s `image` with the `raytracer` binary at `binary`.

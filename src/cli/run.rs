@@ -23,7 +23,7 @@ use crate::platform::files::{FileIdentity, identity};
 use crate::platform::memory::{available_memory_bytes, peak_memory_bytes};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 use crate::render::memory::{
-    BASELINE_BYTES, load_bound_bytes, render_bound_bytes, streamed_bound_bytes,
+    BASELINE_BYTES, compare_bound_bytes, load_bound_bytes, render_bound_bytes, streamed_bound_bytes,
 };
 use crate::render::{
     Frame, Quality, View, ViewError, render_with_progress, renders_strip_by_strip,
@@ -340,7 +340,10 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
         )
     };
     let measured = measuring.elapsed();
-    let memory_bound = check_memory(request, render_bound)?.max(load_bound);
+    let compare_bound = request.compare.as_ref().map_or(0, |_| {
+        compare_bound_bytes(request.width_px, request.height_px)
+    });
+    let memory_bound = check_memory(request, render_bound + compare_bound)?.max(load_bound);
 
     if streamed {
         let streamed = render_streamed(request, &scene, &view)?;

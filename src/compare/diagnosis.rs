@@ -34,6 +34,10 @@ pub struct Theirs<'a> {
 /// Largest set of mistakes the search grows to.
 const MAX_MISTAKES: usize = 4;
 
+/// Renders (t and sphere per pixel) the search keeps at once; more are made again when needed.
+/// [`crate::render::memory::compare_bound_bytes`] counts them.
+pub const MAX_CACHED_HITS: usize = 6;
+
 /// How many of the best singles and pairs the search grows.
 const GROWN_SETS: usize = 8;
 
@@ -141,10 +145,26 @@ impl Search<'_> {
         }
     }
 
+    /// Keeps at most [`MAX_CACHED_HITS`] renders, so that memory stays bounded whatever the
+    /// search tries: one goes before `hit_part`'s is made (the exact render stays).
+    fn make_room_for(&mut self, hit_part: MistakeSet) {
+        if self.hits.len() >= MAX_CACHED_HITS && !self.hits.contains_key(&hit_part) {
+            let evicted = self
+                .hits
+                .keys()
+                .copied()
+                .find(|&key| key != MistakeSet::NONE);
+            if let Some(key) = evicted {
+                self.hits.remove(&key);
+            }
+        }
+    }
+
     /// Where the images of `mistakes` differ from theirs.
     fn unexplained(&mut self, mistakes: MistakeSet) -> Unexplained {
         let (scene, view, theirs) = (self.scene, self.view, self.theirs);
         let hit_part = mistakes.hit_part();
+        self.make_room_for(hit_part);
         let hits = self
             .hits
             .entry(hit_part)
@@ -174,6 +194,7 @@ impl Search<'_> {
             return score;
         }
         let hit_part = mistakes.hit_part();
+        self.make_room_for(hit_part);
         let hits = self
             .hits
             .entry(hit_part)

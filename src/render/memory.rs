@@ -15,6 +15,7 @@
 //! spheres only when a dense frame is drawn whole first.
 //!
 //! Loading a scene file is bounded separately: the file's bytes and the spheres parsed from them.
+//! So is comparing the user's images with the exact ones ([`compare_bound_bytes`]).
 
 use super::Sampling;
 use super::sampling::working_bytes;
@@ -94,4 +95,22 @@ pub fn streamed_bound_bytes(
 /// briefly hold twice its length while it grows).
 pub fn load_bound_bytes(file_bytes: u64) -> u64 {
     BASELINE_BYTES + file_bytes + 2 * (file_bytes / 30) * 40
+}
+
+/// Renders the comparison's search keeps at once (`compare::diagnosis::MAX_CACHED_HITS`), and
+/// the one being made.
+pub const COMPARE_HITS_HELD: u64 = 7;
+
+/// Per pixel of a comparison, beside the render's own frame and outputs: their two images and
+/// the exact two (3 bytes each), the two differences (1 each), the diagnosis's renders (t and
+/// sphere, 12 bytes each, [`COMPARE_HITS_HELD`] of them) with the two images of the set being
+/// scored (3 each) and the unexplained pixels' flags (1 each, two images), the depth range's fit
+/// (two renders of 12 and its points, 16), and the difference picture (four panels of 3 bytes
+/// in each of two rows, with the heat map and the unexplained panel being drawn, 6 more).
+pub const COMPARE_BYTES_PER_PIXEL: u64 =
+    4 * 3 + 2 + COMPARE_HITS_HELD * 12 + 2 * 3 + 2 + 2 * 12 + 16 + 2 * 4 * 3 + 6;
+
+/// The bound, in bytes, that comparing images of `width_px × height_px` adds to the render's.
+pub fn compare_bound_bytes(width_px: u32, height_px: u32) -> u64 {
+    u64::from(width_px) * u64::from(height_px) * COMPARE_BYTES_PER_PIXEL
 }
