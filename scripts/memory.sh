@@ -5,12 +5,15 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --quiet
-cargo build --release --quiet --example generate
+cargo build --release --quiet --example generate --example mistakes
 binary=target/release/raytracer
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 target/release/examples/generate 1000000 "$work/million.txt" >/dev/null
 target/release/examples/generate --dense 1000000 "$work/dense.txt" 7 >/dev/null 2>&1
+# A ray caster's images with a mistake (rays through pixel corners) at 2048², to compare.
+target/release/examples/mistakes make pixel-corners scenes/scene1_07.txt 2048 2048 -2 2 \
+  "$work/mine.png" "$work/mine_depth.png" >/dev/null
 
 scene=scenes/scene1_02.txt
 requests=(
@@ -21,6 +24,7 @@ requests=(
   "1,000,000 spheres, dense (drawn in passes front to back)|-input $work/dense.txt -size 1024 1024 -output $work/c.png -depth 100 300 $work/d.png"
   "the same, as the course's command (drawn whole, then streamed)|-input $work/dense.txt -size 1024 1024 -output $work/c.tga -depth 100 300 $work/d.tga"
   "largest image of a dense scene, streamed|-input $work/dense.txt -size 8192 8192 -output $work/c.tga -depth 100 300 $work/d.tga"
+  "comparing 2048² images with a mistake, diagnosed, with the difference picture|-input scenes/scene1_07.txt -compare_output $work/mine.png -compare_depth $work/mine_depth.png -diff $work/diff.png"
 )
 {
   echo "# Memory: the stated bound against the measured peak"
@@ -36,7 +40,8 @@ requests=(
     name=${entry%%|*}
     arguments=${entry#*|}
     # shellcheck disable=SC2086
-    stats=$($binary $arguments -stats)
+    # (a comparison that finds a difference exits 3)
+    stats=$($binary $arguments -stats || [ $? -eq 3 ])
     bound=$(sed -n 's/^memory_bound_mb: //p' <<<"$stats")
     peak=$(sed -n 's/^peak_memory_mb: //p' <<<"$stats")
     within=$(awk -v p="$peak" -v b="$bound" 'BEGIN { print (p <= b) ? "yes" : "NO" }')
@@ -54,6 +59,8 @@ requests=(
   echo "spheres parsed from them. The course's own command (one sample, \`-output\` and \`-depth\` as"
   echo "TGA) is drawn and written strip by strip: its bound is the program and the spheres, per thread"
   echo "$(constant STRIP_BYTES_PER_PIXEL) B per pixel of a strip's width times its $strip_rows rows, and, for a dense frame"
-  echo "drawn whole before it is streamed, $(constant HITS_BYTES_PER_PIXEL) B per pixel."
+  echo "drawn whole before it is streamed, $(constant HITS_BYTES_PER_PIXEL) B per pixel. Comparing images adds"
+  echo "\`COMPARE_BYTES_PER_PIXEL\` per pixel: their images and the exact ones, the differences, the"
+  echo "diagnosis's renders (it keeps $(sed -n 's/^pub const MAX_CACHED_HITS: usize = \([0-9]*\);/\1/p' src/compare/diagnosis.rs) at once), the depth range's fit and the difference picture."
 } > docs/memory.md
 cat docs/memory.md
