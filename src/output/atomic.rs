@@ -332,11 +332,18 @@ impl OldFile {
                 Err(error) if error.kind() == std::io::ErrorKind::AlreadyExists => {}
                 Err(_) => {
                     // No hard links here (or none allowed for this file): a copy.
-                    let mut copy = files::create_new(&path, 0o600)?;
-                    let copied = File::open(destination)
-                        .and_then(|mut from| std::io::copy(&mut from, &mut copy))
-                        .and_then(|_| copy.sync_all());
-                    drop(copy);
+                    let created = match files::create_new(&path, 0o600) {
+                        Ok(copy) => copy,
+                        Err(error) if error.kind() == std::io::ErrorKind::AlreadyExists => continue,
+                        Err(error) => return Err(error),
+                    };
+                    // The copy is closed at the end of the block (before it may be removed).
+                    let copied = {
+                        let mut copy = created;
+                        File::open(destination)
+                            .and_then(|mut from| std::io::copy(&mut from, &mut copy))
+                            .and_then(|_| copy.sync_all())
+                    };
                     if let Err(error) = copied {
                         let _ = std::fs::remove_file(&path);
                         return Err(error);
