@@ -31,6 +31,9 @@ pub struct Theirs<'a> {
     pub depth: Option<&'a RgbImage>,
 }
 
+/// Levels a depth pixel may differ by and still count as the same (the course's depth rule).
+const DEPTH_LEVELS_UNNOTICED: u8 = 1;
+
 /// Largest set of mistakes the search grows to.
 const MAX_MISTAKES: usize = 4;
 
@@ -160,8 +163,9 @@ impl Search<'_> {
         }
     }
 
-    /// Where the images of `mistakes` differ from theirs.
-    fn unexplained(&mut self, mistakes: MistakeSet) -> Unexplained {
+    /// How the images of `mistakes` differ from theirs (colour, depth), from the cached render of
+    /// their hit-changing part.
+    fn differences(&mut self, mistakes: MistakeSet) -> (Option<Difference>, Option<Difference>) {
         let (scene, view, theirs) = (self.scene, self.view, self.theirs);
         let hit_part = mistakes.hit_part();
         self.make_room_for(hit_part);
@@ -169,45 +173,39 @@ impl Search<'_> {
             .hits
             .entry(hit_part)
             .or_insert_with(|| render_hits(scene, view, hit_part));
+        (
+            theirs
+                .colour
+                .map(|theirs| Difference::of(&colour_image(scene, hits, mistakes), theirs)),
+            theirs
+                .depth
+                .map(|theirs| Difference::of(&depth_image(view, hits, mistakes), theirs)),
+        )
+    }
+
+    /// Where the images of `mistakes` differ from theirs (colour: any level; depth: beyond
+    /// [`DEPTH_LEVELS_UNNOTICED`]).
+    fn unexplained(&mut self, mistakes: MistakeSet) -> Unexplained {
+        let (colour, depth) = self.differences(mistakes);
         let flags = |difference: Difference, levels: u8| {
             difference.per_pixel.iter().map(|&d| d > levels).collect()
         };
         Unexplained {
-            colour: theirs.colour.map(|theirs| {
-                flags(
-                    Difference::of(&colour_image(scene, hits, mistakes), theirs),
-                    0,
-                )
-            }),
-            depth: theirs.depth.map(|theirs| {
-                flags(
-                    Difference::of(&depth_image(view, hits, mistakes), theirs),
-                    1,
-                )
-            }),
+            colour: colour.map(|difference| flags(difference, 0)),
+            depth: depth.map(|difference| flags(difference, DEPTH_LEVELS_UNNOTICED)),
         }
     }
 
-    /// Pixels the images of `mistakes` differ in from theirs.
+    /// Pixels the images of `mistakes` differ in from theirs (as [`Self::unexplained`] counts).
     fn score(&mut self, mistakes: MistakeSet) -> usize {
         if let Some(&score) = self.scores.get(&mistakes) {
             return score;
         }
-        let hit_part = mistakes.hit_part();
-        self.make_room_for(hit_part);
-        let hits = self
-            .hits
-            .entry(hit_part)
-            .or_insert_with(|| render_hits(self.scene, self.view, hit_part));
-        let mut score = 0;
-        if let Some(theirs) = self.theirs.colour {
-            let ours = colour_image(self.scene, hits, mistakes);
-            score += Difference::of(&ours, theirs).pixels_differing();
-        }
-        if let Some(theirs) = self.theirs.depth {
-            let ours = depth_image(self.view, hits, mistakes);
-            score += Difference::of(&ours, theirs).pixels_beyond(1);
-        }
+        let (colour, depth) = self.differences(mistakes);
+        let score = colour.map_or(0, |difference| difference.pixels_beyond(0))
+            + depth.map_or(0, |difference| {
+                difference.pixels_beyond(DEPTH_LEVELS_UNNOTICED)
+            });
         self.scores.insert(mistakes, score);
         score
     }
