@@ -4,14 +4,14 @@
 #   bash scripts/reports.sh            every report (long: about an hour on two cores)
 #   bash scripts/reports.sh NAME…      only these, e.g. `accuracy tradeoff screenshot`
 # Names: accuracy performance tradeoff mistakes diagnosis compare-diff memory scaling command-vs-cpp
-# dense-speedup window-frame-times window-frame-times-wgpu painter-priority setup-times web
+# dense-speedup window-frame-times window-frame-times-wgpu setup-times web
 # windows windows-viewer screenshot readme-screenshots window-sizes fuzz.
 # Each runs the command docs/README.md names for it; a failure stops the script.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 all=(accuracy performance tradeoff mistakes diagnosis compare-diff memory scaling command-vs-cpp
-     dense-speedup window-frame-times window-frame-times-wgpu painter-priority setup-times web
+     dense-speedup window-frame-times window-frame-times-wgpu setup-times web
      windows windows-viewer screenshot readme-screenshots window-sizes fuzz)
 wanted=("$@")
 [ ${#wanted[@]} -eq 0 ] && wanted=("${all[@]}")
@@ -31,7 +31,6 @@ report() {
     window-frame-times) bash scripts/window-frame-times.sh ;;
     window-frame-times-wgpu)
       RAYTRACER_RENDERER=wgpu bash scripts/window-frame-times.sh docs/window-frame-times-wgpu.md ;;
-    painter-priority) bash scripts/painter-priority.sh ;;
     setup-times) bash scripts/setup-times.sh ;;
     web) bash scripts/web.sh report ;;
     windows) bash scripts/windows-report.sh 11 ;;

@@ -60,7 +60,7 @@ percentile() { sort -g "$2" | awk -v p="$1" '{a[NR]=$1} END {i=int((NR-1)*p/100)
 gap_ms=30
 rows=""
 renderers=""
-painters=""
+
 for scene in scenes/scene1_02.txt "$work/dense_1e5.txt" "$work/dense_1e6.txt"; do
   case "$scene" in
     *dense_1e5*) name="dense, 100,000 spheres" ;;
@@ -102,7 +102,6 @@ for scene in scenes/scene1_02.txt "$work/dense_1e5.txt" "$work/dense_1e6.txt"; d
     wait "$viewer" 2>/dev/null || true
     painted_with=$(awk '$1 == "renderer" {print $2; exit}' "$log")
     renderers="$renderers $painted_with"
-    painters="$painters $(awk '$1 == "painter_threads" {print $2 "@" $3; exit}' "$log")"
     tail -n +"$((start + 1))" "$log" > "$work/run.log"
     grep '^frame' "$work/run.log" | awk '{print $2}' > "$work/render.txt"
     grep '^frame' "$work/run.log" | awk '$3 != "NaN" {print $3}' > "$work/latency.txt"
@@ -157,9 +156,6 @@ done
   echo
   echo "This run: the window painted with $(echo $renderers | tr ' ' '\n' | sort -u | tr '\n' ' ' | sed 's/ $//')"
   echo "(as the viewer's frame log says; ${RAYTRACER_RENDERER:+\`RAYTRACER_RENDERER=$RAYTRACER_RENDERER\`, }see src/app/window.rs)."
-  echo
-  echo "This run: Mesa's painter threads, and how much their nice value was raised, as the log"
-  echo "says (count@raise): $(echo $painters | tr " " "\n" | sort -u | tr "\n" " " | sed "s/ $//") (${RAYTRACER_PAINTER_NICE:+\`RAYTRACER_PAINTER_NICE=$RAYTRACER_PAINTER_NICE\`, }see src/app/painter_priority.rs)."
   if [ -n "${LP_NUM_THREADS:-}" ]; then
     echo
     echo "This run: \`LP_NUM_THREADS=$LP_NUM_THREADS\`, Mesa's software painter on $LP_NUM_THREADS thread(s) instead of one per"

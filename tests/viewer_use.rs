@@ -78,7 +78,7 @@ fn slider_moves_the_view(harness: &mut App) {
 }
 
 #[test]
-fn an_800_by_600_window_shows_the_images_large_and_the_controls_as_a_drawer() {
+fn an_800_by_600_window_shows_the_images_large_and_the_controls_beside_them() {
     let size = vec2(800.0, 600.0);
     let mut harness = viewer_sized(Some(scene_path("scene1_02.txt")), size, 1.0);
     let window = Rect::from_min_size(egui::Pos2::ZERO, size);
@@ -250,8 +250,7 @@ fn named_views_are_kept_per_scene_and_go_back_to_the_named_camera() {
     let mut harness = viewer(Some(scene.clone()));
     press(&mut harness, Modifiers::NONE, Key::ArrowRight);
     let named = view(&harness);
-    harness.get_by_label("name").click();
-    harness.step();
+    click(&mut harness, "name");
     harness.get_by_label("name").type_text("left side");
     harness.step();
     click(&mut harness, "Add view");

@@ -43,79 +43,15 @@ fn blob_in_rows(
 
 #[test]
 fn real_window_shows_colour_and_depth_side_by_side() {
-    // Painted with OpenGL unless asked otherwise, Mesa's painter threads giving way to the
-    // renderer's.
+    // Painted with OpenGL unless asked otherwise.
     let shown = shows_both_images(None, &[]);
     assert_eq!(shown.renderer, "glow");
-    assert_painters_raised_by(&shown, 10);
 }
 
 #[test]
 fn real_window_painted_with_wgpu_when_asked_shows_both_images() {
     let shown = shows_both_images(Some("wgpu"), &[]);
     assert_eq!(shown.renderer, "wgpu");
-    assert_painters_raised_by(&shown, 10);
-}
-
-#[test]
-fn the_painter_keeps_the_renderers_priority_when_asked() {
-    let shown = shows_both_images(None, &[("RAYTRACER_PAINTER_NICE", "0")]);
-    assert_painters_raised_by(&shown, 0);
-}
-
-#[test]
-fn a_painter_priority_out_of_range_is_refused_naming_the_range() {
-    // Checked before the display is: no X server is needed (none answers on this display).
-    let (status, stderr) = run_until_it_ends(
-        ":9999",
-        &[("RAYTRACER_PAINTER_NICE", "20")],
-        Duration::from_secs(30),
-        "the viewer did not end within 30 s: it opened instead of refusing",
-    );
-    assert_eq!(status, Some(2), "a usage error: {stderr}");
-    assert_eq!(
-        stderr.trim_end(),
-        "raytracer: RAYTRACER_PAINTER_NICE is \"20\": it must be a whole number from 0 to 19"
-    );
-}
-
-/// Mesa's painter threads (`llvmpipe-N`) run at nice `raise`, and say so in the frame log; the
-/// renderer's threads (rayon's and the render worker) and the UI thread at nice 0.
-fn assert_painters_raised_by(shown: &Shown, raise: i32) {
-    let nice_of = |prefix: &str| -> Vec<i32> {
-        shown
-            .threads
-            .iter()
-            .filter(|(name, _)| name.starts_with(prefix))
-            .map(|&(_, nice)| nice)
-            .collect()
-    };
-    let painters = nice_of("llvmpipe-");
-    assert!(!painters.is_empty(), "painter threads: {:?}", shown.threads);
-    assert!(
-        painters.iter().all(|&nice| nice == raise),
-        "{:?}",
-        shown.threads
-    );
-    let renderer: Vec<i32> = [
-        nice_of("rayon-"),
-        nice_of("render-worker"),
-        nice_of("raytracer"),
-    ]
-    .concat();
-    assert!(renderer.len() >= 3, "{:?}", shown.threads);
-    assert!(
-        renderer.iter().all(|&nice| nice == 0),
-        "{:?}",
-        shown.threads
-    );
-    assert!(
-        shown
-            .log
-            .contains(&format!("painter_threads {} {raise}\n", painters.len())),
-        "{}",
-        shown.log
-    );
 }
 
 /// Mesa finds no OpenGL driver (its Vulkan one is found apart).
@@ -193,38 +129,8 @@ fn run_until_it_ends(
 struct Shown {
     /// The renderer its frame log names.
     renderer: String,
-    /// Its frame log.
-    log: String,
     /// What it wrote on standard error.
     stderr: String,
-    /// Its threads' names and nice values.
-    threads: Vec<(String, i32)>,
-}
-
-/// The names and nice values of the threads of process `pid`.
-fn threads_of(pid: u32) -> Vec<(String, i32)> {
-    let mut threads = Vec::new();
-    for task in std::fs::read_dir(format!("/proc/{pid}/task"))
-        .unwrap()
-        .flatten()
-    {
-        let (Ok(name), Ok(stat)) = (
-            std::fs::read_to_string(task.path().join("comm")),
-            std::fs::read_to_string(task.path().join("stat")),
-        ) else {
-            continue;
-        };
-        // The fields after the name: state is the 3rd field of the line, nice the 19th.
-        let after_name = stat.rsplit_once(") ").map_or("", |(_, rest)| rest);
-        let nice = after_name
-            .split_whitespace()
-            .nth(16)
-            .unwrap()
-            .parse()
-            .unwrap();
-        threads.push((name.trim_end().to_owned(), nice));
-    }
-    threads
 }
 
 /// Runs the viewer on scene1_01 with `RAYTRACER_RENDERER` set to `renderer` (unset with `None`)
@@ -279,7 +185,6 @@ fn shows_both_images(renderer: Option<&str>, environment: &[(&str, &str)]) -> Sh
                 if let Some(keep) = keep.filter(|_| renderer.is_none() && environment.is_empty()) {
                     shot.save(keep).unwrap();
                 }
-                let threads = threads_of(viewer.0.id());
                 let log = std::fs::read_to_string(&log).unwrap();
                 let first = log.lines().next().unwrap_or_default();
                 let renderer = first
@@ -290,9 +195,7 @@ fn shows_both_images(renderer: Option<&str>, environment: &[(&str, &str)]) -> Sh
                 let _ = viewer.0.wait();
                 return Shown {
                     renderer,
-                    log,
                     stderr: viewer.stderr_text(),
-                    threads,
                 };
             }
         }

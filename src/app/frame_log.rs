@@ -3,8 +3,6 @@
 //! (`scripts/window-frame-times.sh`):
 //!
 //! * `renderer NAME`: first, the renderer painting the window (`glow` or `wgpu`);
-//! * `painter_threads COUNT NICE`: next, how many of Mesa's painter threads had their nice value
-//!   raised, and by how much (`src/app/painter_priority.rs`);
 //! * `ui MS`: the UI thread's time for the previous frame (egui's layout, tessellation and paint,
 //!   as eframe measures it);
 //! * `frame RENDER_MS LATENCY_MS WIDTH HEIGHT`: a new frame from the worker — its render time
@@ -36,13 +34,6 @@ impl FrameLog {
     /// The renderer that paints the window (`glow` or `wgpu`), once at the start.
     pub(crate) fn renderer(&mut self, name: &str) {
         let _ = writeln!(self.out, "renderer {name}");
-        let _ = self.out.flush();
-    }
-
-    /// `count` painter threads had their nice value raised by `raise`, once at the start.
-    #[cfg_attr(target_arch = "wasm32", allow(dead_code))]
-    pub(crate) fn painter_threads(&mut self, count: usize, raise: i32) {
-        let _ = writeln!(self.out, "painter_threads {count} {raise}");
         let _ = self.out.flush();
     }
 

@@ -21,8 +21,18 @@ use crate::render::View;
 /// Below this window width the controls are a drawer over the images, not a side panel.
 pub(crate) const DRAWER_BELOW_POINTS: f32 = 900.0;
 
-/// Width of the side panel (or the drawer), points.
+/// Width of the side panel (or the drawer) in the narrowest windows, points.
 const PANEL_POINTS: f32 = 320.0;
+
+/// The side panel's width, points: a quarter of the window (so that sliders grow with it), from
+/// [`PANEL_POINTS`] to 440.
+pub(crate) fn panel_points(window_width: f32) -> f32 {
+    (0.25 * window_width).clamp(PANEL_POINTS, 440.0)
+}
+
+/// From this window width down to [`DRAWER_BELOW_POINTS`] the opened controls push the images
+/// aside (they shrink, nothing is covered); below it they are a drawer over the images.
+pub(crate) const PUSH_ASIDE_FROM_POINTS: f32 = 640.0;
 
 impl ViewerApp {
     /// The whole window; returns what the user asked for.
@@ -51,23 +61,32 @@ impl ViewerApp {
         if self.settings.show_controls && !narrow {
             egui::Panel::left("controls")
                 .resizable(true)
-                .default_size(PANEL_POINTS)
+                .default_size(panel_points(window_width))
                 .max_size((0.45 * window_width).max(200.0))
+                .show(ui, |ui| actions.extend(self.side_panel_ui(ui)));
+        }
+        // In a narrow window that still has room, the opened controls push the images aside.
+        let push_aside = narrow && window_width >= PUSH_ASIDE_FROM_POINTS;
+        if self.drawer_open && push_aside {
+            egui::Panel::left("controls, narrow")
+                .resizable(false)
+                .exact_size(PANEL_POINTS - 40.0)
                 .show(ui, |ui| actions.extend(self.side_panel_ui(ui)));
         }
         egui::CentralPanel::default().show(ui, |ui| self.images_ui(ui));
         let ctx = ui.ctx().clone();
-        if self.drawer_open && narrow {
+        if self.drawer_open && narrow && !push_aside {
             let mut open = true;
-            let height = ctx.content_rect().height() - toolbar_bottom - 64.0;
+            // As tall as the window allows, whatever height it had before the window changed.
+            let height = (ctx.content_rect().height() - toolbar_bottom - 64.0).max(100.0);
+            let width = PANEL_POINTS.min(window_width - 16.0);
             egui::Window::new("View controls")
                 .open(&mut open)
                 .anchor(
                     egui::Align2::LEFT_TOP,
                     egui::vec2(4.0, toolbar_bottom + 4.0),
                 )
-                .default_width(PANEL_POINTS.min(window_width - 16.0))
-                .max_height(height.max(100.0))
+                .fixed_size(egui::vec2(width, height))
                 .collapsible(false)
                 .resizable(false)
                 .show(&ctx, |ui| actions.extend(self.side_panel_ui(ui)));

@@ -20,7 +20,6 @@
 //! * [`dialogs`]: native file dialogs; [`reload`]: watching the open file
 //! * [`inspect`]: read access for tests and tools
 //! * [`window`]: opening the window (or saying why none can be opened)
-//! * [`painter_priority`]: the window's software painter gives way to the renderer
 //! * [`web`]: in a browser page, files in as bytes and out as downloads
 //! * [`ui`]: the drawing, one `*_ui` function per part
 
@@ -34,8 +33,6 @@ pub(crate) mod input;
 pub(crate) mod inspect;
 pub mod job;
 pub(crate) mod layout;
-#[cfg(not(target_arch = "wasm32"))]
-pub(crate) mod painter_priority;
 pub(crate) mod reload;
 pub(crate) mod scene_loading;
 pub mod state;

@@ -3,7 +3,7 @@
 //!
 //! The window is painted with OpenGL (glow) unless `RAYTRACER_RENDERER=wgpu` asks for wgpu. Where
 //! there is no GPU, both paint on the CPU with Mesa, on the cores the render worker needs, and
-//! OpenGL's painter (llvmpipe) costs about a seventh of the CPU per UI frame that Vulkan's
+//! OpenGL's painter (llvmpipe) costs about a fifth of the CPU per UI frame that Vulkan's
 //! (lavapipe, under wgpu) does: `scripts/window-frame-times.sh` measures both
 //! (`docs/window-frame-times.md`, `docs/window-frame-times-wgpu.md`).
 //! If OpenGL cannot be started and no renderer was asked for, wgpu is tried (and standard error
@@ -12,7 +12,6 @@
 use eframe::Renderer;
 
 use super::ViewerApp;
-use super::painter_priority::{lower_painter_threads, painter_nice_of_environment};
 use crate::cli::ViewerRequest;
 
 /// The environment variable that chooses the renderer: `glow` (OpenGL, the default) or `wgpu`.
@@ -33,14 +32,11 @@ pub(crate) fn renderer_asked(value: Option<&std::ffi::OsStr>) -> Result<Option<R
     }
 }
 
-/// Why the environment's choices for the window (its renderer, [`RENDERER_VARIABLE`]; its
-/// painter's priority,
-/// [`super::painter_priority::PAINTER_NICE_VARIABLE`]) cannot be followed, if they cannot: one line for
-/// the user, naming what may be chosen (checked before anything else of the viewer starts).
+/// Why the environment's choice of renderer for the window ([`RENDERER_VARIABLE`]) cannot be
+/// followed, if it cannot: one line for the user, naming what may be chosen (checked before
+/// anything else of the viewer starts).
 pub fn environment_problem() -> Option<String> {
-    renderer_of_environment()
-        .err()
-        .or_else(|| painter_nice_of_environment().err())
+    renderer_of_environment().err()
 }
 
 /// [`renderer_asked`] by this process's [`RENDERER_VARIABLE`].
@@ -96,14 +92,7 @@ fn run_with(
         options,
         Box::new(|cc| {
             opened.set(true);
-            // The painter's threads exist once its context does: they give way to the renderer.
-            let raise = painter_nice_of_environment().unwrap_or(0);
-            let lowered = lower_painter_threads(raise);
-            let mut app = ViewerApp::new(cc, request);
-            if let Some(log) = &mut app.frame_log {
-                log.painter_threads(lowered, raise);
-            }
-            Ok(Box::new(app))
+            Ok(Box::new(ViewerApp::new(cc, request)))
         }),
     )
 }

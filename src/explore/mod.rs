@@ -10,4 +10,7 @@ pub mod navigate;
 pub mod probe;
 pub(crate) mod ranges;
 
-pub use ranges::{SliderRanges, initial_depth_range, scene_extent, visible_depth_range};
+pub use ranges::{
+    Reach, SIZE_REACH_FACTOR, SliderRanges, initial_depth_range, scene_extent, visible_depth_range,
+    window_around,
+};

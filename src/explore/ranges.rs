@@ -29,6 +29,38 @@ pub fn scene_extent(scene: &Scene) -> Bounds {
     }
 }
 
+/// How far a slider reaches from the value its drag starts at, so that its step follows the
+/// value (a slider spanning the whole scene moves a small view by whole screens per pixel).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Reach {
+    /// `value − d ..= value + d`.
+    Plus(f64),
+    /// `value / f ..= value · f` (a logarithmic slider; `f` > 1).
+    Times(f64),
+}
+
+/// A size slider reaches this factor either way: a drag across the whole slider scales the
+/// view by 64.
+pub const SIZE_REACH_FACTOR: f64 = 8.0;
+
+/// The part of `range` a slider spans for a drag that starts at `value`: `value` reached by
+/// `reach` either way, kept inside `range` (which always holds `value`, see [`SliderRanges`]).
+/// A value that is not a usable number, or a reach that is not, gives `range` itself.
+pub fn window_around(range: &RangeInclusive<f64>, value: f64, reach: Reach) -> RangeInclusive<f64> {
+    let (low, high) = match reach {
+        Reach::Plus(d) => (value - d, value + d),
+        Reach::Times(f) => (value / f, value * f),
+    };
+    let usable = match reach {
+        Reach::Plus(d) => d > 0.0,
+        Reach::Times(f) => f > 1.0 && value > 0.0,
+    };
+    if !(usable && low.is_finite() && high.is_finite() && range.contains(&value)) {
+        return range.clone();
+    }
+    low.max(*range.start())..=high.min(*range.end())
+}
+
 /// The ranges of the viewer's sliders for one scene and view.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SliderRanges {
@@ -40,6 +72,12 @@ pub struct SliderRanges {
     /// Depth min and max: t of the scene's bounding sphere along the view direction, widened by
     /// half its radius on both sides.
     pub(crate) depth_t: RangeInclusive<f64>,
+    /// How far a drag of a centre slider reaches: the view's size (two screens across the
+    /// slider), or the scene's diagonal for an unusable size.
+    pub(crate) center_reach: Reach,
+    /// How far a drag of a depth slider reaches: the depth range's width (at least a hundredth
+    /// of the depth slider's whole range), so a narrow range is tuned finely.
+    pub(crate) depth_reach: Reach,
 }
 
 /// `range` widened to contain `value`, if `value` is a usable number (finite and at most
@@ -89,10 +127,25 @@ impl SliderRanges {
             widen_to(depth_t, view.depth_range.min_t),
             view.depth_range.max_t,
         );
+        let size = view.size_world;
+        let center_reach = if size > 0.0 && size <= MAX_MAGNITUDE {
+            size
+        } else {
+            diagonal
+        };
+        let depth_width = (view.depth_range.max_t - view.depth_range.min_t).abs();
+        let depth_floor = 0.01 * (depth_t.end() - depth_t.start());
+        let depth_reach = if depth_width <= MAX_MAGNITUDE {
+            depth_width.max(depth_floor)
+        } else {
+            depth_floor
+        };
         Self {
             center_world,
             size_world,
             depth_t,
+            center_reach: Reach::Plus(center_reach),
+            depth_reach: Reach::Plus(depth_reach),
         }
     }
 }
@@ -157,6 +210,46 @@ mod tests {
         assert!(ranges.depth_t.contains(&9.0) && ranges.depth_t.contains(&10.0));
         // Depth slider centred on the scene's centre t (10).
         assert!((ranges.depth_t.start() + ranges.depth_t.end() - 20.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_drag_reaches_as_far_as_the_view_not_the_whole_scene() {
+        let scene = course_scene_1_01();
+        let view = View::of_camera(&scene.camera, 10, 10, DepthRange::new(9.0, 10.0));
+        let ranges = SliderRanges::new(&scene, &view);
+        // Centre: the view's size (5) either way; depth: the range's width (1).
+        assert_eq!(ranges.center_reach, Reach::Plus(5.0));
+        assert_eq!(ranges.depth_reach, Reach::Plus(1.0));
+        assert_eq!(
+            window_around(&ranges.center_world[0], 0.5, Reach::Plus(2.0)),
+            -1.5..=2.5
+        );
+        // Kept inside the whole range: ±5 around 0 is cut to the scene's ±(1 + diagonal).
+        assert_eq!(
+            window_around(&ranges.center_world[0], 0.0, ranges.center_reach),
+            ranges.center_world[0]
+        );
+        assert_eq!(
+            window_around(&ranges.depth_t, 9.0, ranges.depth_reach),
+            8.0..=10.0
+        );
+        assert_eq!(
+            window_around(&ranges.size_world, 2.0, Reach::Times(SIZE_REACH_FACTOR)),
+            0.25..=16.0
+        );
+        // Kept inside the whole range: the size slider stops at ten diagonals.
+        let ten_diagonals = 20.0 * 3f64.sqrt();
+        assert_eq!(
+            window_around(&ranges.size_world, 5.0, Reach::Times(SIZE_REACH_FACTOR)),
+            0.625..=ten_diagonals
+        );
+        // A value outside the range, or an unusable one, gets the whole range.
+        for value in [f64::NAN, 1e6, -1.0] {
+            assert_eq!(
+                window_around(&ranges.size_world, value, Reach::Times(SIZE_REACH_FACTOR)),
+                ranges.size_world
+            );
+        }
     }
 
     #[test]

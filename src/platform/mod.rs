@@ -7,7 +7,6 @@
 //!   ask for, the wake that tells the viewer, and rayon's thread pool;
 //! * [`console`]: standard output and error that a closed pipe ends quietly;
 //! * [`memory`]: the memory the program may still use, and its peak so far;
-//! * [`threads`]: lowering the priority of another library's threads, found by name (Linux);
 //! * [`display`]: whether there is a display server to open a window on.
 //!
 //! This is the bottom layer: it knows nothing of scenes, pictures or the command line.
@@ -17,4 +16,3 @@ pub mod display;
 pub mod files;
 pub mod memory;
 pub mod process;
-pub mod threads;

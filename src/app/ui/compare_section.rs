@@ -71,13 +71,10 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
         });
     }
     let Some(current) = &state.current else {
-        ui.label(
-            RichText::new(
-                "their image is compared with the exact render of the scene's own camera at its \
-                 size: the view is held there while it is open",
-            )
-            .small()
-            .weak(),
+        super::hint(
+            ui,
+            "their image is compared with the exact render of the scene's own camera at its \
+             size: the view is held there while it is open",
         );
         return actions;
     };

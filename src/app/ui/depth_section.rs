@@ -2,7 +2,7 @@
 //! cut and a "follow" mode that keeps fitting while the view changes, the histogram's count
 //! scale, and resetting the range to the file's.
 
-use egui::{RichText, Ui};
+use egui::Ui;
 
 use crate::app::actions::Action;
 use crate::app::state::DepthDisplay;
@@ -58,10 +58,6 @@ pub(crate) fn depth_tools_ui(ui: &mut Ui, display: &mut DepthDisplay) -> Vec<Act
             actions.push(Action::ResetDepth);
         }
     });
-    ui.label(
-        RichText::new("drag the lines on the histogram to set the range")
-            .small()
-            .weak(),
-    );
+    super::hint(ui, "drag the lines on the histogram to set the range");
     actions
 }

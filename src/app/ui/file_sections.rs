@@ -135,19 +135,16 @@ pub(crate) fn export_ui(
         Some("tga") => settings.format = ExportFormat::Tga,
         _ => {}
     }
-    ui.label(
-        RichText::new(
-            "writes <name>_colour, <name>_depth (in the colour map on screen), <name>_both, \
-             <name>_scene.txt (the current camera) and <name>_command.sh (the command line \
-             that renders the same files); asks before replacing any file",
-        )
-        .small()
-        .weak(),
+    super::hint(
+        ui,
+        "writes <name>_colour, <name>_depth (in the colour map on screen), <name>_both, \
+         <name>_scene.txt (the current camera) and <name>_command.sh (the command line \
+         that renders the same files); asks before replacing any file",
     );
     if let Some(note) = dialog_note {
         ui.label(
             RichText::new(note)
-                .small()
+                .size(super::HINT_POINTS)
                 .color(ui.visuals().warn_fg_color),
         );
     }

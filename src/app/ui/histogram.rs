@@ -8,7 +8,7 @@
 
 use egui::{Align2, Color32, CursorIcon, FontId, Pos2, Rect, Sense, Stroke, Ui, Vec2};
 
-use super::probe_text::short_number;
+use super::probe_text::{decimals_for_span, grouped, range_ends};
 use crate::explore::depth_stats::DepthHistogram;
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 
@@ -263,8 +263,10 @@ fn range_handles_ui(
     let (bars, legend) = (layout.bars, layout.legend);
     let mut moved = false;
     let accent = ui.visuals().selection.stroke.color;
+    let ends = range_ends(range.min_t, range.max_t);
     for (is_min, label) in [(true, MIN_HANDLE_LABEL), (false, MAX_HANDLE_LABEL)] {
         let t = if is_min { range.min_t } else { range.max_t };
+        let shown_t = &ends[usize::from(!is_min)];
         // NaN (a degenerate axis) puts the handle at the left edge: widget rects must be numbers.
         let raw_x = layout.x_of(t);
         let x = if raw_x.is_nan() {
@@ -297,7 +299,7 @@ fn range_handles_ui(
             (true, false) => "> ",
             _ => "",
         };
-        let text = format!("{arrow}{name} {}", short_number(t));
+        let text = format!("{arrow}{name} {shown_t}");
         let anchor = if x < bars.center().x {
             Align2::LEFT_BOTTOM
         } else {
@@ -342,8 +344,7 @@ fn paint_axis_labels(
     let block = layout.block;
     let y = layout.legend.bottom() + 2.0;
     let weak = ui.visuals().weak_text_color();
-    let low = format!("t {}", short_number(layout.axis_low));
-    let high = format!("t {}", short_number(layout.axis_high));
+    let [low, high] = range_ends(layout.axis_low, layout.axis_high).map(|end| format!("t {end}"));
     labels.place(
         painter,
         Pos2::new(block.left(), y),
@@ -360,7 +361,11 @@ fn paint_axis_labels(
         weak,
         block,
     );
-    let counts = format!("{} px · {} no hit", histogram.total(), histogram.no_hit);
+    let counts = format!(
+        "{} px · {} no hit",
+        grouped(histogram.total() as f64, 0),
+        grouped(histogram.no_hit as f64, 0)
+    );
     let at = Pos2::new(block.center().x, y);
     if let Some(rect) = labels.place(painter, at, Align2::CENTER_TOP, &counts, weak, block) {
         let [r, g, b] = no_hit_rgb;
@@ -393,7 +398,12 @@ fn paint_hover_readout(
     } else {
         0
     };
-    let text = format!("t {} · {count} px", short_number(t));
+    let decimals = decimals_for_span(layout.axis_high - layout.axis_low);
+    let text = format!(
+        "t {} · {} px",
+        grouped(t, decimals),
+        grouped(count as f64, 0)
+    );
     painter.line_segment(
         [
             Pos2::new(pointer.x, layout.bars.top()),

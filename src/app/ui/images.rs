@@ -12,7 +12,7 @@ use super::gestures::{ImageGestures, read_gestures};
 use super::histogram::{HistogramStyle, histogram_ui};
 use super::magnifier::{Magnifier, Region};
 use super::probe_panel::probe_ui;
-use super::probe_text::short_number;
+use super::probe_text::range_ends;
 use crate::explore::depth_stats::DepthHistogram;
 use crate::render::MAX_SIDE_PX;
 use crate::render::depth_map::{DepthColourMap, DepthRange};
@@ -242,14 +242,13 @@ pub(crate) fn images_ui(
 /// The captions above the two images.
 fn captions(shown: Option<&ShownImages<'_>>) -> [String; 2] {
     let mut captions = match shown {
-        Some(images) => [
-            "colour".to_owned(),
-            format!(
-                "depth  (t {} near … {} far)",
-                short_number(images.depth_range.min_t),
-                short_number(images.depth_range.max_t)
-            ),
-        ],
+        Some(images) => {
+            let [near, far] = range_ends(images.depth_range.min_t, images.depth_range.max_t);
+            [
+                "colour".to_owned(),
+                format!("depth  (t {near} near … {far} far)"),
+            ]
+        }
         None => ["colour".to_owned(), "depth".to_owned()],
     };
     if let Some(compared) = shown.and_then(|s| s.compared.as_ref()) {

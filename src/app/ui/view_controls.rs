@@ -3,7 +3,7 @@
 
 use egui::Ui;
 
-use crate::explore::SliderRanges;
+use crate::explore::{Reach, SIZE_REACH_FACTOR, SliderRanges, window_around};
 use crate::render::sampling::MAX_FILTER_SIZE;
 use crate::render::{Filter, Quality, Sampler, Sampling, View};
 
@@ -15,9 +15,6 @@ fn widened(range: &std::ops::RangeInclusive<f64>, value: f64) -> std::ops::Range
     }
 }
 
-/// Room beside a slider for its value field and its name, points.
-const SLIDER_TEXT_POINTS: f32 = 150.0;
-
 /// Shift or Alt while dragging a slider moves it at this share of the speed.
 pub(crate) const FINE_DRAG: f64 = 0.1;
 
@@ -25,37 +22,70 @@ pub(crate) const FINE_DRAG: f64 = 0.1;
 /// tenth of that).
 const NUDGE_SHARE: f64 = 0.005;
 
-/// One slider of the view: as wide as the panel allows, fine with Shift or Alt, nudged by the
-/// wheel while it has the keyboard focus, with a tooltip.
+/// The width kept for a slider's value field, points.
+const VALUE_FIELD_POINTS: f32 = 90.0;
+
+/// One slider of the view: its name and value field on a line, the slider below as wide as the
+/// panel. The slider spans `reach` around the value (held from the start of a drag to its end,
+/// inside `range`), so its step follows the value; Shift or Alt drag finely, the wheel nudges it
+/// while it has the keyboard focus, and a typed value may lie anywhere.
 fn slider(
     ui: &mut Ui,
     label: &str,
     value: &mut f64,
-    range: std::ops::RangeInclusive<f64>,
+    (range, reach): (std::ops::RangeInclusive<f64>, Option<Reach>),
     logarithmic: bool,
     tooltip: &str,
 ) {
     let before = *value;
-    ui.spacing_mut().slider_width = (ui.available_width() - SLIDER_TEXT_POINTS).max(60.0);
-    let (low, high) = (*range.start(), *range.end());
+    let hint =
+        format!("{tooltip}\nType a value, drag (Shift or Alt: fine), or scroll while focused");
+    // The window the slider spans: held while a drag lasts, else around the value.
+    let window_id = ui.make_persistent_id(("slider window", label));
+    let held: Option<(f64, f64)> = ui.data(|data| data.get_temp(window_id));
+    let window = match (held, reach) {
+        (Some((low, high)), _) => low..=high,
+        (None, Some(reach)) => window_around(&range, *value, reach),
+        (None, None) => range,
+    };
+    let (low, high) = (*window.start(), *window.end());
+    let name = ui
+        .horizontal(|ui| {
+            let name = ui.label(label);
+            ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+                let per_point = (high - low) / f64::from(ui.available_width().max(1.0));
+                ui.add_sized(
+                    [VALUE_FIELD_POINTS, ui.spacing().interact_size.y],
+                    egui::DragValue::new(value)
+                        .speed(per_point.max(f64::MIN_POSITIVE))
+                        .max_decimals(6),
+                )
+                .labelled_by(name.id)
+                .on_hover_text(&hint);
+            });
+            name
+        })
+        .inner;
+    ui.spacing_mut().slider_width = ui.available_width().max(60.0);
     let response = ui
         .add(
-            egui::Slider::new(value, range)
-                .text(label)
+            egui::Slider::new(value, window)
+                .show_value(false)
                 .logarithmic(logarithmic)
-                .clamping(egui::SliderClamping::Never)
-                .max_decimals(6),
+                .clamping(egui::SliderClamping::Never),
         )
-        .on_hover_text(format!(
-            "{tooltip}\nType a value, drag (Shift or Alt: fine), or scroll while focused"
-        ));
+        .labelled_by(name.id)
+        .on_hover_text(&hint);
     let modifiers = ui.input(|i| i.modifiers);
     let fine = modifiers.shift || modifiers.alt;
     // A slider puts the value under the pointer; a fine drag moves it by a tenth of the pointer's
     // travel since the drag began instead (and a press does not jump).
     let start_id = response.id.with("fine drag start");
     if response.drag_started() {
-        ui.data_mut(|data| data.insert_temp(start_id, (before, *value)));
+        ui.data_mut(|data| {
+            data.insert_temp(start_id, (before, *value));
+            data.insert_temp(window_id, (low, high));
+        });
     }
     let start: Option<(f64, f64)> = ui.data(|data| data.get_temp(start_id));
     if (response.dragged() || response.drag_stopped())
@@ -65,8 +95,11 @@ fn slider(
     {
         *value = start_value + (*value - start_raw) * FINE_DRAG;
     }
-    if response.drag_stopped() {
-        ui.data_mut(|data| data.remove::<(f64, f64)>(start_id));
+    if response.drag_stopped() || !response.dragged() && !response.drag_started() {
+        ui.data_mut(|data| {
+            data.remove::<(f64, f64)>(start_id);
+            data.remove::<(f64, f64)>(window_id);
+        });
     }
     if response.has_focus() {
         // Wheel notches (not the smoothed scroll, which spreads one notch over frames).
@@ -115,7 +148,7 @@ pub(crate) fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) -
             ui,
             name,
             &mut candidate.center_world[axis],
-            ranges.center_world[axis].clone(),
+            (ranges.center_world[axis].clone(), Some(ranges.center_reach)),
             false,
             &tooltip,
         );
@@ -124,7 +157,10 @@ pub(crate) fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) -
         ui,
         "size",
         &mut candidate.size_world,
-        ranges.size_world.clone(),
+        (
+            ranges.size_world.clone(),
+            Some(Reach::Times(SIZE_REACH_FACTOR)),
+        ),
         true,
         "The screen's width in world units: smaller zooms in",
     );
@@ -134,7 +170,7 @@ pub(crate) fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) -
         ui,
         "depth min",
         &mut candidate.depth_range.min_t,
-        ranges.depth_t.clone(),
+        (ranges.depth_t.clone(), Some(ranges.depth_reach)),
         false,
         "t drawn white (near)",
     );
@@ -142,7 +178,7 @@ pub(crate) fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) -
         ui,
         "depth max",
         &mut candidate.depth_range.max_t,
-        ranges.depth_t.clone(),
+        (ranges.depth_t.clone(), Some(ranges.depth_reach)),
         false,
         "t drawn black (far)",
     );
@@ -159,7 +195,7 @@ pub(crate) fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) -
                 ui,
                 name,
                 &mut candidate.direction_world[axis],
-                range,
+                (range, None),
                 false,
                 &tooltip,
             );
@@ -171,7 +207,7 @@ pub(crate) fn controls_ui(ui: &mut Ui, view: &mut View, ranges: &SliderRanges) -
                 ui,
                 name,
                 &mut candidate.up_world[axis],
-                range,
+                (range, None),
                 false,
                 &tooltip,
             );

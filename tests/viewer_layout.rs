@@ -1,0 +1,201 @@
+//! The viewer's controls and probe at the window sizes people use, driven headlessly with
+//! egui_kittest: sliders as wide as the panel whose steps follow the value, every line of the
+//! probe readable (wrapped, and scrolled to when they do not fit), and the controls beside the
+//! images in an 800-point window and over them, as tall as the window, in smaller ones.
+#![cfg(feature = "gui")]
+
+mod common;
+
+use egui::accesskit::Role;
+use egui::{Event, Modifiers, MouseWheelUnit, PointerButton, Pos2, Rect, vec2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::{NodeT, Queryable};
+use raytracer::app::ViewerApp;
+use raytracer::render::View;
+
+use common::{click, drag, scene_path, settle, viewer_sized};
+
+type App = Harness<'static, ViewerApp>;
+
+fn view(harness: &App) -> View {
+    *harness.state().view()
+}
+
+fn slider_rect(harness: &App, label: &str) -> Rect {
+    harness.get_by_role_and_label(Role::Slider, label).rect()
+}
+
+/// Drags the slider `label` by `points` to the right from its centre.
+fn drag_slider(harness: &mut App, label: &str, points: f32) {
+    let from = slider_rect(harness, label).center();
+    drag(
+        harness,
+        PointerButton::Primary,
+        Modifiers::NONE,
+        from,
+        from + vec2(points, 0.0),
+    );
+}
+
+#[test]
+fn sliders_are_wide_in_a_wide_window_and_their_steps_follow_the_value() {
+    // scene1_01: size 5, the depth range 9 … 10.
+    let mut harness = viewer_sized(Some(scene_path("scene1_01.txt")), vec2(1600.0, 900.0), 1.0);
+    for label in ["centre x", "size", "depth min"] {
+        let width = slider_rect(&harness, label).width();
+        assert!(width >= 340.0, "{label}: {width} points wide");
+    }
+    // A 45-point drag scales the size by less than 2 (the whole scene's range moved it by 12).
+    let before = view(&harness);
+    drag_slider(&mut harness, "size", 45.0);
+    let ratio = view(&harness).size_world / before.size_world;
+    assert!(ratio > 1.05 && ratio < 2.0, "size × {ratio}");
+    // A 50-point drag moves depth min by less than half the range's width (1).
+    let before = view(&harness).depth_range;
+    drag_slider(&mut harness, "depth min", 50.0);
+    let moved = view(&harness).depth_range.min_t - before.min_t;
+    assert!(moved > 0.02 && moved < 0.5, "depth min moved by {moved}");
+    // Once the drag ends the slider spans the new value's neighbourhood, as far as the new
+    // range is wide: the same drag again moves it that much less.
+    let after = view(&harness).depth_range;
+    drag_slider(&mut harness, "depth min", 50.0);
+    let again = view(&harness).depth_range.min_t - after.min_t;
+    let narrower = (after.max_t - after.min_t) / (before.max_t - before.min_t);
+    assert!(
+        (again / (moved * narrower) - 1.0).abs() < 0.1,
+        "the second drag moved {again}, the first {moved}, the range is {narrower} as wide"
+    );
+}
+
+/// Pins the pixel at `pin` and hovers `hover` (both on the images).
+fn pin_and_hover(harness: &mut App, pin: Pos2, hover: Pos2) {
+    harness.hover_at(pin);
+    harness.step();
+    for pressed in [true, false] {
+        harness.event(Event::PointerButton {
+            pos: pin,
+            button: PointerButton::Primary,
+            pressed,
+            modifiers: Modifiers::NONE,
+        });
+        harness.step();
+    }
+    harness.hover_at(hover);
+    harness.run_steps(3);
+    assert!(harness.state().pinned_probe().is_some(), "a pinned pixel");
+}
+
+/// The rects of the probe's lines that start with `pinned` and `hover`, and of every line.
+fn probe_line_rects(harness: &App) -> Vec<(String, Rect)> {
+    harness
+        .query_all_by_label_contains("")
+        .filter_map(|node| {
+            let rect = node.rect();
+            let node = node.accesskit_node();
+            let label = node.value().or_else(|| node.label())?;
+            let probe = label.starts_with("pinned ")
+                || label.starts_with("hover ")
+                || label.starts_with("       ");
+            probe.then_some((label, rect))
+        })
+        .collect()
+}
+
+/// The top of the status bar (its frame time, "… ms").
+fn status_top(harness: &App) -> f32 {
+    harness
+        .query_all_by_label_contains(" ms")
+        .map(|node| node.rect().top())
+        .fold(f32::NEG_INFINITY, f32::max)
+}
+
+#[test]
+fn a_pinned_and_a_hovered_pixel_are_read_whole_at_1600_by_900() {
+    let mut harness = viewer_sized(Some(scene_path("scene1_02.txt")), vec2(1600.0, 900.0), 1.0);
+    let colour = harness.get_by_label("colour image").rect();
+    let depth = harness.get_by_label("depth image").rect();
+    pin_and_hover(&mut harness, colour.center(), depth.center());
+    let lines = probe_line_rects(&harness);
+    assert!(lines.len() >= 8, "two hits of four lines: {lines:?}");
+    let status_top = status_top(&harness);
+    for (line, rect) in &lines {
+        assert!(
+            rect.bottom() <= status_top && rect.right() <= depth.left(),
+            "{line:?} at {rect:?}: cut (status bar at {status_top}, depth image from {})",
+            depth.left()
+        );
+    }
+}
+
+#[test]
+fn at_800_by_600_the_probe_wraps_its_lines_and_scrolls_to_the_last() {
+    let mut harness = viewer_sized(Some(scene_path("scene1_02.txt")), vec2(800.0, 600.0), 1.0);
+    let colour = harness.get_by_label("colour image").rect();
+    let depth = harness.get_by_label("depth image").rect();
+    pin_and_hover(&mut harness, colour.center(), depth.center());
+    let lines = probe_line_rects(&harness);
+    // Nothing is cut on the right: the longest lines wrap onto a second row (of 11-point text).
+    for (line, rect) in &lines {
+        assert!(rect.right() <= depth.left(), "{line:?} at {rect:?}");
+    }
+    assert!(
+        lines.iter().any(|(_, r)| r.height() >= 2.0 * 11.0),
+        "no line wraps: {lines:?}"
+    );
+    // The lines do not all fit: the wheel over them scrolls the last one into view.
+    let status_top = status_top(&harness);
+    let last = |harness: &App| probe_line_rects(harness).last().unwrap().1;
+    assert!(last(&harness).bottom() > status_top, "all fit: {lines:?}");
+    let over_lines = lines[0].1.center();
+    harness.hover_at(over_lines);
+    for _ in 0..20 {
+        harness.event(Event::MouseWheel {
+            unit: MouseWheelUnit::Line,
+            delta: vec2(0.0, -3.0),
+            modifiers: Modifiers::NONE,
+            phase: egui::TouchPhase::Move,
+            source: egui::MouseWheelSource::Wheel,
+        });
+        harness.step();
+    }
+    harness.run_steps(10);
+    let last = last(&harness);
+    assert!(
+        last.bottom() <= status_top,
+        "the last line at {last:?} (status bar at {status_top})"
+    );
+}
+
+#[test]
+fn at_800_by_600_the_controls_push_the_images_aside_instead_of_covering_them() {
+    let mut harness = viewer_sized(Some(scene_path("scene1_02.txt")), vec2(800.0, 600.0), 1.0);
+    click(&mut harness, "Controls");
+    settle(&mut harness);
+    let slider = slider_rect(&harness, "centre x");
+    for label in ["colour image", "depth image"] {
+        let image = harness.get_by_label(label).rect();
+        assert!(
+            image.left() >= slider.right(),
+            "{label} at {image:?}, a slider at {slider:?}"
+        );
+        assert!(image.width() >= 200.0, "{label}: {image:?}");
+    }
+}
+
+#[test]
+fn the_drawer_of_a_small_window_grows_with_the_window() {
+    let mut harness = viewer_sized(Some(scene_path("scene1_02.txt")), vec2(500.0, 300.0), 1.0);
+    click(&mut harness, "Controls");
+    settle(&mut harness);
+    let drawer = |harness: &App| {
+        harness
+            .get_by_role_and_label(Role::Window, "View controls")
+            .rect()
+    };
+    let small = drawer(&harness);
+    assert!(small.height() < 300.0, "{small:?}");
+    harness.set_size(vec2(600.0, 900.0));
+    settle(&mut harness);
+    let grown = drawer(&harness);
+    assert!(grown.height() > 700.0, "{small:?} then {grown:?}");
+}
