@@ -132,21 +132,53 @@ fn a_folder_path_exports_into_the_folder() {
         press(&mut harness, "Export to path");
         let (message, is_error) = harness.state().message().unwrap();
         assert!(!is_error, "{typed}: {message}");
-        assert!(shots.join("raytracer_colour.png").exists(), "{typed}");
-        assert!(shots.join("raytracer_command.sh").exists(), "{typed}");
+        // Named after the scene file.
+        assert!(shots.join("scene1_02_colour.png").exists(), "{typed}");
+        assert!(shots.join("scene1_02_command.sh").exists(), "{typed}");
         assert_eq!(
             std::fs::read_dir(folder.path()).unwrap().count(),
             1,
             "{typed}: nothing beside the folder"
         );
     }
-    // A folder that does not exist is an error; nothing is written.
-    let missing = format!("{}/", folder.path().join("missing").display());
-    harness.state_mut().settings_mut().export.path = missing;
-    press(&mut harness, "Export to path");
-    let (message, is_error) = harness.state().message().unwrap();
-    assert!(is_error && message.contains("does not exist"), "{message}");
-    assert_eq!(std::fs::read_dir(folder.path()).unwrap().count(), 1);
+}
+
+#[test]
+fn a_missing_folder_is_created_when_the_user_agrees() {
+    let folder = tempfile::tempdir().unwrap();
+    let mut harness = viewer(Some(scene_path("scene1_02.txt")));
+    let missing = folder.path().join("new").join("deeper");
+    for typed in [
+        format!("{}/", missing.display()),
+        missing.join("view.png").display().to_string(),
+    ] {
+        // Cancel: nothing is created.
+        harness.state_mut().settings_mut().export.path = typed.clone();
+        press(&mut harness, "Export to path");
+        assert!(
+            harness.query_by_label("Create this folder?").is_some(),
+            "{typed}: asked"
+        );
+        press(&mut harness, "Cancel");
+        assert_eq!(
+            std::fs::read_dir(folder.path()).unwrap().count(),
+            0,
+            "{typed}"
+        );
+        // Yes: the folder is made and the export written into it.
+        press(&mut harness, "Export to path");
+        press(&mut harness, "Create the folder and export");
+        settle(&mut harness);
+        let (message, is_error) = harness.state().message().unwrap();
+        assert!(!is_error, "{typed}: {message}");
+        let colour = if typed.ends_with('/') {
+            "scene1_02_colour.png"
+        } else {
+            "view_colour.png"
+        };
+        assert!(missing.join(colour).exists(), "{typed}: {message}");
+        std::fs::remove_dir_all(folder.path().join("new")).unwrap();
+    }
 }
 
 #[test]

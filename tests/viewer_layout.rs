@@ -199,3 +199,42 @@ fn the_drawer_of_a_small_window_grows_with_the_window() {
     let grown = drawer(&harness);
     assert!(grown.height() > 700.0, "{small:?} then {grown:?}");
 }
+
+#[test]
+fn a_scene_error_leaves_the_depth_images_caption_readable() {
+    let folder = tempfile::tempdir().unwrap();
+    let broken = folder.path().join("broken.txt");
+    std::fs::write(&broken, "OrthographicCamera { center 0 0 10 size }\n").unwrap();
+    let mut harness = viewer_sized(Some(broken), vec2(1280.0, 720.0), 1.0);
+    let error = harness.get_by_label_contains("broken.txt").rect();
+    let captions: Vec<Rect> = harness
+        .query_all_by_label_contains("near …")
+        .map(|node| node.rect())
+        .collect();
+    assert!(!captions.is_empty(), "the depth image's caption");
+    for caption in captions {
+        assert!(
+            !caption.intersects(error),
+            "the error at {error:?} covers the caption at {caption:?}"
+        );
+    }
+}
+
+#[test]
+fn the_shortcuts_overlay_fits_a_900_point_high_window_without_scrolling() {
+    let mut harness = viewer_sized(Some(scene_path("scene1_02.txt")), vec2(1600.0, 900.0), 1.0);
+    harness.key_press(egui::Key::F1);
+    harness.run_steps(10);
+    let overlay = harness
+        .get_by_role_and_label(Role::Window, "Shortcuts and gestures")
+        .rect();
+    // The first row and the last (the overlay's own key), both in the overlay.
+    for row in ["pan the camera", "this overlay"] {
+        let rect = harness.get_by_label_contains(row).rect();
+        assert!(
+            overlay.contains_rect(rect),
+            "{row:?} at {rect:?}, the overlay {overlay:?}"
+        );
+    }
+    assert!(overlay.bottom() <= 900.0, "{overlay:?}");
+}

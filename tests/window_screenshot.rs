@@ -133,6 +133,15 @@ struct Shown {
     stderr: String,
 }
 
+/// The first pixel left of the red disc at `(x, y)` once past its black background.
+fn frame_left_of(shot: &RgbImage, x: u32, y: u32) -> image::Rgb<u8> {
+    let pixels = (0..x).rev().map(|x| *shot.get_pixel(x, y));
+    pixels
+        .skip_while(|p| p[0] > 250 && p[1] < 5 && p[2] < 5)
+        .find(|p| p.0 != [0, 0, 0])
+        .unwrap_or(image::Rgb([0, 0, 0]))
+}
+
 /// Runs the viewer on scene1_01 with `RAYTRACER_RENDERER` set to `renderer` (unset with `None`)
 /// and the variables `environment` until both images are on screen.
 fn shows_both_images(renderer: Option<&str>, environment: &[(&str, &str)]) -> Shown {
@@ -179,6 +188,13 @@ fn shows_both_images(renderer: Option<&str>, environment: &[(&str, &str)]) -> Sh
                 assert!(
                     (white.1 - red.1).abs() < 20.0,
                     "same height: {white:?} {red:?}"
+                );
+                // A frame shows where the colour image ends: left of the disc, past the image's
+                // black background, a line lighter than the panel.
+                let frame = frame_left_of(&shot, red.0 as u32, red_row);
+                assert!(
+                    frame[0] == frame[1] && frame[1] == frame[2] && (70..=200).contains(&frame[0]),
+                    "no frame left of the colour image: {frame:?}"
                 );
                 // The default window's screenshot (the tests run at once).
                 let keep = std::env::var_os("RAYTRACER_KEEP_SCREENSHOT").map(PathBuf::from);

@@ -154,6 +154,7 @@ impl ViewerApp {
         }
         let plan = ExportPlan {
             base_path,
+            name_in_folder: crate::export::name_in_folder(self.loaded.path.as_deref()),
             format,
             side_by_side: export.side_by_side,
             legend: export.legend,

@@ -1,6 +1,7 @@
 //! Asking before a write replaces anything: an export or "save view as scene" whose files exist
 //! waits for a yes in a modal window that lists them; the open scene file gets a warning of its
-//! own. Nothing is written on "Cancel", on Escape or a click outside the window.
+//! own. An export into a folder that does not exist offers to create it. Nothing is written (nor
+//! created) on "Cancel", on Escape or a click outside the window.
 
 use std::path::PathBuf;
 
@@ -20,10 +21,15 @@ pub(crate) struct PendingReplace {
     pub(crate) existing: Vec<PathBuf>,
     /// One of them is the scene file on screen.
     pub(crate) open_scene: bool,
+    /// The folder the write goes into, which does not exist yet: yes creates it first.
+    pub(crate) missing_folder: Option<PathBuf>,
 }
 
 /// Label of the button that replaces the files (tests find it by this).
 pub(crate) const REPLACE_LABEL: &str = "Replace";
+
+/// Label of the button that creates the missing folder and exports into it.
+pub(crate) const CREATE_FOLDER_LABEL: &str = "Create the folder and export";
 
 impl ViewerApp {
     /// The files a write action would make.
@@ -40,6 +46,19 @@ impl ViewerApp {
 
     /// Carries out a write action now if it replaces nothing; otherwise asks first.
     pub(super) fn write_or_ask(&mut self, action: Action) {
+        // In a browser page files are downloads: there are no folders to create.
+        #[cfg(not(target_arch = "wasm32"))]
+        if let Action::ExportTo(base) = &action
+            && let Some(folder) = crate::export::export_folder(base).filter(|f| !f.is_dir())
+        {
+            self.pending_replace = Some(PendingReplace {
+                action,
+                existing: Vec::new(),
+                open_scene: false,
+                missing_folder: Some(folder),
+            });
+            return;
+        }
         let existing: Vec<PathBuf> = self
             .files_of(&action)
             .into_iter()
@@ -58,6 +77,7 @@ impl ViewerApp {
             action,
             existing,
             open_scene,
+            missing_folder: None,
         });
     }
 
@@ -69,6 +89,20 @@ impl ViewerApp {
         let mut answer = None;
         let modal = egui::Modal::new(egui::Id::unique("replace files")).show(ctx, |ui| {
             ui.set_max_width(520.0);
+            if let Some(folder) = &pending.missing_folder {
+                ui.heading("Create this folder?");
+                ui.label("The export goes into a folder that does not exist yet:");
+                ui.label(RichText::new(folder.display().to_string()).monospace());
+                ui.horizontal(|ui| {
+                    if ui.button(CREATE_FOLDER_LABEL).clicked() {
+                        answer = Some(true);
+                    }
+                    if ui.button("Cancel").clicked() {
+                        answer = Some(false);
+                    }
+                });
+                return;
+            }
             let count = pending.existing.len();
             let title = match count {
                 1 => "Replace this file?".to_owned(),
@@ -100,11 +134,24 @@ impl ViewerApp {
             answer = Some(false);
         }
         match answer {
-            Some(true) => {
-                if let Some(pending) = self.pending_replace.take() {
-                    self.write_now(pending.action);
-                }
-            }
+            Some(true) => match self.pending_replace.take() {
+                Some(PendingReplace {
+                    action,
+                    missing_folder: Some(folder),
+                    ..
+                }) => match std::fs::create_dir_all(&folder) {
+                    // Into the new folder, asking again should anything be there meanwhile.
+                    Ok(()) => self.write_or_ask(action),
+                    Err(error) => {
+                        self.status = Some(super::status::Status::error(format!(
+                            "export: cannot create the folder {}: {error}",
+                            folder.display()
+                        )));
+                    }
+                },
+                Some(pending) => self.write_now(pending.action),
+                None => {}
+            },
             Some(false) => self.pending_replace = None,
             None => {}
         }

@@ -21,6 +21,10 @@ use crate::render::View;
 /// Below this window width the controls are a drawer over the images, not a side panel.
 pub(crate) const DRAWER_BELOW_POINTS: f32 = 900.0;
 
+/// How far below the toolbar a scene's error floats: past the images' captions (the depth
+/// image's names its range), over the images.
+const ERROR_BELOW_TOOLBAR_POINTS: f32 = 36.0;
+
 /// Width of the side panel (or the drawer) in the narrowest windows, points.
 const PANEL_POINTS: f32 = 320.0;
 
@@ -93,7 +97,7 @@ impl ViewerApp {
             self.drawer_open = open;
         }
         if let Some(error) = self.scene_error.clone()
-            && error_overlay_ui(&ctx, &error)
+            && error_overlay_ui(&ctx, &error, toolbar_bottom + ERROR_BELOW_TOOLBAR_POINTS)
         {
             self.scene_error = None;
         }

@@ -40,18 +40,47 @@ pub(crate) struct ExportPaths {
     pub(crate) side_by_side: PathBuf,
 }
 
-/// The base name of an export into a folder (a path that is a folder or ends with `/`).
+/// The base name of an export into a folder when the scene has no file name (the embedded one).
 pub const DEFAULT_EXPORT_NAME: &str = "raytracer";
+
+/// Whether `path` names a folder to export into: an existing folder, or a path ending with `/`
+/// (or `\` on Windows).
+pub(crate) fn names_a_folder(path: &Path) -> bool {
+    let text = path.as_os_str().to_string_lossy();
+    path.is_dir() || text.ends_with('/') || (cfg!(windows) && text.ends_with('\\'))
+}
+
+/// The base name of an export into a folder of the scene file `scene_path`: the file's stem
+/// (`scene1_02.txt` gives `scene1_02`), or [`DEFAULT_EXPORT_NAME`] without a file.
+pub(crate) fn name_in_folder(scene_path: Option<&Path>) -> String {
+    scene_path
+        .and_then(Path::file_stem)
+        .map(|stem| stem.to_string_lossy().into_owned())
+        .filter(|stem| !stem.is_empty())
+        .unwrap_or_else(|| DEFAULT_EXPORT_NAME.to_owned())
+}
+
+/// The folder an export to `base_path` writes into, when it must exist first: `base_path`
+/// itself when it names a folder, else its parent (`None` for a bare file name, which goes into
+/// the working folder).
+pub(crate) fn export_folder(base_path: &Path) -> Option<PathBuf> {
+    if names_a_folder(base_path) {
+        return Some(base_path.to_path_buf());
+    }
+    base_path
+        .parent()
+        .filter(|parent| !parent.as_os_str().is_empty())
+        .map(Path::to_path_buf)
+}
 
 impl ExportPaths {
     /// Paths for base `path`; `format` applies when the path's extension names no format. A
-    /// folder (an existing one, or a path ending with `/`) means "into this folder" with the base
-    /// name [`DEFAULT_EXPORT_NAME`].
-    pub(crate) fn new(path: &Path, format: ImageFormat) -> Self {
-        let names_a_folder = path.is_dir() || path.as_os_str().to_string_lossy().ends_with('/');
+    /// folder (see [`names_a_folder`]) means "into this folder" with the base name
+    /// `name_in_folder` (the scene's, see [`name_in_folder`]).
+    pub(crate) fn new(path: &Path, format: ImageFormat, name_in_folder: &str) -> Self {
         let into_folder;
-        let path = if names_a_folder {
-            into_folder = path.join(DEFAULT_EXPORT_NAME);
+        let path = if names_a_folder(path) {
+            into_folder = path.join(name_in_folder);
             into_folder.as_path()
         } else {
             path
@@ -96,6 +125,8 @@ pub enum ExtraDepth {
 pub(crate) struct ExportPlan {
     /// Base path; see [`ExportPaths::new`].
     pub(crate) base_path: PathBuf,
+    /// The base name of the files when `base_path` is a folder (the scene's name).
+    pub(crate) name_in_folder: String,
     /// Format of the 8-bit images when the base path's extension names none.
     pub(crate) format: ImageFormat,
     /// Also write colour and depth side by side.
@@ -143,7 +174,7 @@ impl ExportFiles {
 
     /// The files `plan` writes.
     pub(crate) fn of(plan: &ExportPlan) -> Self {
-        let images = ExportPaths::new(&plan.base_path, plan.format);
+        let images = ExportPaths::new(&plan.base_path, plan.format, &plan.name_in_folder);
         let sibling = |suffix: &str| {
             let name = images
                 .colour
@@ -275,14 +306,35 @@ mod tests {
 
     #[test]
     fn export_paths_add_suffixes_and_keep_the_folder() {
-        let paths = ExportPaths::new(Path::new("shots/view.tga"), ImageFormat::Png);
+        let paths = ExportPaths::new(Path::new("shots/view.tga"), ImageFormat::Png, "s");
         assert_eq!(paths.colour, Path::new("shots/view_colour.tga"));
         assert_eq!(paths.depth, Path::new("shots/view_depth.tga"));
         assert_eq!(paths.side_by_side, Path::new("shots/view_both.tga"));
-        let paths = ExportPaths::new(Path::new("view"), ImageFormat::Png);
+        let paths = ExportPaths::new(Path::new("view"), ImageFormat::Png, "s");
         assert_eq!(paths.colour, Path::new("view_colour.png"));
-        let paths = ExportPaths::new(Path::new("view.v2"), ImageFormat::Tga);
+        let paths = ExportPaths::new(Path::new("view.v2"), ImageFormat::Tga, "s");
         assert_eq!(paths.depth, Path::new("view.v2_depth.tga"));
+        // Into a folder: named after the scene.
+        let paths = ExportPaths::new(Path::new("shots/"), ImageFormat::Png, "scene1_02");
+        assert_eq!(paths.colour, Path::new("shots/scene1_02_colour.png"));
+    }
+
+    #[test]
+    fn a_folder_export_is_named_after_the_scene_and_needs_its_folder() {
+        assert_eq!(
+            name_in_folder(Some(Path::new("scenes/scene1_02.txt"))),
+            "scene1_02"
+        );
+        assert_eq!(name_in_folder(None), DEFAULT_EXPORT_NAME);
+        assert_eq!(
+            export_folder(Path::new("shots/new/")),
+            Some(PathBuf::from("shots/new/"))
+        );
+        assert_eq!(
+            export_folder(Path::new("shots/view.png")),
+            Some(PathBuf::from("shots"))
+        );
+        assert_eq!(export_folder(Path::new("view.png")), None);
     }
 
     #[test]
@@ -314,6 +366,7 @@ mod tests {
     fn command_names_every_setting() {
         let plan = ExportPlan {
             base_path: PathBuf::from("shots/my view.png"),
+            name_in_folder: DEFAULT_EXPORT_NAME.to_owned(),
             format: ImageFormat::Png,
             side_by_side: true,
             legend: true,
@@ -382,6 +435,7 @@ mod tests {
                 base_path: folder
                     .path()
                     .join(format!("shot {}.tga", colour_map.name())),
+                name_in_folder: DEFAULT_EXPORT_NAME.to_owned(),
                 format: ImageFormat::Png,
                 side_by_side: true,
                 legend: false,

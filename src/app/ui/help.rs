@@ -9,6 +9,7 @@ pub(crate) const HELP_TITLE: &str = "Shortcuts and gestures";
 
 /// The rows of the overlay: what to press or do, and what it does.
 pub(crate) const SHORTCUTS: [(&str, &str); 26] = [
+    // The pointer's gestures (the first POINTER_ROWS).
     ("drag", "pan the camera (the picture follows the pointer)"),
     (
         "wheel",
@@ -20,11 +21,24 @@ pub(crate) const SHORTCUTS: [(&str, &str); 26] = [
         "magnify the images themselves (the same pixels enlarged, no new render; a pixel grid from 8×)",
     ),
     ("Ctrl+drag, middle-drag", "move the magnified part"),
-    ("1, Ctrl+0", "magnifier back to the whole image"),
     (
         "click",
         "pin the pixel (the pin stays on the point pinned while the view moves)",
     ),
+    (
+        "Shift or Alt while dragging a slider",
+        "fine: a tenth of the speed",
+    ),
+    (
+        "wheel on a focused slider",
+        "nudge its value (Shift: finer)",
+    ),
+    (
+        "drag a line on the histogram",
+        "move that end of the depth range",
+    ),
+    // The keys.
+    ("1, Ctrl+0", "magnifier back to the whole image"),
     ("Escape", "unpin"),
     (
         "B",
@@ -52,44 +66,62 @@ pub(crate) const SHORTCUTS: [(&str, &str); 26] = [
         "export (to the typed path where no file dialog can be shown)",
     ),
     ("Ctrl+R", "reload the scene file"),
-    (
-        "Shift or Alt while dragging a slider",
-        "fine: a tenth of the speed",
-    ),
-    (
-        "wheel on a focused slider",
-        "nudge its value (Shift: finer)",
-    ),
-    (
-        "drag a line on the histogram",
-        "move that end of the depth range",
-    ),
     ("F1, ?", "this overlay"),
 ];
+
+/// How many of [`SHORTCUTS`] are pointer gestures (the first ones); the rest are keys.
+const POINTER_ROWS: usize = 9;
+
+/// From this window width the overlay shows the pointer's gestures and the keys side by side,
+/// so that it fits a 900-point-high window without scrolling.
+const TWO_COLUMNS_FROM_POINTS: f32 = 1000.0;
 
 /// The overlay; returns whether it stays open.
 pub(crate) fn help_ui(ctx: &egui::Context) -> bool {
     let mut open = true;
+    let screen = ctx.content_rect();
+    let two_columns = screen.width() >= TWO_COLUMNS_FROM_POINTS;
+    let width = if two_columns {
+        (screen.width() - 80.0).min(1100.0)
+    } else {
+        (screen.width() - 40.0).min(560.0)
+    };
     egui::Window::new(HELP_TITLE)
         .open(&mut open)
         .collapsible(false)
-        .resizable(true)
-        .default_width(560.0)
+        .resizable(false)
+        .default_width(width)
+        .max_height(screen.height() - 40.0)
         .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
         .show(ctx, |ui| {
-            egui::ScrollArea::vertical().show(ui, |ui| {
-                egui::Grid::new("shortcuts")
-                    .num_columns(2)
-                    .striped(true)
-                    .show(ui, |ui| {
-                        for (keys, what) in SHORTCUTS {
-                            ui.label(RichText::new(keys).strong());
-                            ui.label(what);
-                            ui.end_row();
-                        }
-                    });
-            });
+            let (pointer, keys) = SHORTCUTS.split_at(POINTER_ROWS);
+            if two_columns {
+                ui.columns(2, |columns| {
+                    shortcuts_grid(&mut columns[0], "pointer", pointer);
+                    shortcuts_grid(&mut columns[1], "keys", keys);
+                });
+            } else {
+                // One column: scrolled where the window is too low for it.
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    shortcuts_grid(ui, "pointer", pointer);
+                    shortcuts_grid(ui, "keys", keys);
+                });
+            }
         });
     let escape = ctx.input(|i| i.key_pressed(egui::Key::Escape));
     open && !escape
+}
+
+/// One group of the overlay's rows as a striped two-column grid.
+fn shortcuts_grid(ui: &mut egui::Ui, name: &str, rows: &[(&str, &str)]) {
+    egui::Grid::new(name)
+        .num_columns(2)
+        .striped(true)
+        .show(ui, |ui| {
+            for (keys, what) in rows {
+                ui.label(RichText::new(*keys).strong());
+                ui.label(*what);
+                ui.end_row();
+            }
+        });
 }

@@ -20,6 +20,9 @@ use crate::render::depth_map::{DepthColourMap, DepthRange};
 /// Space between the two images, in points.
 const IMAGE_GAP_POINTS: f32 = 8.0;
 
+/// Width of the frame drawn around each image, in points.
+const FRAME_POINTS: f32 = 1.0;
+
 /// Height reserved for the caption above each image, in points.
 const CAPTION_POINTS: f32 = 20.0;
 
@@ -292,13 +295,16 @@ fn image_ui(
     let painter = ui.painter_at(area);
     painter.image(texture.id(), rect, region.uv(size_px), Color32::WHITE);
     region.paint_grid(&painter, rect);
-    // A frame, so a background as dark as the panel still shows where the image ends.
-    painter.rect_stroke(
-        rect.expand(1.0),
-        0.0,
-        Stroke::new(1.0, ui.visuals().widgets.noninteractive.bg_stroke.color),
-        egui::StrokeKind::Outside,
-    );
+    // A frame just outside the image (in the gap around the area, never over a pixel), so a
+    // background as dark as the panel still shows where the image ends.
+    ui.painter()
+        .with_clip_rect(area.expand(FRAME_POINTS + 1.0))
+        .rect_stroke(
+            rect,
+            0.0,
+            Stroke::new(FRAME_POINTS, ui.visuals().weak_text_color()),
+            egui::StrokeKind::Outside,
+        );
     if let Some(pin) = marks.pinned {
         let at = region.pos_of_image_px(pin, rect);
         painter.circle_stroke(at, 5.0, Stroke::new(2.0, Color32::BLACK));

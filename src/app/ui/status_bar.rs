@@ -74,12 +74,12 @@ pub(crate) fn status_bar_ui(ui: &mut Ui, status: &StatusLine<'_>) {
     });
 }
 
-/// A scene's error floating over the top of the images with a "Dismiss" button: it moves nothing
-/// else. Returns true when dismissed.
-pub(crate) fn error_overlay_ui(ctx: &egui::Context, message: &str) -> bool {
+/// A scene's error floating over the top of the images, `top` points down the window (below
+/// their captions), with a "Dismiss" button: it moves nothing else. Returns true when dismissed.
+pub(crate) fn error_overlay_ui(ctx: &egui::Context, message: &str, top: f32) -> bool {
     let mut dismissed = false;
     egui::Area::new(egui::Id::unique("scene error"))
-        .anchor(egui::Align2::CENTER_TOP, egui::vec2(0.0, 40.0))
+        .anchor(egui::Align2::CENTER_TOP, egui::vec2(0.0, top))
         .order(egui::Order::Foreground)
         .show(ctx, |ui| {
             egui::Frame::popup(ui.style()).show(ui, |ui| {
