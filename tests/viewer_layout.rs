@@ -205,7 +205,7 @@ fn a_scene_error_leaves_the_depth_images_caption_readable() {
     let folder = tempfile::tempdir().unwrap();
     let broken = folder.path().join("broken.txt");
     std::fs::write(&broken, "OrthographicCamera { center 0 0 10 size }\n").unwrap();
-    let mut harness = viewer_sized(Some(broken), vec2(1280.0, 720.0), 1.0);
+    let harness = viewer_sized(Some(broken), vec2(1280.0, 720.0), 1.0);
     let error = harness.get_by_label_contains("broken.txt").rect();
     let captions: Vec<Rect> = harness
         .query_all_by_label_contains("near …")
