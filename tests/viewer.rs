@@ -166,8 +166,13 @@ fn export_writes_colour_and_depth_with_the_expected_pixels() {
         depth == frame.depth_image(view.depth_range),
         "exported depth pixels"
     );
-    // Side by side, with the legend strip (24 px) under it.
-    assert_eq!(both.dimensions(), (2 * view.width_px, view.height_px + 24));
+    // Side by side (the two images above), with the legend strip under it (its bar, then a
+    // line of text at 8 or 16 pixels).
+    assert_eq!(both.width(), 2 * view.width_px);
+    let strip = both.height() - view.height_px;
+    assert!(strip == 40 || strip == 48, "a strip {strip} px high");
+    let top = image::imageops::crop_imm(&both, 0, 0, view.width_px, view.height_px).to_image();
+    assert!(top == colour, "the colour image on the left");
 }
 
 #[test]
@@ -190,16 +195,18 @@ fn export_at_a_typed_size_and_to_an_unwritable_path() {
     assert!(folder.path().join("small_depth.tga").exists());
     assert!(!folder.path().join("small_both.tga").exists());
 
-    harness.state_mut().settings_mut().export.path = folder
-        .path()
-        .join("missing/dir/x.png")
-        .display()
-        .to_string();
+    // Into a "folder" that is a file: the offer to create it fails, and says so.
+    let file = folder.path().join("a file");
+    std::fs::write(&file, "kept").unwrap();
+    harness.state_mut().settings_mut().export.path = file.join("x.png").display().to_string();
     click(&mut harness, "Export to path");
+    settle(&mut harness);
+    click(&mut harness, "Create the folder and export");
     settle(&mut harness);
     let (message, is_error) = harness.state().message().unwrap();
     assert!(is_error, "{message}");
-    assert!(message.contains("cannot write"), "{message}");
+    assert!(message.contains("cannot create the folder"), "{message}");
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "kept");
 }
 
 #[test]

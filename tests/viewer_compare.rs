@@ -73,6 +73,19 @@ fn compare_image(harness: &mut App, path: &str) {
     wait_for_comparison(harness);
 }
 
+/// `n` with its thousands separated by commas, as the viewer writes counts.
+fn with_commas(n: usize) -> String {
+    let digits = n.to_string();
+    let mut out = String::new();
+    for (i, digit) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i).is_multiple_of(3) {
+            out.push(',');
+        }
+        out.push(digit);
+    }
+    out
+}
+
 fn label_shown(harness: &App, text: &str) -> bool {
     harness.query_by_label_contains(text).is_some()
 }
@@ -104,12 +117,20 @@ fn their_colour_image_is_diagnosed_flipped_and_probed() {
     assert!(differing > 0);
     assert!(label_shown(
         &harness,
-        &format!("colour: difference, {differing} pixels")
+        &format!("colour: difference, {} pixels", with_commas(differing))
     ));
+    // The heat map's scale is beside its caption, and only while the heat map shows.
+    let scale = harness.get_by_label("heat map scale").rect();
+    let colour = harness.get_by_label("colour image").rect();
+    assert!(
+        scale.bottom() <= colour.top() && scale.left() >= colour.left(),
+        "{scale:?}"
+    );
     harness.key_press(Key::B);
     harness.run_steps(2);
     assert_eq!(harness.state().compare_show(), CompareShow::Theirs);
     assert!(label_shown(&harness, "colour: theirs"));
+    assert!(harness.query_by_label("heat map scale").is_none());
     harness.key_press(Key::B);
     harness.run_steps(2);
     assert_eq!(harness.state().compare_show(), CompareShow::Rendered);

@@ -16,6 +16,7 @@ use super::ui::{
     depth_section, file_sections, help, probe_text, toolbar, view_controls, views_section,
 };
 use crate::explore::probe::pixel_of_point;
+use crate::output::numbers::grouped;
 use crate::render::View;
 
 /// Below this window width the controls are a drawer over the images, not a side panel.
@@ -295,19 +296,21 @@ fn compared_picture<'a>(compare: &'a CompareState, view: &View) -> Option<Compar
     } else {
         ""
     };
-    let (texture, caption) = match compare.show {
+    let (texture, caption, heat_scale) = match compare.show {
         CompareShow::Rendered => return None,
         CompareShow::Theirs => (
             &current.theirs_texture,
             format!("{kind}: {theirs} (B: the render){note}"),
+            false,
         ),
         CompareShow::Difference => (
             &current.heat_texture,
             format!(
                 "{kind}: difference, {} pixels, largest {} (Shift+B: the render){note}",
-                pixels.difference.pixels_differing(),
+                grouped(pixels.difference.pixels_differing() as f64, 0),
                 pixels.difference.max_difference()
             ),
+            true,
         ),
     };
     let (width, height) = pixels.theirs.dimensions();
@@ -316,5 +319,6 @@ fn compared_picture<'a>(compare: &'a CompareState, view: &View) -> Option<Compar
         texture,
         size_px: [width, height],
         caption,
+        heat_scale,
     })
 }

@@ -63,6 +63,7 @@ pub(crate) fn name_in_folder(scene_path: Option<&Path>) -> String {
 /// The folder an export to `base_path` writes into, when it must exist first: `base_path`
 /// itself when it names a folder, else its parent (`None` for a bare file name, which goes into
 /// the working folder).
+#[cfg_attr(target_arch = "wasm32", allow(dead_code))]
 pub(crate) fn export_folder(base_path: &Path) -> Option<PathBuf> {
     if names_a_folder(base_path) {
         return Some(base_path.to_path_buf());

@@ -8,8 +8,8 @@
 
 use egui::{Align2, Color32, CursorIcon, FontId, Pos2, Rect, Sense, Stroke, Ui, Vec2};
 
-use super::probe_text::{decimals_for_span, grouped, range_ends};
 use crate::explore::depth_stats::DepthHistogram;
+use crate::output::numbers::{decimals_for_span, grouped, range_ends};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 
 /// Height of the legend strip under the bars, in points.

@@ -5,15 +5,16 @@
 //! both together. Pointer input comes back as [`ImageGestures`]; nothing here changes the view
 //! itself except the histogram's handles.
 
-use egui::{Color32, Rect, Sense, Stroke, TextureHandle, Ui, Vec2};
+use egui::{Color32, Pos2, Rect, Sense, Stroke, TextureHandle, Ui, Vec2};
 use glam::DVec2;
 
 use super::gestures::{ImageGestures, read_gestures};
 use super::histogram::{HistogramStyle, histogram_ui};
 use super::magnifier::{Magnifier, Region};
 use super::probe_panel::probe_ui;
-use super::probe_text::range_ends;
+use crate::compare::picture::heat_colour;
 use crate::explore::depth_stats::DepthHistogram;
+use crate::output::numbers::range_ends;
 use crate::render::MAX_SIDE_PX;
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 
@@ -64,6 +65,8 @@ pub(crate) struct Compared<'a> {
     pub(crate) size_px: [u32; 2],
     /// Its caption.
     pub(crate) caption: String,
+    /// It is the difference's heat map: its scale is drawn beside the caption.
+    pub(crate) heat_scale: bool,
 }
 
 /// What the area shows and edits besides the images.
@@ -189,9 +192,19 @@ pub(crate) fn images_ui(
         hover,
         magnifier,
     };
+    let heat_scale_on = shown
+        .and_then(|s| s.compared.as_ref())
+        .filter(|compared| compared.heat_scale)
+        .map(|compared| compared.index);
     let mut image = |ui: &mut Ui, index: usize| {
         // One line: a long caption is elided (whole on hover), so it never pushes the footer out.
-        ui.add(egui::Label::new(&captions[index]).truncate());
+        ui.horizontal(|ui| {
+            ui.set_width(layout.image_points.x);
+            if heat_scale_on == Some(index) {
+                heat_scale_ui(ui);
+            }
+            ui.add(egui::Label::new(&captions[index]).truncate());
+        });
         image_ui(ui, index, layout.image_points, shown, marks, &mut gestures);
     };
     let half_width = |ui: &Ui| ((ui.available_width() - IMAGE_GAP_POINTS) * 0.5).max(1.0);
@@ -240,6 +253,42 @@ pub(crate) fn images_ui(
         });
     });
     gestures
+}
+
+/// Label of the heat map's scale (tests find it by this).
+pub(crate) const HEAT_SCALE_LABEL: &str = "heat map scale";
+
+/// Width of the heat map's colour bar, points.
+const HEAT_BAR_POINTS: f32 = 96.0;
+
+/// The heat map's scale, at the start of its caption: "1", a bar of the colours a difference of
+/// 1 to 255 levels takes, "255", so the heat map reads without a key elsewhere.
+fn heat_scale_ui(ui: &mut Ui) {
+    let response = ui
+        .horizontal(|ui| {
+            ui.spacing_mut().item_spacing.x = 3.0;
+            ui.label("1");
+            let height = ui.text_style_height(&egui::TextStyle::Body) * 0.8;
+            let (bar, _) =
+                ui.allocate_exact_size(Vec2::new(HEAT_BAR_POINTS, height), Sense::hover());
+            let painter = ui.painter_at(bar);
+            let steps = HEAT_BAR_POINTS as usize;
+            for step in 0..steps {
+                let levels = 1 + (step * 254 / (steps - 1)) as u8;
+                let [r, g, b] = heat_colour(levels);
+                let x = bar.left() + step as f32;
+                painter.rect_filled(
+                    Rect::from_min_max(Pos2::new(x, bar.top()), Pos2::new(x + 1.0, bar.bottom())),
+                    0.0,
+                    Color32::from_rgb(r, g, b),
+                );
+            }
+            ui.label("255 levels ·");
+        })
+        .response;
+    response.widget_info(|| {
+        egui::WidgetInfo::labeled(egui::Role::Image, true, HEAT_SCALE_LABEL.to_owned())
+    });
 }
 
 /// The captions above the two images.
