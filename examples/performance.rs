@@ -67,7 +67,7 @@ fn million_child(path: &Path) {
 /// Median time of the viewer's work for a 1024×1024 view of `scene`: what passes between a
 /// slider change and a frame ready to upload.
 fn viewer_frame_ms(scene: &Scene, runs: usize) -> f64 {
-    let job = raytracer::app::job::ViewerJob {
+    let job = raytracer::app::render_job::ViewerJob {
         scene: std::sync::Arc::new(scene.clone()),
         view: view_of(scene, 1024),
         scene_epoch: 0,
@@ -75,7 +75,7 @@ fn viewer_frame_ms(scene: &Scene, runs: usize) -> f64 {
         depth_style: Default::default(),
     };
     median_ms(runs, true, || {
-        std::hint::black_box(raytracer::app::job::prepare_frame(&job).ok());
+        std::hint::black_box(raytracer::app::render_job::prepare_frame(&job).ok());
     })
 }
 

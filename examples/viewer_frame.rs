@@ -1,5 +1,5 @@
 //! The benchmark figure for a view the real window showed: the viewer's work for one frame
-//! (render, both textures, histogram: `raytracer::app::job::prepare_frame`) of a scene file's own
+//! (render, both textures, histogram: `raytracer::app::render_job::prepare_frame`) of a scene file's own
 //! camera at WIDTH×HEIGHT pixels, median of RUNS, in milliseconds; with GAP_MS, each frame after
 //! that many milliseconds of idling, as frames come in a window (its threads asleep, its caches
 //! cooled by whatever else ran). `scripts/window-frame-times.sh` puts both beside the frame times
@@ -19,7 +19,7 @@ mod frame_args;
 use std::sync::Arc;
 use std::time::Instant;
 
-use raytracer::app::job::{ViewerJob, prepare_frame};
+use raytracer::app::render_job::{ViewerJob, prepare_frame};
 use raytracer::explore::initial_depth_range;
 
 fn main() {

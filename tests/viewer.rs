@@ -184,7 +184,7 @@ fn export_at_a_typed_size_and_to_an_unwritable_path() {
         settings.displayed_size = false;
         settings.size_px = [64, 48];
         settings.side_by_side = false;
-        settings.format = raytracer::app::state::ExportFormat::Tga;
+        settings.format = raytracer::app::settings::ExportFormat::Tga;
         settings.path = folder.path().join("small").display().to_string();
     }
     click(&mut harness, "Export to path");

@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 
 use egui_kittest::Harness;
 use raytracer::app::ViewerApp;
-use raytracer::app::state::{ExportFormat, Settings};
+use raytracer::app::settings::{ExportFormat, Settings};
 use raytracer::cli::ViewerRequest;
 use raytracer::render::depth_map::DepthColourMap;
 use raytracer::render::{Filter, Sampler};
@@ -48,8 +48,8 @@ fn restarted(storage: Memory) -> Harness<'static, ViewerApp> {
 }
 
 fn fixture() -> Memory {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/regressions/viewer-settings-3a2a41d.ron");
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/regressions/viewer-settings-3a2a41d.ron");
     let mut storage = Memory::default();
     storage.0.insert(
         eframe::APP_KEY.to_owned(),

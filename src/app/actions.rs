@@ -6,13 +6,13 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use super::ViewerApp;
+use super::background::{Poll, Task};
 #[cfg(not(target_arch = "wasm32"))]
 use super::dialogs::spawn_dialog;
 use super::dialogs::{DialogAnswer, DialogKind};
-use super::job::{DepthStyle, ViewerJob, prepare_frame};
-use super::state::ExportFormat;
+use super::render_job::{DepthStyle, ViewerJob, prepare_frame};
+use super::settings::ExportFormat;
 use super::status::Status;
-use super::tasks::{Poll, Task};
 use crate::export::ExportPlan;
 #[cfg(not(target_arch = "wasm32"))]
 use crate::export::{save_view_as_scene, write_export};
@@ -86,10 +86,10 @@ impl ViewerApp {
                 | Action::UseDepthRange(_)
                 | Action::GoToView(_)
         );
-        let before = self.view;
+        let before = self.viewing.view;
         self.carry_out(action);
         if one_shot {
-            self.history.one_shot(&before, &self.view);
+            self.viewing.history.one_shot(&before, &self.viewing.view);
         }
     }
 
@@ -106,16 +106,16 @@ impl ViewerApp {
             Action::ResetView => self.reset_view(),
             Action::ResetDepth => self.reset_depth(),
             Action::AutoRange => self.auto_range(),
-            Action::UseDepthRange(range) => self.view.depth_range = range,
+            Action::UseDepthRange(range) => self.viewing.view.depth_range = range,
             Action::Undo => self.undo(),
             Action::Redo => self.redo(),
             Action::NameView(name) => self.name_view(&name),
             Action::GoToView(index) => self.go_to_view(index),
             Action::ForgetView(index) => self.forget_view(index),
-            Action::ToggleHelp => self.help_open = !self.help_open,
-            Action::ResetMagnifier => self.magnifier = Default::default(),
+            Action::ToggleHelp => self.panels.help_open = !self.panels.help_open,
+            Action::ResetMagnifier => self.viewing.magnifier = Default::default(),
             Action::ExportTo(_) | Action::SaveViewTo(_) => self.write_or_ask(action),
-            Action::Unpin => self.probe.pinned_world = None,
+            Action::Unpin => self.viewing.probe.pinned_world = None,
             Action::CompareImage(path, kind) => self.compare_with_file(path, kind),
             Action::CompareQuality => self.compare_quality(),
             Action::CompareShow(show) => {
@@ -146,7 +146,7 @@ impl ViewerApp {
             ExportFormat::Png => ImageFormat::Png,
             ExportFormat::Tga => ImageFormat::Tga,
         };
-        let mut view = self.view;
+        let mut view = self.viewing.view;
         if !export.displayed_size {
             view.width_px = export.size_px[0];
             view.height_px = export.size_px[1];
@@ -154,13 +154,13 @@ impl ViewerApp {
         }
         let plan = ExportPlan {
             base_path,
-            name_in_folder: crate::export::name_in_folder(self.loaded.path.as_deref()),
+            name_in_folder: crate::export::name_in_folder(self.scene.loaded.path.as_deref()),
             format,
             side_by_side: export.side_by_side,
             legend: export.legend,
             colour_map: self.settings.depth.colour_map,
             extra_depth: export.extra_depth,
-            program: self.program.clone(),
+            program: self.writes.program.clone(),
         };
         Some((plan, view))
     }
@@ -196,14 +196,15 @@ impl ViewerApp {
         let quality = self.settings.quality;
         // Reuse the frame on screen when it is exactly what would be exported.
         let ready = self
+            .frames
             .shown
             .as_ref()
-            .filter(|s| s.view == view && s.scene_epoch == self.scene_epoch && s.quality == quality)
+            .filter(|s| s.view == view && s.scene_epoch == self.scene.epoch && s.quality == quality)
             .map(|s| Arc::clone(&s.frame));
         let job = ViewerJob {
-            scene: Arc::clone(&self.loaded.scene),
+            scene: Arc::clone(&self.scene.loaded.scene),
             view,
-            scene_epoch: self.scene_epoch,
+            scene_epoch: self.scene.epoch,
             quality,
             depth_style: DepthStyle::default(),
         };
@@ -254,8 +255,8 @@ impl ViewerApp {
         #[cfg(target_arch = "wasm32")]
         {
             let text = crate::scene::scene_to_text(&crate::export::scene_with_view(
-                &self.loaded.scene,
-                &self.view,
+                &self.scene.loaded.scene,
+                &self.viewing.view,
             ));
             self.download_files(Ok(vec![(download_name(&path), text.into_bytes())]));
         }
@@ -267,13 +268,14 @@ impl ViewerApp {
     #[cfg(not(target_arch = "wasm32"))]
     fn write_scene(&mut self, path: PathBuf) {
         // Saving over the open scene reloads it; the message should stay the save's.
-        self.saving_open_scene = self
+        self.scene.saving_over = self
+            .scene
             .loaded
             .path
             .as_deref()
             .is_some_and(|open| same_file(open, &path));
-        let scene = Arc::clone(&self.loaded.scene);
-        let view = self.view;
+        let scene = Arc::clone(&self.scene.loaded.scene);
+        let view = self.viewing.view;
         self.write_in_background("saving the view…", move || {
             save_view_as_scene(&scene, &view, &path).map_err(|e| e.to_string())?;
             let full = std::fs::canonicalize(&path).unwrap_or(path);
@@ -288,13 +290,13 @@ impl ViewerApp {
         running: &str,
         write: impl FnOnce() -> Result<String, String> + Send + 'static,
     ) {
-        if self.writing.is_some() {
+        if self.writes.task.is_some() {
             self.status = Some(Status::error("wait: a file is still being written"));
             return;
         }
         match Task::spawn("export", &self.ctx, move |_| write()) {
             Ok(task) => {
-                self.writing = Some(task);
+                self.writes.task = Some(task);
                 self.status = Some(Status::info(running));
             }
             Err(error) => {
@@ -333,11 +335,11 @@ impl ViewerApp {
     /// Shows a native file dialog, or says why none can be shown.
     #[cfg(not(target_arch = "wasm32"))]
     fn open_dialog(&mut self, kind: DialogKind) {
-        if let Some(reason) = self.dialog_note {
+        if let Some(reason) = self.writes.dialog_note {
             self.without_dialog(kind, reason);
             return;
         }
-        if self.dialog.is_some() {
+        if self.writes.dialog.is_some() {
             return;
         }
         let suggested = match kind {
@@ -345,7 +347,7 @@ impl ViewerApp {
             _ => &self.settings.export.path,
         };
         match spawn_dialog(kind, &self.ctx, suggested) {
-            Ok(dialog) => self.dialog = Some(dialog),
+            Ok(dialog) => self.writes.dialog = Some(dialog),
             Err(error) => {
                 self.status = Some(Status::error(format!("cannot open a file dialog: {error}")));
             }
@@ -373,12 +375,12 @@ impl ViewerApp {
 
     /// Takes a dialog's answer and a finished write.
     pub(super) fn poll_background(&mut self) {
-        if let Some(dialog) = &self.dialog {
+        if let Some(dialog) = &self.writes.dialog {
             match dialog.poll() {
                 DialogAnswer::Waiting => {}
-                DialogAnswer::Cancelled(_) => self.dialog = None,
+                DialogAnswer::Cancelled(_) => self.writes.dialog = None,
                 DialogAnswer::Chosen(kind, path) => {
-                    self.dialog = None;
+                    self.writes.dialog = None;
                     match kind {
                         DialogKind::Open => self.open(&path),
                         DialogKind::Export => {
@@ -397,7 +399,7 @@ impl ViewerApp {
                 }
             }
         }
-        let finished = match self.writing.as_ref().map(Task::poll) {
+        let finished = match self.writes.task.as_ref().map(Task::poll) {
             None | Some(Poll::Running) => return,
             Some(Poll::Done(Ok(done))) => Status::info(done),
             Some(Poll::Done(Err(error))) => Status::error(format!("writing failed: {error}")),
@@ -405,10 +407,10 @@ impl ViewerApp {
         };
         if finished.is_error() {
             // Nothing was written, so no reload of our own follows.
-            self.saving_open_scene = false;
+            self.scene.saving_over = false;
         }
         self.status = Some(finished);
-        self.writing = None;
+        self.writes.task = None;
     }
 }
 

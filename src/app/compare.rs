@@ -1,5 +1,6 @@
-//! The viewer's Compare section: put an image beside the exact render and say why it differs, or
-//! measure the chosen quality against the exact render on the user's own view.
+//! The compare concept in the viewer ([`crate::compare`] is the concept itself; its panel is drawn
+//! by [`super::ui::compare_section`]): put an image beside the exact render and say why it
+//! differs, or measure the chosen quality against the exact render on the user's own view.
 //!
 //! * **Their image** (colour or depth, TGA or PNG): the exact render of the open scene's own
 //!   camera at the image's size (what the course's command renders) is computed off the UI thread,
@@ -19,8 +20,8 @@ use egui::{Color32, ColorImage, TextureHandle, TextureOptions};
 use image::RgbImage;
 
 use super::ViewerApp;
+use super::background::{Poll, Task};
 use super::status::Status;
-use super::tasks::{Poll, Task};
 use crate::compare::picture::{heat_map, heat_map_marked};
 use crate::compare::{Difference, Theirs, diagnose, infer_depth_range};
 use crate::render::depth_map::DepthRange;
@@ -325,8 +326,8 @@ fn to_colour_image(image: &RgbImage) -> ColorImage {
 impl ViewerApp {
     /// Opens the image at `path` and compares it with the exact render of the open scene.
     pub(crate) fn compare_with_file(&mut self, path: PathBuf, kind: ImageKind) {
-        let scene = Arc::clone(&self.loaded.scene);
-        let depth_view = self.view;
+        let scene = Arc::clone(&self.scene.loaded.scene);
+        let depth_view = self.viewing.view;
         self.compare.kind = kind;
         self.start_comparison(move || {
             let theirs = read_their_image(&path)?;
@@ -337,8 +338,8 @@ impl ViewerApp {
     /// Compares the image `bytes` named `name` (a browser page's dropped or picked file) with the
     /// exact render, as [`Self::compare_with_file`] does a file.
     pub fn compare_with_bytes(&mut self, name: &str, bytes: Arc<[u8]>, kind: ImageKind) {
-        let scene = Arc::clone(&self.loaded.scene);
-        let depth_view = self.view;
+        let scene = Arc::clone(&self.scene.loaded.scene);
+        let depth_view = self.viewing.view;
         let path = PathBuf::from(name);
         self.compare.kind = kind;
         self.start_comparison(move || {
@@ -349,8 +350,8 @@ impl ViewerApp {
 
     /// Measures the chosen quality against the exact render on the current view.
     pub(crate) fn compare_quality(&mut self) {
-        let scene = Arc::clone(&self.loaded.scene);
-        let view = self.view;
+        let scene = Arc::clone(&self.scene.loaded.scene);
+        let view = self.viewing.view;
         let quality = self.settings.quality;
         self.start_comparison(move || compare_quality(&scene, &view, &quality));
     }
@@ -383,7 +384,7 @@ impl ViewerApp {
             if let Some(current) = &self.compare.current
                 && let CompareSource::File(path) = &current.pixels.source
                 && current.pixels.kind == ImageKind::Depth
-                && current.pixels.view.depth_range != self.view.depth_range
+                && current.pixels.view.depth_range != self.viewing.view.depth_range
             {
                 let path = path.clone();
                 self.compare_with_file(path, ImageKind::Depth);
@@ -407,9 +408,9 @@ impl ViewerApp {
         self.compare.pending = None;
         let first = self.compare.current.is_none();
         if let CompareSource::File(_) = pixels.source {
-            let depth_range = self.view.depth_range;
-            self.view = pixels.view;
-            self.view.depth_range = depth_range;
+            let depth_range = self.viewing.view.depth_range;
+            self.viewing.view = pixels.view;
+            self.viewing.view.depth_range = depth_range;
         }
         let theirs_texture = self.ctx.load_texture(
             "compare theirs",

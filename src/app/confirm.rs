@@ -51,7 +51,7 @@ impl ViewerApp {
         if let Action::ExportTo(base) = &action
             && let Some(folder) = crate::export::export_folder(base).filter(|f| !f.is_dir())
         {
-            self.pending_replace = Some(PendingReplace {
+            self.writes.pending_replace = Some(PendingReplace {
                 action,
                 existing: Vec::new(),
                 open_scene: false,
@@ -69,11 +69,12 @@ impl ViewerApp {
             return;
         }
         let open_scene = self
+            .scene
             .loaded
             .path
             .as_deref()
             .is_some_and(|scene| existing.iter().any(|path| same_file(path, scene)));
-        self.pending_replace = Some(PendingReplace {
+        self.writes.pending_replace = Some(PendingReplace {
             action,
             existing,
             open_scene,
@@ -83,7 +84,7 @@ impl ViewerApp {
 
     /// The modal asking whether to replace files; on yes, the write goes ahead.
     pub(super) fn confirm_ui(&mut self, ctx: &egui::Context) {
-        let Some(pending) = &self.pending_replace else {
+        let Some(pending) = &self.writes.pending_replace else {
             return;
         };
         let mut answer = None;
@@ -134,7 +135,7 @@ impl ViewerApp {
             answer = Some(false);
         }
         match answer {
-            Some(true) => match self.pending_replace.take() {
+            Some(true) => match self.writes.pending_replace.take() {
                 Some(PendingReplace {
                     action,
                     missing_folder: Some(folder),
@@ -152,7 +153,7 @@ impl ViewerApp {
                 Some(pending) => self.write_now(pending.action),
                 None => {}
             },
-            Some(false) => self.pending_replace = None,
+            Some(false) => self.writes.pending_replace = None,
             None => {}
         }
     }

@@ -5,7 +5,7 @@
 
 use std::path::PathBuf;
 
-use super::tasks::{Poll, Task};
+use super::background::{Poll, Task};
 
 /// Which dialog an answer belongs to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -79,7 +79,12 @@ impl ViewerApp {
         }
         // The watcher wakes the window at each change; while the file settles, the window wakes
         // itself when it will have (no input need come).
-        match self.watcher.as_ref().map(super::reload::FileWatcher::poll) {
+        match self
+            .scene
+            .watcher
+            .as_ref()
+            .map(super::reload::FileWatcher::poll)
+        {
             Some(WatchState::Changed) => self.reload(),
             Some(WatchState::Settling(wait)) => ctx.request_repaint_after(wait),
             _ => {}
@@ -119,8 +124,8 @@ impl ViewerApp {
             self.apply(Action::ToggleHelp);
         }
         let (width, height) = (
-            f64::from(self.view.width_px),
-            f64::from(self.view.height_px),
+            f64::from(self.viewing.view.width_px),
+            f64::from(self.viewing.view.height_px),
         );
         let step_px = KEY_PAN_FRACTION * width.min(height);
         let centre_px = DVec2::new(0.5 * width, 0.5 * height);
@@ -139,13 +144,15 @@ impl ViewerApp {
                 }
                 // The camera moves along the arrow: the picture moves the other way.
                 (_, Some(direction)) => {
-                    self.view = navigate::pan(&self.view, -direction * step_px);
+                    self.viewing.view = navigate::pan(&self.viewing.view, -direction * step_px);
                 }
                 (Key::Plus | Key::Equals, _) => {
-                    self.view = navigate::zoom_at(&self.view, 1.0 / KEY_ZOOM_FACTOR, centre_px);
+                    self.viewing.view =
+                        navigate::zoom_at(&self.viewing.view, 1.0 / KEY_ZOOM_FACTOR, centre_px);
                 }
                 (Key::Minus, _) => {
-                    self.view = navigate::zoom_at(&self.view, KEY_ZOOM_FACTOR, centre_px);
+                    self.viewing.view =
+                        navigate::zoom_at(&self.viewing.view, KEY_ZOOM_FACTOR, centre_px);
                 }
                 (Key::F, _) => self.apply(Action::FrameAll),
                 (Key::Home, _) => self.apply(Action::ResetView),
@@ -154,7 +161,7 @@ impl ViewerApp {
                 (Key::Num1, _) => self.apply(Action::ResetMagnifier),
                 (Key::B, _) if shift => self.apply(Action::CompareDifference),
                 (Key::B, _) => self.apply(Action::CompareFlip),
-                (Key::Escape, _) if self.help_open => self.help_open = false,
+                (Key::Escape, _) if self.panels.help_open => self.panels.help_open = false,
                 (Key::Escape, _) => self.apply(Action::Unpin),
                 _ => {}
             }
@@ -164,33 +171,36 @@ impl ViewerApp {
     /// Applies pointer gestures on the images: pan, orbit, zoom, hover and pin.
     pub(crate) fn apply_gestures(&mut self, gestures: &ImageGestures) {
         if gestures.pan_px != DVec2::ZERO {
-            self.view = navigate::pan(&self.view, gestures.pan_px);
+            self.viewing.view = navigate::pan(&self.viewing.view, gestures.pan_px);
         }
         if gestures.orbit_points != DVec2::ZERO {
             let turn = gestures.orbit_points * ORBIT_RAD_PER_POINT;
             self.orbit(turn.x, turn.y);
         }
         if let Some((factor, anchor_px)) = gestures.zoom {
-            self.view = navigate::zoom_at(&self.view, factor, anchor_px);
+            self.viewing.view = navigate::zoom_at(&self.viewing.view, factor, anchor_px);
         }
         if let Some(size_px) = self
+            .frames
             .shown
             .as_ref()
             .map(|s| [s.frame.width_px, s.frame.height_px])
         {
             if let Some((factor, anchor_px)) = gestures.magnify {
-                self.magnifier.zoom_at(factor, anchor_px, size_px);
+                self.viewing.magnifier.zoom_at(factor, anchor_px, size_px);
             }
             if gestures.magnifier_pan_px != DVec2::ZERO {
-                self.magnifier.pan(gestures.magnifier_pan_px, size_px);
+                self.viewing
+                    .magnifier
+                    .pan(gestures.magnifier_pan_px, size_px);
             }
         }
-        self.probe.hover_px = gestures.hover_px;
+        self.viewing.probe.hover_px = gestures.hover_px;
         if let Some(px) = gestures.clicked_px
             && let Some(probe) = self.probe_at(px)
         {
             // The point itself is pinned, so the pin stays on it while the view moves.
-            self.probe.pinned_world = Some(point_of_probe(&probe));
+            self.viewing.probe.pinned_world = Some(point_of_probe(&probe));
         }
         if gestures.unpin {
             self.apply(Action::Unpin);
@@ -199,7 +209,7 @@ impl ViewerApp {
 
     /// Orbits around the scene's centre: `yaw_rad` as a drag to the right, `pitch_rad` up.
     fn orbit(&mut self, yaw_rad: f64, pitch_rad: f64) {
-        let pivot = navigate::orbit_pivot(&self.loaded.scene);
-        self.view = navigate::orbit(&self.view, pivot, yaw_rad, pitch_rad);
+        let pivot = navigate::orbit_pivot(&self.scene.loaded.scene);
+        self.viewing.view = navigate::orbit(&self.viewing.view, pivot, yaw_rad, pitch_rad);
     }
 }

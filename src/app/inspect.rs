@@ -7,7 +7,8 @@ use std::time::Duration;
 use glam::DVec2;
 
 use super::ViewerApp;
-use super::state::{LoadedScene, Settings};
+use super::open_scene::LoadedScene;
+use super::settings::Settings;
 use super::ui::magnifier::Magnifier;
 use crate::explore::depth_stats::DepthHistogram;
 use crate::explore::probe::{Probe, probe};
@@ -16,22 +17,23 @@ use crate::render::{Frame, View};
 impl ViewerApp {
     /// The view the controls currently describe.
     pub fn view(&self) -> &View {
-        &self.view
+        &self.viewing.view
     }
 
     /// Mutable access to the view (as the controls edit it).
     pub fn view_mut(&mut self) -> &mut View {
-        &mut self.view
+        &mut self.viewing.view
     }
 
     /// The scene on screen.
     pub fn loaded_scene(&self) -> &LoadedScene {
-        &self.loaded
+        &self.scene.loaded
     }
 
     /// The frame on screen, with the view it was rendered for.
     pub fn shown_frame(&self) -> Option<(&Frame, &View)> {
-        self.shown
+        self.frames
+            .shown
             .as_ref()
             .map(|shown| (shown.frame.as_ref(), &shown.view))
     }
@@ -48,27 +50,36 @@ impl ViewerApp {
 
     /// The histogram of visible t of the frame on screen.
     pub fn histogram(&self) -> Option<&DepthHistogram> {
-        self.shown.as_ref().and_then(|s| s.histogram.as_ref())
+        self.frames
+            .shown
+            .as_ref()
+            .and_then(|s| s.histogram.as_ref())
     }
 
     /// Probes the frame on screen at image position `px` (pixels, y up).
     pub(crate) fn probe_at(&self, px: DVec2) -> Option<Probe> {
-        let shown = self.shown.as_ref()?;
-        if shown.scene_epoch != self.scene_epoch || !(px.x >= 0.0 && px.y >= 0.0) {
+        let shown = self.frames.shown.as_ref()?;
+        if shown.scene_epoch != self.scene.epoch || !(px.x >= 0.0 && px.y >= 0.0) {
             return None;
         }
         let (x_px, y_up_px) = (px.x.floor() as u32, px.y.floor() as u32);
-        probe(&self.loaded.scene, &shown.view, &shown.frame, x_px, y_up_px)
+        probe(
+            &self.scene.loaded.scene,
+            &shown.view,
+            &shown.frame,
+            x_px,
+            y_up_px,
+        )
     }
 
     /// The pointer's position on an image (image pixels, y up), if it is over one.
     pub fn hover_px(&self) -> Option<DVec2> {
-        self.probe.hover_px
+        self.viewing.probe.hover_px
     }
 
     /// The probe of the pixel under the pointer.
     pub fn hover_probe(&self) -> Option<Probe> {
-        self.probe.hover_px.and_then(|px| self.probe_at(px))
+        self.viewing.probe.hover_px.and_then(|px| self.probe_at(px))
     }
 
     /// The probe of the pinned point, where it is on the frame on screen (`None` when it is out
@@ -79,17 +90,17 @@ impl ViewerApp {
 
     /// The magnifier: which part of the frame the images show.
     pub fn magnifier(&self) -> Magnifier {
-        self.magnifier
+        self.viewing.magnifier
     }
 
     /// Whether the shortcuts overlay is open.
     pub fn help_open(&self) -> bool {
-        self.help_open
+        self.panels.help_open
     }
 
     /// The error of the last scene that failed to load, if shown.
     pub fn scene_error(&self) -> Option<&str> {
-        self.scene_error.as_deref()
+        self.scene.error.as_deref()
     }
 
     /// The status bar's message and whether it is an error.
@@ -101,28 +112,31 @@ impl ViewerApp {
 
     /// True while an export or a saved view is being written.
     pub fn export_running(&self) -> bool {
-        self.writing.is_some()
+        self.writes.task.is_some()
     }
 
     /// True while a scene file is being read.
     pub fn loading(&self) -> bool {
-        self.loading.is_some()
+        self.scene.loading.is_some()
     }
 
     /// How many scenes have been loaded (an open or a reload each count one).
     pub fn scene_loads(&self) -> u64 {
-        self.scene_epoch
+        self.scene.epoch
     }
 
     /// Behaves from now on as where no file dialog can be shown (no desktop portal, no zenity):
     /// for tests and tools on machines that have one.
     pub fn without_file_dialogs(&mut self) {
-        self.dialog_note = Some(super::dialogs::NO_DIALOG);
+        self.writes.dialog_note = Some(super::dialogs::NO_DIALOG);
     }
 
     /// Waits (for tests and tools) until the worker has nothing to do.
     pub fn wait_for_worker(&self, timeout: Duration) -> bool {
-        self.worker.as_ref().is_none_or(|w| w.wait_idle(timeout))
+        self.frames
+            .worker
+            .as_ref()
+            .is_none_or(|w| w.wait_idle(timeout))
     }
 
     /// The comparison on screen (Compare section), if any.

@@ -19,6 +19,29 @@ use crate::explore::probe::pixel_of_point;
 use crate::output::numbers::grouped;
 use crate::render::View;
 
+/// What the side panel's fields hold between frames.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Fields {
+    /// The typed scene path of the file section.
+    pub(crate) path_text: String,
+    /// The name typed for a new named view.
+    pub(crate) view_name: String,
+    /// A view edit that was not applied, and why.
+    pub(crate) invalid_edit: Option<String>,
+}
+
+/// The viewer's panels: the side panel's fields, whether the drawer of narrow windows and the
+/// shortcuts overlay are open.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Panels {
+    /// The side panel's typed fields.
+    pub(crate) fields: Fields,
+    /// The shortcuts and gestures overlay is open.
+    pub(crate) help_open: bool,
+    /// The controls drawer of narrow windows is open.
+    pub(crate) drawer_open: bool,
+}
+
 /// Below this window width the controls are a drawer over the images, not a side panel.
 pub(crate) const DRAWER_BELOW_POINTS: f32 = 900.0;
 
@@ -48,14 +71,14 @@ impl ViewerApp {
         let toolbar = egui::Panel::top("toolbar").show(ui, |ui| {
             // In a narrow window the toggle opens the drawer (closed at first, so the images show).
             let controls = if narrow {
-                &mut self.drawer_open
+                &mut self.panels.drawer_open
             } else {
                 &mut self.settings.show_controls
             };
             let state = toolbar::ToolbarState {
                 show_controls: controls,
-                can_undo: self.history.can_undo(&self.view),
-                can_redo: self.history.can_redo(),
+                can_undo: self.viewing.history.can_undo(&self.viewing.view),
+                can_redo: self.viewing.history.can_redo(),
                 narrow: window_width < toolbar::MENU_BELOW_POINTS,
             };
             actions.extend(toolbar::toolbar_ui(ui, state));
@@ -72,7 +95,7 @@ impl ViewerApp {
         }
         // In a narrow window that still has room, the opened controls push the images aside.
         let push_aside = narrow && window_width >= PUSH_ASIDE_FROM_POINTS;
-        if self.drawer_open && push_aside {
+        if self.panels.drawer_open && push_aside {
             egui::Panel::left("controls, narrow")
                 .resizable(false)
                 .exact_size(PANEL_POINTS - 40.0)
@@ -80,7 +103,7 @@ impl ViewerApp {
         }
         egui::CentralPanel::default().show(ui, |ui| self.images_ui(ui));
         let ctx = ui.ctx().clone();
-        if self.drawer_open && narrow && !push_aside {
+        if self.panels.drawer_open && narrow && !push_aside {
             let mut open = true;
             // As tall as the window allows, whatever height it had before the window changed.
             let height = (ctx.content_rect().height() - toolbar_bottom - 64.0).max(100.0);
@@ -95,16 +118,16 @@ impl ViewerApp {
                 .collapsible(false)
                 .resizable(false)
                 .show(&ctx, |ui| actions.extend(self.side_panel_ui(ui)));
-            self.drawer_open = open;
+            self.panels.drawer_open = open;
         }
-        if let Some(error) = self.scene_error.clone()
+        if let Some(error) = self.scene.error.clone()
             && error_overlay_ui(&ctx, &error, toolbar_bottom + ERROR_BELOW_TOOLBAR_POINTS)
         {
-            self.scene_error = None;
+            self.scene.error = None;
         }
         self.confirm_ui(&ctx);
-        if self.help_open {
-            self.help_open = help::help_ui(&ctx);
+        if self.panels.help_open {
+            self.panels.help_open = help::help_ui(&ctx);
         }
         actions
     }
@@ -113,14 +136,14 @@ impl ViewerApp {
     fn side_panel_ui(&mut self, ui: &mut egui::Ui) -> Vec<Action> {
         let mut actions = Vec::new();
         egui::ScrollArea::vertical().show(ui, |ui| {
-            let ranges = self.loaded.ranges(&self.view);
-            let edit = view_controls::controls_ui(ui, &mut self.view, &ranges);
+            let ranges = self.scene.loaded.ranges(&self.viewing.view);
+            let edit = view_controls::controls_ui(ui, &mut self.viewing.view, &ranges);
             if let Some(problem) = edit.rejected {
-                self.fields.invalid_edit = Some(problem);
+                self.panels.fields.invalid_edit = Some(problem);
             } else if edit.applied {
-                self.fields.invalid_edit = None;
+                self.panels.fields.invalid_edit = None;
             }
-            if let Some(problem) = &self.fields.invalid_edit {
+            if let Some(problem) = &self.panels.fields.invalid_edit {
                 ui.colored_label(ui.visuals().error_fg_color, problem);
             }
             actions.extend(depth_section::depth_tools_ui(ui, &mut self.settings.depth));
@@ -134,22 +157,26 @@ impl ViewerApp {
             ));
             ui.separator();
             let named = self
+                .scene
                 .loaded
                 .path
                 .as_ref()
-                .map(|path| super::views::SceneViews::key(path))
+                .map(|path| super::saved_views::SceneViews::key(path))
                 .and_then(|key| self.settings.views.named.get(&key));
-            let has_file = self.loaded.path.is_some();
+            let has_file = self.scene.loaded.path.is_some();
             actions.extend(views_section::views_ui(
                 ui,
                 named.map_or(&[], Vec::as_slice),
-                &mut self.fields.view_name,
+                &mut self.panels.fields.view_name,
                 has_file,
             ));
             ui.separator();
             let export = &mut self.settings.export;
-            let file =
-                file_sections::file_ui(ui, &mut self.fields.path_text, &mut export.scene_path);
+            let file = file_sections::file_ui(
+                ui,
+                &mut self.panels.fields.path_text,
+                &mut export.scene_path,
+            );
             if let Some(path) = file.open_path {
                 actions.push(Action::Open(PathBuf::from(path.trim())));
             }
@@ -157,7 +184,7 @@ impl ViewerApp {
                 actions.push(Action::SaveViewTo(PathBuf::from(export.scene_path.trim())));
             }
             ui.separator();
-            if file_sections::export_ui(ui, export, self.dialog_note).export_to_path {
+            if file_sections::export_ui(ui, export, self.writes.dialog_note).export_to_path {
                 actions.push(Action::ExportTo(PathBuf::from(export.path.trim())));
             }
         });
@@ -166,7 +193,7 @@ impl ViewerApp {
 
     /// What the status bar shows now.
     fn status_line(&self) -> StatusLine<'_> {
-        let shown = self.shown.as_ref();
+        let shown = self.frames.shown.as_ref();
         StatusLine {
             render_ms: shown.map(|s| s.render_ms),
             size_px: shown.map(|s| [s.frame.width_px, s.frame.height_px]),
@@ -177,11 +204,12 @@ impl ViewerApp {
                     s.quality.describe()
                 }
             }),
-            magnification: self.magnifier.zoom,
-            sphere_count: self.loaded.scene.spheres.len(),
-            scene_name: self.loaded.name(),
+            magnification: self.viewing.magnifier.zoom,
+            sphere_count: self.scene.loaded.scene.spheres.len(),
+            scene_name: self.scene.loaded.name(),
             busy: self.busy(),
             loading: self
+                .scene
                 .loading
                 .as_ref()
                 .filter(|pending| pending.shows_progress())
@@ -192,15 +220,15 @@ impl ViewerApp {
 
     /// A render or a write is under way.
     pub(super) fn busy(&self) -> bool {
-        self.worker.as_ref().is_some_and(|w| !w.is_idle())
-            || self.writing.is_some()
+        self.frames.worker.as_ref().is_some_and(|w| !w.is_idle())
+            || self.writes.task.is_some()
             || self.compare.busy()
     }
 
     /// Where the pinned point is on the frame on screen (image pixels, y up), if it is in view.
     pub(super) fn pinned_px(&self) -> Option<glam::DVec2> {
-        let shown = self.shown.as_ref()?;
-        let px = pixel_of_point(&shown.view, self.probe.pinned_world?)?;
+        let shown = self.frames.shown.as_ref()?;
+        let px = pixel_of_point(&shown.view, self.viewing.probe.pinned_world?)?;
         let inside = px.x >= 0.0
             && px.y >= 0.0
             && px.x < f64::from(shown.view.width_px)
@@ -211,7 +239,7 @@ impl ViewerApp {
     /// The two images with the probe and the histogram; applies the gestures made on them.
     fn images_ui(&mut self, ui: &mut egui::Ui) {
         let style = self.depth_style();
-        let range = self.shown.as_ref().map(|s| s.view.depth_range);
+        let range = self.frames.shown.as_ref().map(|s| s.view.depth_range);
         let depth_rgb = |probe: &crate::explore::probe::Probe| match (range, probe.hit) {
             (Some(range), Some(hit)) => style.colour_map.rgb(&range, hit.t, style.no_hit_rgb),
             _ => style.no_hit_rgb,
@@ -219,6 +247,7 @@ impl ViewerApp {
         let mut probe_lines =
             probe_text::probe_lines(self.pinned_probe(), self.hover_probe(), depth_rgb);
         if let Some(line) = self
+            .viewing
             .probe
             .hover_px
             .and_then(|px| self.compare_probe_line(px))
@@ -226,8 +255,8 @@ impl ViewerApp {
             probe_lines.push(line);
         }
         self.close_stale_measurement();
-        let compared = compared_picture(&self.compare, &self.view);
-        let shown = self.shown.as_ref().map(|s| ShownImages {
+        let compared = compared_picture(&self.compare, &self.viewing.view);
+        let shown = self.frames.shown.as_ref().map(|s| ShownImages {
             colour: &s.colour,
             depth: &s.depth,
             size_px: [s.frame.width_px, s.frame.height_px],
@@ -238,23 +267,23 @@ impl ViewerApp {
         let footer = Footer {
             probe_lines: &probe_lines,
             pinned: self.pinned_px(),
-            has_pin: self.probe.pinned_world.is_some(),
-            hover: self.probe.hover_px,
-            depth_range: &mut self.view.depth_range,
+            has_pin: self.viewing.probe.pinned_world.is_some(),
+            hover: self.viewing.probe.hover_px,
+            depth_range: &mut self.viewing.view.depth_range,
             histogram_style: HistogramStyle {
                 log_counts: self.settings.depth.log_counts,
                 height: 0.0,
             },
             colour_map: style.colour_map,
             no_hit_rgb: style.no_hit_rgb,
-            magnifier: self.magnifier,
+            magnifier: self.viewing.magnifier,
         };
         let gestures = images_ui(ui, shown.as_ref(), footer);
         self.apply_gestures(&gestures);
         // While their image is compared the view keeps its size, so the two line up.
         let (width_px, height_px) = self.compare.held_size_px().unwrap_or(gestures.wanted_px);
-        self.view.width_px = width_px;
-        self.view.height_px = height_px;
+        self.viewing.view.width_px = width_px;
+        self.viewing.view.height_px = height_px;
     }
 
     /// A measurement of the chosen quality is of one view: it closes when the view changes.
@@ -263,8 +292,8 @@ impl ViewerApp {
             && let CompareSource::Quality(_) = current.pixels.source
         {
             let mut measured = current.pixels.view;
-            measured.depth_range = self.view.depth_range;
-            if measured != self.view {
+            measured.depth_range = self.viewing.view.depth_range;
+            if measured != self.viewing.view {
                 self.close_comparison();
             }
         }

@@ -1,21 +1,22 @@
 //! The desktop viewer (feature `gui`): the colour and depth images side by side, live sliders,
-//! open and export. The viewer only edits a [`View`], hands (scene, view) jobs to a background
+//! open and export. The viewer only edits a [`View`](crate::render::View), hands (scene, view) jobs to a background
 //! worker and uploads the textures it gets back; all rendering math is in the library.
 //!
 //! [`ViewerApp`] coordinates; each concern lives in a module of its own:
-//! * [`state`]: the loaded scene, the persisted settings
-//! * [`job`]: the render worker's job (render + texture pixels off the UI thread)
+//! * [`settings`]: the settings that survive a restart
+//! * [`open_scene`]: the scene on screen, its load, watcher and error
+//! * [`render_job`]: the render worker's job (render + texture pixels off the UI thread)
 //! * [`frame_log`]: per-frame figures for scripts that measure the real window
-//! * [`frames`]: asking the worker for frames (progressive refinement) and taking them in
+//! * [`render_requests`]: asking the worker for frames (progressive refinement) and taking them in
 //! * [`scene_loading`]: opening and reloading scene files in the background
 //! * [`actions`]: what the user can ask for ([`actions::Action`]), exports, dialogs
 //! * [`compare`]: their image (or the chosen quality) against the exact render, the diagnosis
-//! * [`confirm`]: asking before a write replaces files
-//! * [`views`]: undo and redo, named views, the view each scene was last seen in
-//! * [`view_actions`]: auto range and follow, frame all, resets, undo and redo, named views
+//! * [`confirm`]: asking before a write replaces files; [`writes`]: the writes' state
+//! * [`saved_views`]: undo and redo, named views, the view each scene was last seen in
+//! * [`viewing`]: auto range and follow, frame all, resets, undo and redo, named views
 //! * [`input`]: shortcuts, dropped files, keyboard and pointer navigation
 //! * [`layout`]: composing the panels, the drawer and the central area
-//! * [`tasks`]: the one background-task type (loads, writes, dialogs)
+//! * [`background`]: the one background-task type (loads, writes, dialogs)
 //! * [`status`]: the typed status-bar message
 //! * [`dialogs`]: native file dialogs; [`reload`]: watching the open file
 //! * [`inspect`]: read access for tests and tools
@@ -24,43 +25,37 @@
 //! * [`ui`]: the drawing, one `*_ui` function per part
 
 pub(crate) mod actions;
+pub(crate) mod background;
 pub mod compare;
 pub(crate) mod confirm;
 pub(crate) mod dialogs;
 pub mod frame_log;
-pub(crate) mod frames;
 pub(crate) mod input;
 pub(crate) mod inspect;
-pub mod job;
 pub(crate) mod layout;
+pub mod open_scene;
 pub(crate) mod reload;
+pub mod render_job;
+pub(crate) mod render_requests;
+pub mod saved_views;
 pub(crate) mod scene_loading;
-pub mod state;
+pub mod settings;
 pub(crate) mod status;
-pub(crate) mod tasks;
 pub mod ui;
-pub(crate) mod view_actions;
-pub mod views;
+pub(crate) mod viewing;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) mod window;
+pub(crate) mod writes;
 
-use std::path::PathBuf;
-
-use glam::{DVec2, DVec3};
-
-use self::dialogs::{PendingDialog, dialog_unavailable_reason};
-use self::frames::{Requests, Shown};
-use self::job::{ViewerWorker, start_worker};
-use self::scene_loading::PendingLoad;
-use self::state::{LoadedScene, Settings};
+use self::dialogs::dialog_unavailable_reason;
+use self::open_scene::{LoadedScene, OpenScene};
+use self::render_job::start_worker;
+use self::saved_views::{SavedView, SceneViews};
+use self::settings::Settings;
 use self::status::Status;
-use self::tasks::Task;
-use self::ui::magnifier::Magnifier;
-use self::views::{History, SavedView, SceneViews};
 use crate::cli::ViewerRequest;
-use crate::render::View;
 
 pub use self::input::{KEY_ORBIT_RAD, KEY_PAN_FRACTION, KEY_ZOOM_FACTOR};
 #[cfg(not(target_arch = "wasm32"))]
@@ -69,66 +64,26 @@ pub use self::window::{environment_problem, no_display_reason, run};
 /// Image size used until the first layout tells the real one.
 const INITIAL_SIZE_PX: (u32, u32) = (512, 512);
 
-/// The pointer's position (image pixels, y up) and the pinned point (world coordinates, so the
-/// pin stays on what was pinned while the view moves).
-#[derive(Debug, Clone, Copy, Default)]
-struct ProbePoints {
-    hover_px: Option<DVec2>,
-    pinned_world: Option<DVec3>,
-}
-
-/// What the side panel's fields hold between frames.
-#[derive(Debug, Clone, Default)]
-struct Fields {
-    /// The typed scene path of the file section.
-    path_text: String,
-    /// The name typed for a new named view.
-    view_name: String,
-    /// A view edit that was not applied, and why.
-    invalid_edit: Option<String>,
-}
-
-/// The viewer application.
+/// The viewer application: the coordinator. Each feature's state is a struct of its own (the
+/// open scene, the view, the frames, the writes, the panels, the comparison); the coordinator
+/// routes input and [`actions::Action`]s between them and draws the window.
 pub struct ViewerApp {
+    /// What survives a restart.
     settings: Settings,
-    loaded: LoadedScene,
-    /// Incremented whenever another scene is loaded, so the same view of a new scene re-renders.
-    scene_epoch: u64,
-    view: View,
-    worker: Option<ViewerWorker>,
-    requests: Requests,
-    shown: Option<Shown>,
-    scene_error: Option<String>,
-    /// A file that failed to open: Reload and the watcher try it again.
-    failed_open: Option<PathBuf>,
-    status: Option<Status>,
-    fields: Fields,
-    dialog: Option<PendingDialog>,
-    /// Why no file dialog can be shown here, if none can.
-    dialog_note: Option<&'static str>,
-    /// A background write (export or saved scene): its outcome message.
-    writing: Option<Task<Result<String, String>>>,
-    watcher: Option<reload::FileWatcher>,
-    loading: Option<PendingLoad>,
-    probe: ProbePoints,
-    magnifier: Magnifier,
-    history: History,
-    /// The shortcuts and gestures overlay is open.
-    help_open: bool,
-    /// The controls drawer of narrow windows is open.
-    drawer_open: bool,
-    /// The camera the depth range was last fitted for in "follow" mode.
-    followed: Option<SavedView>,
-    /// The `raytracer` binary export scripts run.
-    program: Option<PathBuf>,
-    /// "Save view as scene" is writing over the open scene (its reload keeps the save's message).
-    saving_open_scene: bool,
-    /// A write that waits for the user to agree to replace files.
-    pending_replace: Option<confirm::PendingReplace>,
+    /// The scene on screen, its load, watcher and error.
+    scene: OpenScene,
+    /// The view, its history, the probe and the magnifier.
+    viewing: viewing::Viewing,
+    /// The frames asked of the render worker and the one on screen.
+    frames: render_requests::Frames,
+    /// Exports and saved scenes: the write in flight, the one waiting for a yes, file dialogs.
+    writes: writes::Writes,
+    /// The side panel's fields, the drawer and the shortcuts overlay.
+    panels: layout::Panels,
     /// The Compare section: their image or the chosen quality against the exact render.
     compare: compare::CompareState,
-    /// Per-frame figures, when the environment asks for them.
-    frame_log: Option<frame_log::FrameLog>,
+    /// The status bar's message.
+    status: Option<Status>,
     /// In a browser page: files on their way in.
     #[cfg(target_arch = "wasm32")]
     page: web::Page,
@@ -161,40 +116,30 @@ impl ViewerApp {
             ),
         };
         let loaded = LoadedScene::default_scene(INITIAL_SIZE_PX);
-        let mut history = History::default();
-        history.reset(&loaded.file_view);
         #[cfg_attr(target_arch = "wasm32", allow(unused_mut))]
         let mut app = Self {
             settings,
-            view: loaded.file_view,
-            loaded,
-            scene_epoch: 0,
-            worker,
-            requests: Requests::default(),
-            shown: None,
-            scene_error: None,
-            failed_open: None,
-            status,
-            fields: Fields::default(),
-            dialog: None,
-            dialog_note: dialog_unavailable_reason(),
-            writing: None,
-            watcher: None,
-            loading: None,
-            probe: ProbePoints::default(),
-            magnifier: Magnifier::default(),
-            history,
-            help_open: false,
-            drawer_open: false,
-            followed: None,
-            program: request.program.clone(),
-            saving_open_scene: false,
-            pending_replace: None,
+            viewing: viewing::Viewing::new(loaded.file_view),
+            scene: OpenScene::new(loaded),
+            frames: render_requests::Frames {
+                worker,
+                requests: render_requests::Requests::default(),
+                shown: None,
+                log: frame_log::FrameLog::from_environment().map(|mut log| {
+                    log.renderer(if cc.gl.is_some() { "glow" } else { "wgpu" });
+                    log
+                }),
+            },
+            writes: writes::Writes {
+                task: None,
+                pending_replace: None,
+                dialog: None,
+                dialog_note: dialog_unavailable_reason(),
+                program: request.program.clone(),
+            },
+            panels: layout::Panels::default(),
             compare: compare::CompareState::default(),
-            frame_log: frame_log::FrameLog::from_environment().map(|mut log| {
-                log.renderer(if cc.gl.is_some() { "glow" } else { "wgpu" });
-                log
-            }),
+            status,
             #[cfg(target_arch = "wasm32")]
             page: web::Page::default(),
             ctx: cc.egui_ctx.clone(),
@@ -216,12 +161,12 @@ impl ViewerApp {
 
     /// Remembers the view the open scene is in, to restore when it is opened again.
     fn remember_view(&mut self) {
-        if let Some(path) = &self.loaded.path {
+        if let Some(path) = &self.scene.loaded.path {
             let key = SceneViews::key(path);
             self.settings
                 .views
                 .last
-                .insert(key, SavedView::of(&self.view));
+                .insert(key, SavedView::of(&self.viewing.view));
         }
     }
 }
@@ -229,7 +174,7 @@ impl ViewerApp {
 impl eframe::App for ViewerApp {
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
-        if let Some(log) = &mut self.frame_log {
+        if let Some(log) = &mut self.frames.log {
             log.ui(frame.info().cpu_usage);
         }
         if crate::platform::process::stop_requested().is_some() {
@@ -247,7 +192,9 @@ impl eframe::App for ViewerApp {
         for action in actions {
             self.apply(action);
         }
-        self.history.observe(&self.view, web_time::Instant::now());
+        self.viewing
+            .history
+            .observe(&self.viewing.view, web_time::Instant::now());
         self.submit_if_changed();
         if self.busy() {
             ctx.request_repaint_after(std::time::Duration::from_millis(100));

@@ -8,11 +8,11 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use super::ViewerApp;
+use super::background::{Poll, Task};
+use super::open_scene::LoadedScene;
 use super::reload::FileWatcher;
-use super::state::LoadedScene;
+use super::saved_views::SceneViews;
 use super::status::Status;
-use super::tasks::{Poll, Task};
-use super::views::SceneViews;
 use crate::render::View;
 
 /// Loads shorter than this show no progress (most scenes load in a few milliseconds).
@@ -105,11 +105,11 @@ impl ViewerApp {
     /// browser page's dropped, picked or fetched file): as [`Self::open`], without a file to
     /// reload or watch.
     pub fn open_bytes(&mut self, name: &str, bytes: std::sync::Arc<[u8]>) {
-        let size = (self.view.width_px, self.view.height_px);
+        let size = (self.viewing.view.width_px, self.viewing.view.height_px);
         match PendingLoad::start_bytes(name, bytes, size, &self.ctx) {
-            Ok(pending) => self.loading = Some(pending),
+            Ok(pending) => self.scene.loading = Some(pending),
             Err(error) => {
-                self.scene_error = Some(format!("{name}: cannot start loading: {error}"));
+                self.scene.error = Some(format!("{name}: cannot start loading: {error}"));
             }
         }
     }
@@ -119,17 +119,17 @@ impl ViewerApp {
     /// still the file's.
     pub(crate) fn reload(&mut self) {
         // A file that failed to open is tried again: it may have been fixed.
-        if let Some(failed) = self.failed_open.clone() {
+        if let Some(failed) = self.scene.failed_open.clone() {
             self.start_load(&failed, LoadKind::Open);
             return;
         }
-        let Some(path) = self.loaded.path.clone() else {
+        let Some(path) = self.scene.loaded.path.clone() else {
             self.status = Some(Status::info(
                 "the embedded default scene has no file to reload",
             ));
             return;
         };
-        if self.loaded.in_memory {
+        if self.scene.loaded.in_memory {
             self.status = Some(Status::info(format!(
                 "{} came from the page, not from a file: open it again to reload it",
                 path.display()
@@ -140,11 +140,11 @@ impl ViewerApp {
     }
 
     fn start_load(&mut self, path: &Path, kind: LoadKind) {
-        let size = (self.view.width_px, self.view.height_px);
+        let size = (self.viewing.view.width_px, self.viewing.view.height_px);
         match PendingLoad::start(path, kind, size, &self.ctx) {
-            Ok(pending) => self.loading = Some(pending),
+            Ok(pending) => self.scene.loading = Some(pending),
             Err(error) => {
-                self.scene_error =
+                self.scene.error =
                     Some(format!("{}: cannot start loading: {error}", path.display()));
             }
         }
@@ -152,7 +152,7 @@ impl ViewerApp {
 
     /// Takes a finished load: adopts the scene or shows the error.
     pub(super) fn poll_load(&mut self) {
-        let Some(pending) = &self.loading else {
+        let Some(pending) = &self.scene.loading else {
             return;
         };
         let result = match pending.task.poll() {
@@ -172,11 +172,11 @@ impl ViewerApp {
             )),
         };
         let (path, kind, from_bytes) = (pending.path.clone(), pending.kind, pending.from_bytes);
-        self.loading = None;
+        self.scene.loading = None;
         let loaded = match result {
             Ok(loaded) => loaded,
             Err(error) => {
-                self.scene_error = Some(error);
+                self.scene.error = Some(error);
                 if kind == LoadKind::Open && !from_bytes {
                     self.watch_failed_open(&path);
                 }
@@ -187,13 +187,13 @@ impl ViewerApp {
             LoadKind::Open => self.adopt_opened(loaded, &path),
             LoadKind::Reload => {
                 let still_file_view = View {
-                    width_px: self.loaded.file_view.width_px,
-                    height_px: self.loaded.file_view.height_px,
-                    ..self.view
-                } == self.loaded.file_view;
+                    width_px: self.scene.loaded.file_view.width_px,
+                    height_px: self.scene.loaded.file_view.height_px,
+                    ..self.viewing.view
+                } == self.scene.loaded.file_view;
                 self.adopt(loaded, !still_file_view);
                 // After our own save over the open scene, the save's message stays.
-                if !std::mem::take(&mut self.saving_open_scene) {
+                if !std::mem::take(&mut self.scene.saving_over) {
                     self.status = Some(Status::info(format!("reloaded {}", path.display())));
                 }
             }
@@ -202,25 +202,25 @@ impl ViewerApp {
 
     /// Watches a file that failed to open, so that fixing it opens it.
     fn watch_failed_open(&mut self, path: &Path) {
-        self.failed_open = Some(path.to_path_buf());
+        self.scene.failed_open = Some(path.to_path_buf());
         let ctx = self.ctx.clone();
         // A file that does not exist cannot be watched; Reload still tries it again.
-        self.watcher = FileWatcher::watch(path, move || ctx.request_repaint()).ok();
+        self.scene.watcher = FileWatcher::watch(path, move || ctx.request_repaint()).ok();
     }
 
     /// Puts a newly opened scene on screen in the view it was last seen in (if it was), remembers
     /// it and watches its file.
     fn adopt_opened(&mut self, loaded: LoadedScene, path: &Path) {
         self.remember_view();
-        self.failed_open = None;
+        self.scene.failed_open = None;
         self.adopt(loaded, false);
         if let Some(last) = self.settings.views.last.get(&SceneViews::key(path)) {
-            self.view = last.applied_to(&self.view);
+            self.viewing.view = last.applied_to(&self.viewing.view);
         }
-        self.history.reset(&self.view);
-        self.magnifier = Default::default();
-        self.probe.pinned_world = None;
-        self.fields.path_text = path.display().to_string();
+        self.viewing.history.reset(&self.viewing.view);
+        self.viewing.magnifier = Default::default();
+        self.viewing.probe.pinned_world = None;
+        self.panels.fields.path_text = path.display().to_string();
         self.ctx
             .send_viewport_cmd(egui::ViewportCommand::Title(format!(
                 "raytracer — {}",
@@ -228,14 +228,14 @@ impl ViewerApp {
             )));
         #[cfg(target_arch = "wasm32")]
         super::web::set_title(&format!("raytracer — {}", path.display()));
-        if self.loaded.in_memory {
+        if self.scene.loaded.in_memory {
             // No file to open again at the next start, or to watch.
-            self.watcher = None;
+            self.scene.watcher = None;
             return;
         }
         self.settings.last_scene = Some(path.to_path_buf());
         let ctx = self.ctx.clone();
-        self.watcher = match FileWatcher::watch(path, move || ctx.request_repaint()) {
+        self.scene.watcher = match FileWatcher::watch(path, move || ctx.request_repaint()) {
             Ok(watcher) => Some(watcher),
             Err(error) => {
                 self.status = Some(Status::error(format!("live reload is off: {error}")));
@@ -246,16 +246,16 @@ impl ViewerApp {
 
     /// Puts `loaded` on screen; `keep_view` keeps the current camera and depth range.
     fn adopt(&mut self, loaded: LoadedScene, keep_view: bool) {
-        let (width_px, height_px) = (self.view.width_px, self.view.height_px);
-        self.loaded = loaded;
+        let (width_px, height_px) = (self.viewing.view.width_px, self.viewing.view.height_px);
+        self.scene.loaded = loaded;
         if !keep_view {
-            self.view = View {
+            self.viewing.view = View {
                 width_px,
                 height_px,
-                ..self.loaded.file_view
+                ..self.scene.loaded.file_view
             };
         }
-        self.scene_epoch += 1;
-        self.scene_error = None;
+        self.scene.epoch += 1;
+        self.scene.error = None;
     }
 }

@@ -273,7 +273,7 @@ impl ViewerApp {
                         format!("{}: {error}", incoming.name)
                     };
                     match incoming.purpose {
-                        Purpose::Open => self.scene_error = Some(message),
+                        Purpose::Open => self.scene.error = Some(message),
                         _ => self.status = Some(Status::error(message)),
                     }
                     continue;
@@ -360,12 +360,12 @@ impl WebHandle {
 
     /// The open scene's name ("default scene" for the embedded one).
     pub fn scene_name(&self) -> Option<String> {
-        self.with_app(|app| app.loaded.name())
+        self.with_app(|app| app.scene.loaded.name())
     }
 
     /// Why the last scene could not be opened, if it could not.
     pub fn scene_error(&self) -> Option<String> {
-        self.with_app(|app| app.scene_error.clone()).flatten()
+        self.with_app(|app| app.scene.error.clone()).flatten()
     }
 
     /// The status bar's message.
@@ -379,7 +379,7 @@ impl WebHandle {
     pub fn settled(&self) -> bool {
         self.with_app(|app| {
             !app.busy()
-                && app.loading.is_none()
+                && app.scene.loading.is_none()
                 && app.page.inbox.borrow().is_empty()
                 && app.frame_is_current()
         })
@@ -390,7 +390,7 @@ impl WebHandle {
     /// then pixels).
     pub fn view(&self) -> Option<Vec<f64>> {
         self.with_app(|app| {
-            let v = &app.view;
+            let v = &app.viewing.view;
             vec![
                 v.center_world.x,
                 v.center_world.y,
@@ -413,7 +413,8 @@ impl WebHandle {
     /// The frame on screen: `[width, height]`.
     pub fn frame_size(&self) -> Option<Vec<u32>> {
         self.with_app(|app| {
-            app.shown
+            app.frames
+                .shown
                 .as_ref()
                 .map(|shown| vec![shown.frame.width_px, shown.frame.height_px])
         })
@@ -423,7 +424,8 @@ impl WebHandle {
     /// The colour image on screen, 3 bytes a pixel, top row first.
     pub fn colour_rgb(&self) -> Option<Vec<u8>> {
         self.with_app(|app| {
-            app.shown
+            app.frames
+                .shown
                 .as_ref()
                 .map(|shown| shown.frame.colour_image().into_raw())
         })
@@ -443,8 +445,13 @@ impl WebHandle {
 
     /// How long the last frame took to render, in milliseconds (0 before the first).
     pub fn render_ms(&self) -> f64 {
-        self.with_app(|app| app.shown.as_ref().map_or(0.0, |shown| shown.render_ms))
-            .unwrap_or(0.0)
+        self.with_app(|app| {
+            app.frames
+                .shown
+                .as_ref()
+                .map_or(0.0, |shown| shown.render_ms)
+        })
+        .unwrap_or(0.0)
     }
 
     /// The viewer's work for one frame (render, both textures, histogram: what the render worker
@@ -452,7 +459,7 @@ impl WebHandle {
     /// milliseconds: the page's figure beside `examples/viewer_frame` on the desktop.
     pub fn frame_ms(&self, width: u32, height: u32, runs: u32) -> Option<f64> {
         let job = self.with_app(|app| {
-            let scene = Arc::clone(&app.loaded.scene);
+            let scene = Arc::clone(&app.scene.loaded.scene);
             let mut view = crate::render::View::of_camera(
                 &scene.camera,
                 width,
@@ -460,18 +467,18 @@ impl WebHandle {
                 crate::render::depth_map::DepthRange::new(0.0, 1.0),
             );
             view.depth_range = crate::explore::initial_depth_range(&scene, &view);
-            super::job::ViewerJob {
+            super::render_job::ViewerJob {
                 scene,
                 view,
                 scene_epoch: 0,
                 quality: crate::render::Quality::default(),
-                depth_style: super::job::DepthStyle::default(),
+                depth_style: super::render_job::DepthStyle::default(),
             }
         })?;
         let mut times: Vec<f64> = (0..runs.max(1))
             .map(|_| {
                 let started = web_time::Instant::now();
-                let _ = std::hint::black_box(super::job::prepare_frame(&job));
+                let _ = std::hint::black_box(super::render_job::prepare_frame(&job));
                 started.elapsed().as_secs_f64() * 1e3
             })
             .collect();

@@ -1,4 +1,5 @@
-//! `-compare_output`, `-compare_depth` and `-diff`: read the user's images, compare them with
+//! The compare concept at the command line ([`crate::compare`] is the concept itself):
+//! `-compare_output`, `-compare_depth` and `-diff` read the user's images, compare them with
 //! the exact render of the request, name the mistakes behind a difference
 //! ([`crate::compare::diagnose`]) and draw the difference picture.
 

@@ -5,7 +5,7 @@
 use egui::Ui;
 
 use crate::app::actions::Action;
-use crate::app::state::DepthDisplay;
+use crate::app::settings::DepthDisplay;
 use crate::explore::depth_stats::MAX_PERCENTILE_CUT;
 use crate::render::depth_map::DepthColourMap;
 

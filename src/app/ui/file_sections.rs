@@ -3,7 +3,7 @@
 
 use egui::{RichText, Ui};
 
-use crate::app::state::{ExportFormat, ExportSettings};
+use crate::app::settings::{ExportFormat, ExportSettings};
 use crate::export::ExtraDepth;
 use crate::output::depth_file::RawDepthFormat;
 use crate::render::MAX_SIDE_PX;

@@ -4,7 +4,7 @@
 use egui::Ui;
 
 use crate::app::actions::Action;
-use crate::app::views::NamedView;
+use crate::app::saved_views::NamedView;
 
 /// The section; `name` is the field for a new view's name. Returns the actions asked for.
 pub(crate) fn views_ui(

@@ -8,19 +8,34 @@ use web_time::{Duration, Instant};
 use egui::{TextureHandle, TextureOptions};
 
 use super::ViewerApp;
-use super::job::{DepthStyle, JobResult, ViewerJob};
+use super::frame_log::FrameLog;
+use super::render_job::ViewerWorker;
+use super::render_job::{DepthStyle, JobResult, ViewerJob};
 use super::status::{Clears, Status};
 use crate::explore::depth_stats::DepthHistogram;
 use crate::render::{Frame, Quality, View};
+
+/// The viewer's "frames" feature: the render worker, what was asked of it, the frame on screen
+/// and, when the environment asks for it, the frame log.
+pub(crate) struct Frames {
+    /// The render worker (none when its thread could not start).
+    pub(crate) worker: Option<ViewerWorker>,
+    /// What was asked of the worker, and when.
+    pub(crate) requests: Requests,
+    /// The frame on screen.
+    pub(crate) shown: Option<Shown>,
+    /// Per-frame figures (`RAYTRACER_FRAME_LOG`).
+    pub(crate) log: Option<FrameLog>,
+}
 
 /// How long the view must stay unchanged before a preview is refined to the chosen quality.
 pub(crate) const REFINE_DELAY: Duration = Duration::from_millis(150);
 
 /// What the worker is asked for: a view of a scene load at a quality, its depth drawn in a style.
-pub(super) type Wanted = (View, u64, Quality, DepthStyle);
+pub(crate) type Wanted = (View, u64, Quality, DepthStyle);
 
 /// The frame on screen.
-pub(super) struct Shown {
+pub(crate) struct Shown {
     pub(crate) frame: Arc<Frame>,
     pub(crate) view: View,
     pub(crate) scene_epoch: u64,
@@ -33,7 +48,7 @@ pub(super) struct Shown {
 }
 
 /// What was asked of the worker and when the wanted picture last changed.
-pub(super) struct Requests {
+pub(crate) struct Requests {
     /// The last job submitted.
     pub(crate) submitted: Option<Wanted>,
     /// What the last change was made to.
@@ -69,10 +84,10 @@ impl ViewerApp {
     /// quality. While a scene loads this is false: the frame will change once it is in.
     pub fn frame_is_current(&self) -> bool {
         let style = self.depth_style();
-        self.loading.is_none()
-            && self.shown.as_ref().is_some_and(|s| {
-                s.view == self.view
-                    && s.scene_epoch == self.scene_epoch
+        self.scene.loading.is_none()
+            && self.frames.shown.as_ref().is_some_and(|s| {
+                s.view == self.viewing.view
+                    && s.scene_epoch == self.scene.epoch
                     && s.quality == self.settings.quality
                     && s.depth_style == style
             })
@@ -80,7 +95,7 @@ impl ViewerApp {
 
     /// Whether the frame on screen is a one-sample preview of a supersampled quality.
     pub fn showing_preview(&self) -> bool {
-        self.shown.as_ref().is_some_and(|s| {
+        self.frames.shown.as_ref().is_some_and(|s| {
             s.quality.sampling.is_none() && self.settings.quality.sampling.is_some()
         })
     }
@@ -89,8 +104,13 @@ impl ViewerApp {
     /// once it has been still for [`REFINE_DELAY`], the chosen quality.
     pub(super) fn submit_if_changed(&mut self) {
         let style = self.depth_style();
-        let chosen = (self.view, self.scene_epoch, self.settings.quality, style);
-        let requests = &mut self.requests;
+        let chosen = (
+            self.viewing.view,
+            self.scene.epoch,
+            self.settings.quality,
+            style,
+        );
+        let requests = &mut self.frames.requests;
         if requests.last_wanted != Some(chosen) {
             requests.last_wanted = Some(chosen);
             requests.last_change = Instant::now();
@@ -104,15 +124,15 @@ impl ViewerApp {
                 .request_repaint_after(REFINE_DELAY.saturating_sub(still_for));
             Quality { sampling: None }
         };
-        let wanted = (self.view, self.scene_epoch, quality, style);
+        let wanted = (self.viewing.view, self.scene.epoch, quality, style);
         if requests.submitted == Some(wanted) {
             return;
         }
-        if let Some(worker) = &self.worker {
+        if let Some(worker) = &self.frames.worker {
             worker.submit(ViewerJob {
-                scene: Arc::clone(&self.loaded.scene),
-                view: self.view,
-                scene_epoch: self.scene_epoch,
+                scene: Arc::clone(&self.scene.loaded.scene),
+                view: self.viewing.view,
+                scene_epoch: self.scene.epoch,
                 quality,
                 depth_style: style,
             });
@@ -129,6 +149,7 @@ impl ViewerApp {
     /// Takes a frame the worker finished into the textures (or shows why it failed).
     pub(super) fn receive_frame(&mut self) {
         let Some(result) = self
+            .frames
             .worker
             .as_ref()
             .and_then(super::super::render::worker::RenderWorker::take_finished)
@@ -149,9 +170,10 @@ impl ViewerApp {
             }
         };
         let render_ms = render_time.as_secs_f64() * 1e3;
-        if let Some(log) = &mut self.frame_log {
+        if let Some(log) = &mut self.frames.log {
             let wanted = (job.view, job.scene_epoch, job.quality, job.depth_style);
             let changed_at = self
+                .frames
                 .requests
                 .changed_at
                 .iter()
@@ -160,7 +182,7 @@ impl ViewerApp {
             let size = [job.view.width_px, job.view.height_px];
             log.frame(render_ms, changed_at, size);
         }
-        if let Some(shown) = &mut self.shown {
+        if let Some(shown) = &mut self.frames.shown {
             shown.colour.set(prepared.colour, TextureOptions::NEAREST);
             shown.depth.set(prepared.depth, TextureOptions::NEAREST);
             shown.frame = prepared.frame;
@@ -177,7 +199,7 @@ impl ViewerApp {
             let depth = self
                 .ctx
                 .load_texture("depth", prepared.depth, TextureOptions::NEAREST);
-            self.shown = Some(Shown {
+            self.frames.shown = Some(Shown {
                 frame: prepared.frame,
                 view: job.view,
                 scene_epoch: job.scene_epoch,

@@ -1,0 +1,142 @@
+//! The open scene: the scene on screen with where it came from ([`LoadedScene`]), and what goes
+//! with it ([`OpenScene`]): the load in flight, the file watcher, the error of the last failed
+//! open, and the epoch that makes the same view of a new scene render again.
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use super::reload::FileWatcher;
+use super::scene_loading::PendingLoad;
+use crate::explore::{SliderRanges, initial_depth_range};
+use crate::render::View;
+use crate::scene::{LoadError, Scene, load_scene_with_progress, parse_scene};
+use crate::{DEFAULT_SCENE_NAME, DEFAULT_SCENE_TEXT};
+
+/// The open scene and what goes with it: the viewer's "scene and loading" feature.
+pub(crate) struct OpenScene {
+    /// The scene on screen.
+    pub(crate) loaded: LoadedScene,
+    /// Incremented whenever another scene is loaded, so the same view of a new scene re-renders.
+    pub(crate) epoch: u64,
+    /// The last failed open or reload's error, shown over the images until dismissed.
+    pub(crate) error: Option<String>,
+    /// A file that failed to open: Reload and the watcher try it again.
+    pub(crate) failed_open: Option<PathBuf>,
+    /// Watches the open file (or the failed one) for changes.
+    pub(crate) watcher: Option<FileWatcher>,
+    /// A load running in the background.
+    pub(crate) loading: Option<PendingLoad>,
+    /// "Save view as scene" is writing over the open scene (its reload keeps the save's message).
+    pub(crate) saving_over: bool,
+}
+
+impl OpenScene {
+    /// `loaded` open, nothing else going on.
+    pub(crate) fn new(loaded: LoadedScene) -> Self {
+        Self {
+            loaded,
+            epoch: 0,
+            error: None,
+            failed_open: None,
+            watcher: None,
+            loading: None,
+            saving_over: false,
+        }
+    }
+}
+
+/// A scene on screen, with its origin and what the controls derive from it.
+#[derive(Debug, Clone)]
+pub struct LoadedScene {
+    /// The scene.
+    pub scene: Arc<Scene>,
+    /// The file it came from; `None` for the embedded default scene. For a scene that came as
+    /// bytes (`in_memory`), only its name.
+    pub path: Option<PathBuf>,
+    /// The scene came as bytes (a browser page's dropped, picked or fetched file), not from a
+    /// file the viewer can read again: there is nothing to reload or watch.
+    pub in_memory: bool,
+    /// The file's own camera at the initial depth range ("reset view" returns here).
+    pub file_view: View,
+}
+
+impl LoadedScene {
+    /// Wraps a parsed scene; `size_px` is the image size to start with.
+    pub fn new(scene: Scene, path: Option<PathBuf>, size_px: (u32, u32)) -> Self {
+        let mut file_view = View::of_camera(
+            &scene.camera,
+            size_px.0,
+            size_px.1,
+            crate::render::depth_map::DepthRange::new(0.0, 1.0),
+        );
+        file_view.depth_range = initial_depth_range(&scene, &file_view);
+        Self {
+            scene: Arc::new(scene),
+            path,
+            in_memory: false,
+            file_view,
+        }
+    }
+
+    /// The embedded default scene.
+    pub(crate) fn default_scene(size_px: (u32, u32)) -> Self {
+        match parse_scene(DEFAULT_SCENE_TEXT) {
+            Ok(scene) => Self::new(scene, None, size_px),
+            // The embedded scene is parsed by a test; this arm only guards against a bad build.
+            Err(_) => Self::new(empty_scene(), None, size_px),
+        }
+    }
+
+    /// Parses a scene that came as bytes named `name` (see [`Self::in_memory`]).
+    pub(crate) fn from_bytes(
+        name: &str,
+        bytes: &[u8],
+        size_px: (u32, u32),
+    ) -> Result<Self, LoadError> {
+        let scene = crate::scene::load_scene_from_bytes(name, bytes)?;
+        Ok(Self {
+            in_memory: true,
+            ..Self::new(scene, Some(PathBuf::from(name)), size_px)
+        })
+    }
+
+    /// Reads a scene file, telling `progress` the share done (0 to 1) as it goes.
+    pub(crate) fn load_with_progress(
+        path: &Path,
+        size_px: (u32, u32),
+        progress: &(dyn Fn(f64) + Sync),
+    ) -> Result<Self, LoadError> {
+        Ok(Self::new(
+            load_scene_with_progress(path, progress)?,
+            Some(path.to_path_buf()),
+            size_px,
+        ))
+    }
+
+    /// The name shown in the status bar.
+    pub fn name(&self) -> String {
+        self.path.as_ref().map_or_else(
+            || DEFAULT_SCENE_NAME.to_owned(),
+            |p| p.display().to_string(),
+        )
+    }
+
+    /// Slider ranges for this scene and `view`.
+    pub(crate) fn ranges(&self, view: &View) -> SliderRanges {
+        SliderRanges::new(&self.scene, view)
+    }
+}
+
+fn empty_scene() -> Scene {
+    Scene {
+        camera: crate::scene::OrthographicCamera {
+            center_world: glam::DVec3::new(0.0, 0.0, 10.0),
+            direction_world: glam::DVec3::NEG_Z,
+            up_world: glam::DVec3::Y,
+            size_world: 5.0,
+        },
+        background: crate::scene::DEFAULT_BACKGROUND,
+        materials: Vec::new(),
+        spheres: Vec::new(),
+    }
+}
