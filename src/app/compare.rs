@@ -1,5 +1,5 @@
 //! The compare concept in the viewer ([`crate::compare`] is the concept itself; its panel is drawn
-//! by [`super::ui::compare_section`]): put an image beside the exact render and say why it
+//! by the `compare_section` of the UI): put an image beside the exact render and say why it
 //! differs, or measure the chosen quality against the exact render on the user's own view.
 //!
 //! * **Their image** (colour or depth, TGA or PNG): the exact render of the open scene's own

@@ -7,7 +7,7 @@ use std::time::Duration;
 use glam::DVec2;
 
 use super::ViewerApp;
-use super::open_scene::LoadedScene;
+use super::loaded_scene::LoadedScene;
 use super::settings::Settings;
 use super::ui::magnifier::Magnifier;
 use crate::explore::depth_stats::DepthHistogram;

@@ -4,7 +4,7 @@
 //!
 //! [`ViewerApp`] coordinates; each concern lives in a module of its own:
 //! * [`settings`]: the settings that survive a restart
-//! * [`open_scene`]: the scene on screen, its load, watcher and error
+//! * [`loaded_scene`]: the scene on screen and where it came from
 //! * [`render_job`]: the render worker's job (render + texture pixels off the UI thread)
 //! * [`frame_log`]: per-frame figures for scripts that measure the real window
 //! * [`render_requests`]: asking the worker for frames (progressive refinement) and taking them in
@@ -33,7 +33,7 @@ pub mod frame_log;
 pub(crate) mod input;
 pub(crate) mod inspect;
 pub(crate) mod layout;
-pub mod open_scene;
+pub mod loaded_scene;
 pub(crate) mod reload;
 pub mod render_job;
 pub(crate) mod render_requests;
@@ -50,9 +50,10 @@ pub(crate) mod window;
 pub(crate) mod writes;
 
 use self::dialogs::dialog_unavailable_reason;
-use self::open_scene::{LoadedScene, OpenScene};
+use self::loaded_scene::LoadedScene;
 use self::render_job::start_worker;
 use self::saved_views::{SavedView, SceneViews};
+use self::scene_loading::OpenScene;
 use self::settings::Settings;
 use self::status::Status;
 use crate::cli::ViewerRequest;

@@ -2,14 +2,15 @@
 //! second to read and parse; meanwhile the viewer keeps drawing (the previous scene stays on
 //! screen and stays explorable) and, once a load has run for [`SHOW_PROGRESS_AFTER`], shows its
 //! progress. A finished load is adopted here: an open replaces the view and watches the file, a
-//! reload keeps the user's camera unless it was still the file's.
+//! reload keeps the user's camera unless it was still the file's. [`OpenScene`] holds the open
+//! scene with its load, watcher and error: the viewer's "scene and loading" feature.
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use super::ViewerApp;
 use super::background::{Poll, Task};
-use super::open_scene::LoadedScene;
+use super::loaded_scene::LoadedScene;
 use super::reload::FileWatcher;
 use super::saved_views::SceneViews;
 use super::status::Status;
@@ -17,6 +18,39 @@ use crate::render::View;
 
 /// Loads shorter than this show no progress (most scenes load in a few milliseconds).
 pub(crate) const SHOW_PROGRESS_AFTER: Duration = Duration::from_millis(500);
+
+/// The open scene and what goes with it: the viewer's "scene and loading" feature.
+pub(crate) struct OpenScene {
+    /// The scene on screen.
+    pub(crate) loaded: LoadedScene,
+    /// Incremented whenever another scene is loaded, so the same view of a new scene re-renders.
+    pub(crate) epoch: u64,
+    /// The last failed open or reload's error, shown over the images until dismissed.
+    pub(crate) error: Option<String>,
+    /// A file that failed to open: Reload and the watcher try it again.
+    pub(crate) failed_open: Option<PathBuf>,
+    /// Watches the open file (or the failed one) for changes.
+    pub(crate) watcher: Option<FileWatcher>,
+    /// A load running in the background.
+    pub(crate) loading: Option<PendingLoad>,
+    /// "Save view as scene" is writing over the open scene (its reload keeps the save's message).
+    pub(crate) saving_over: bool,
+}
+
+impl OpenScene {
+    /// `loaded` open, nothing else going on.
+    pub(crate) fn new(loaded: LoadedScene) -> Self {
+        Self {
+            loaded,
+            epoch: 0,
+            error: None,
+            failed_open: None,
+            watcher: None,
+            loading: None,
+            saving_over: false,
+        }
+    }
+}
 
 /// Why a scene is loaded: the viewer adopts a reload differently from an open.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

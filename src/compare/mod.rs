@@ -1,6 +1,5 @@
 //! Comparing a picture with the exact one and saying why it differs: the compare concept
-//! itself, which the command line ([`crate::cli`]'s `compare`) and the viewer
-//! ([`crate::app`]'s `compare`) put in front of the user.
+//! itself, which the command line's and the viewer's `compare` modules put in front of the user.
 //!
 //! * [`mistake`]: the known mistakes of a first ray caster, each a word.
 //! * [`variant`]: the variant renderer, the picture a ray caster with a set of mistakes makes.

@@ -43,11 +43,11 @@ pub(crate) struct ExportPaths {
 /// The base name of an export into a folder when the scene has no file name (the embedded one).
 pub const DEFAULT_EXPORT_NAME: &str = "raytracer";
 
-/// Whether `path` names a folder to export into: an existing folder, or a path ending with `/`
-/// (or `\` on Windows).
+/// Whether `path` names a folder to export into: an existing folder, or a path ending with a
+/// separator (`/`, and `\` where that is one too).
 pub(crate) fn names_a_folder(path: &Path) -> bool {
     let text = path.as_os_str().to_string_lossy();
-    path.is_dir() || text.ends_with('/') || (cfg!(windows) && text.ends_with('\\'))
+    path.is_dir() || text.ends_with('/') || text.chars().last().is_some_and(std::path::is_separator)
 }
 
 /// The base name of an export into a folder of the scene file `scene_path`: the file's stem

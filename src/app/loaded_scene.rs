@@ -1,49 +1,13 @@
-//! The open scene: the scene on screen with where it came from ([`LoadedScene`]), and what goes
-//! with it ([`OpenScene`]): the load in flight, the file watcher, the error of the last failed
-//! open, and the epoch that makes the same view of a new scene render again.
+//! [`LoadedScene`]: the scene on screen, where it came from (a file, bytes, or the embedded
+//! default) and what the controls derive from it (the file's view, the slider ranges).
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use super::reload::FileWatcher;
-use super::scene_loading::PendingLoad;
 use crate::explore::{SliderRanges, initial_depth_range};
 use crate::render::View;
 use crate::scene::{LoadError, Scene, load_scene_with_progress, parse_scene};
 use crate::{DEFAULT_SCENE_NAME, DEFAULT_SCENE_TEXT};
-
-/// The open scene and what goes with it: the viewer's "scene and loading" feature.
-pub(crate) struct OpenScene {
-    /// The scene on screen.
-    pub(crate) loaded: LoadedScene,
-    /// Incremented whenever another scene is loaded, so the same view of a new scene re-renders.
-    pub(crate) epoch: u64,
-    /// The last failed open or reload's error, shown over the images until dismissed.
-    pub(crate) error: Option<String>,
-    /// A file that failed to open: Reload and the watcher try it again.
-    pub(crate) failed_open: Option<PathBuf>,
-    /// Watches the open file (or the failed one) for changes.
-    pub(crate) watcher: Option<FileWatcher>,
-    /// A load running in the background.
-    pub(crate) loading: Option<PendingLoad>,
-    /// "Save view as scene" is writing over the open scene (its reload keeps the save's message).
-    pub(crate) saving_over: bool,
-}
-
-impl OpenScene {
-    /// `loaded` open, nothing else going on.
-    pub(crate) fn new(loaded: LoadedScene) -> Self {
-        Self {
-            loaded,
-            epoch: 0,
-            error: None,
-            failed_open: None,
-            watcher: None,
-            loading: None,
-            saving_over: false,
-        }
-    }
-}
 
 /// A scene on screen, with its origin and what the controls derive from it.
 #[derive(Debug, Clone)]
