@@ -5,27 +5,6 @@ use super::Disc;
 use super::bins::column_span;
 use crate::geometry::camera::PixelGrid;
 
-/// The disc test at one pixel.
-pub(super) struct PixelHit {
-    /// Squared screen distance from the disc's centre.
-    pub(super) distance_sq: f64,
-    /// t of the front surface (meaningful inside the disc).
-    pub(super) t: f64,
-}
-
-/// Tests pixel column `u` (screen) against `disc` on a row `dv_sq` = (v − c_v)² away.
-#[inline(always)]
-pub(super) fn pixel_hit(disc: &Disc, u: f64, dv_sq: f64) -> PixelHit {
-    let du = u - disc.u;
-    let distance_sq = du * du + dv_sq;
-    let rest = disc.radius_sq - distance_sq;
-    let root = (if rest > 0.0 { rest } else { 0.0 }).sqrt();
-    PixelHit {
-        distance_sq,
-        t: disc.w - root,
-    }
-}
-
 /// One row's outputs.
 pub(super) struct RowOut<'a> {
     pub(super) t: &'a mut [f64],

@@ -18,7 +18,8 @@
 //!
 //! * this module: the projected [`Disc`] and the projection ([`project_discs`])
 //! * [`bins`]: listing each disc in the bands of rows it touches; row and column spans
-//! * [`chord`]: the per-pixel primitives (a disc's test at a pixel, its chord on a row)
+//! * [`hit`]: the pixel–disc test and its tie rule, once for one pixel and for four SIMD lanes
+//! * [`chord`]: a disc's chord on a row, a band's discs gathered
 //! * [`depth_order`]: discs sorted front to back, and the nearest ones that cover the image
 //! * [`coarse_depth`]: discs behind what the nearest ones drew, culled frame-wide
 //! * [`tiles`]: dense scenes drawn front to back tile by tile, each tile stopping where the rest
@@ -31,6 +32,7 @@ mod bins;
 mod chord;
 mod coarse_depth;
 mod depth_order;
+mod hit;
 mod raster;
 mod shade;
 mod strips;
@@ -83,10 +85,9 @@ impl Disc {
     /// t of the front surface at screen (u, v), or `None` outside the disc. Tangent points hit.
     #[inline]
     pub fn hit_t(&self, u: f64, v: f64) -> Option<f64> {
-        let du = u - self.u;
-        let dv = v - self.v;
-        let distance_sq = du * du + dv * dv;
-        (distance_sq <= self.radius_sq).then(|| self.w - (self.radius_sq - distance_sq).sqrt())
+        let (du, dv) = (u - self.u, v - self.v);
+        let hit = hit::test(self, du * du, dv * dv, f64::INFINITY);
+        hit.inside.then_some(hit.t)
     }
 }
 

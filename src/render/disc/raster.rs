@@ -6,11 +6,10 @@ use rayon::prelude::*;
 
 use super::Disc;
 use super::bins::{BAND_ROWS, bin_discs};
-use super::chord::{
-    BandDisc, Chord, Columns, PixelHit, RowOut, chord_on_row, gather_band_discs, pixel_hit,
-};
+use super::chord::{BandDisc, Chord, Columns, RowOut, chord_on_row, gather_band_discs};
 use super::coarse_depth::CoarseDepth;
 use super::depth_order::{Depths, Plan};
+use super::hit::test;
 use super::shade::frame_from_hits;
 use super::tiles::rasterise_discs_in_tiles;
 use crate::geometry::camera::PixelGrid;
@@ -79,9 +78,13 @@ fn cover_chord_exact(disc: &Disc, columns: Columns, chord: Chord, row: &mut RowO
     // Spans of one length (no bounds checks), columns counted in f64.
     let mut x = chord.first as f64;
     for (t_px, sphere_px) in t_span.iter_mut().zip(sphere_span.iter_mut()) {
-        let PixelHit { distance_sq, t } = pixel_hit(disc, columns.u(x), dv_sq);
+        let du = columns.u(x) - disc.u;
         x += 1.0;
-        let closer = distance_sq <= disc.radius_sq && t < *t_px;
+        // In file order a tie never goes to the later disc ([`super::hit::wins_tie`]): only a
+        // nearer disc takes the pixel.
+        let hit = test(disc, du * du, dv_sq, *t_px);
+        let closer = hit.nearer;
+        let t = hit.t;
         *t_px = if closer { t } else { *t_px };
         *sphere_px = if closer { disc.sphere } else { *sphere_px };
     }

@@ -21,7 +21,8 @@ use wide::{f64x4, u32x4};
 
 use super::Disc;
 use super::bins::{BAND_ROWS, bin_by_rows, column_span, rows_of};
-use super::chord::{Columns, PixelHit, pixel_hit};
+use super::chord::Columns;
+use super::hit::{take_ties, takes_pixel, test};
 use crate::geometry::camera::PixelGrid;
 
 /// Columns per tile (a tile is this many columns of a band's rows).
@@ -317,8 +318,6 @@ fn draw_disc_on_whole_tile(
     const _: () = assert!(TILE_COLUMNS == 2 * LANES);
     let disc = &placed.disc;
     let width = pixels.width;
-    let (radius_sq, centre_w) = (f64x4::splat(disc.radius_sq), f64x4::splat(disc.w));
-    let zero = f64x4::ZERO;
     let u = &pixels.u_of_column[tile_column..tile_column + TILE_COLUMNS];
     let centre_u = f64x4::splat(disc.u);
     let du = [
@@ -344,25 +343,18 @@ fn draw_disc_on_whole_tile(
             let lanes = group * LANES..(group + 1) * LANES;
             let o = &t_px[lanes.clone()];
             let t_old = f64x4::new([o[0], o[1], o[2], o[3]]);
-            let distance_sq = du_sq + dv_sq;
-            let inside = distance_sq.simd_le(radius_sq);
-            let t = centre_w - (radius_sq - distance_sq).max(zero).sqrt();
-            let nearer = inside & t.simd_lt(t_old);
-            taken |= nearer.to_bitmask() << lanes.start;
-            tied |= (inside & t.simd_eq(t_old)).to_bitmask() << lanes.start;
-            t_new[lanes.clone()].copy_from_slice(&nearer.select(t, t_old).to_array());
-            t_hit[lanes].copy_from_slice(&t.to_array());
+            let hit = test(disc, du_sq, dv_sq, t_old);
+            taken |= hit.nearer.to_bitmask() << lanes.start;
+            tied |= hit.tied.to_bitmask() << lanes.start;
+            t_new[lanes.clone()].copy_from_slice(&hit.nearer.select(hit.t, t_old).to_array());
+            t_hit[lanes].copy_from_slice(&hit.t.to_array());
         }
-        if tied != 0 {
-            // Ties (rare): the sphere first in the file, with its own t (which differs from an
-            // equal one at most in the sign of a zero).
-            for (lane, &sphere) in sphere_px.iter().enumerate() {
-                if tied >> lane & 1 == 1 && disc.sphere < sphere {
-                    taken |= 1 << lane;
-                    t_new[lane] = t_hit[lane];
-                }
-            }
-        }
+        take_ties(
+            disc.sphere,
+            (tied, |lane| t_hit[lane]),
+            sphere_px,
+            (&mut taken, &mut t_new),
+        );
         t_px.copy_from_slice(&t_new);
         let sphere = u32x4::splat(disc.sphere);
         for (group, sphere_px) in sphere_px.chunks_exact_mut(LANES).enumerate() {
@@ -390,12 +382,7 @@ fn draw_disc(
     let disc = &placed.disc;
     let width = pixels.width;
     let front_t = f64x4::splat(placed.front_t);
-    let (centre_u, radius_sq, centre_w) = (
-        f64x4::splat(disc.u),
-        f64x4::splat(disc.radius_sq),
-        f64x4::splat(disc.w),
-    );
-    let zero = f64x4::ZERO;
+    let centre_u = f64x4::splat(disc.u);
     let whole_groups_end = width / LANES * LANES;
     let mut tests = 0;
     let mut took: TilePixels = 0;
@@ -426,27 +413,20 @@ fn draw_disc(
                 }
                 tests += LANES as u64;
                 let du = f64x4::new([u[0], u[1], u[2], u[3]]) - centre_u;
-                let distance_sq = du * du + dv_sq;
-                let live = distance_sq.simd_le(radius_sq) & open;
-                if !live.any() {
+                let hit = test(disc, du * du, dv_sq, t_old);
+                if !(hit.inside & open).any() {
                     continue;
                 }
-                let t = centre_w - (radius_sq - distance_sq).max(zero).sqrt();
-                let nearer = live & t.simd_lt(t_old);
-                let mut taken = nearer.to_bitmask();
-                let mut t_new = nearer.select(t, t_old).to_array();
-                let tied = (live & t.simd_eq(t_old)).to_bitmask();
-                if tied != 0 {
-                    // Ties (rare): the sphere first in the file (with its own t, which differs
-                    // from an equal one at most in the sign of a zero).
-                    let t = t.to_array();
-                    for (lane, &sphere) in sphere_px.iter().enumerate() {
-                        if tied >> lane & 1 == 1 && disc.sphere < sphere {
-                            taken |= 1 << lane;
-                            t_new[lane] = t[lane];
-                        }
-                    }
-                }
+                // A pixel already nearer than the disc can come is not open: its t is below
+                // the disc's, so neither nearer nor tied holds there.
+                let mut taken = hit.nearer.to_bitmask();
+                let mut t_new = hit.nearer.select(hit.t, t_old).to_array();
+                take_ties(
+                    disc.sphere,
+                    (hit.tied.to_bitmask(), |lane| hit.t.to_array()[lane]),
+                    sphere_px,
+                    (&mut taken, &mut t_new),
+                );
                 if taken == 0 {
                     continue;
                 }
@@ -463,12 +443,10 @@ fn draw_disc(
         }
         for column in first.max(whole_groups_end)..=last {
             tests += 1;
-            let PixelHit { distance_sq, t } =
-                pixel_hit(disc, pixels.u_of_column[column], dv_sq_scalar);
+            let du = pixels.u_of_column[column] - disc.u;
             let (t_px, sphere_px) = (&mut t_row[column], &mut sphere_row[column]);
-            if distance_sq <= disc.radius_sq
-                && (t < *t_px || (t == *t_px && disc.sphere < *sphere_px))
-            {
+            let (takes, t) = takes_pixel(disc, (du * du, dv_sq_scalar), (*t_px, *sphere_px));
+            if takes {
                 *t_px = t;
                 *sphere_px = disc.sphere;
                 took |= 1 << (row * TILE_COLUMNS + column - tile_column);
