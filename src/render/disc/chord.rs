@@ -1,4 +1,4 @@
-//! The per-pixel primitives the rasterisers share: the disc test at a pixel, where a disc's chord
+//! What the rasterisers share besides the hit test ([`super::hit`]): where a disc's chord
 //! lies on a row, and a band's discs gathered once. All in f64.
 
 use super::Disc;
