@@ -102,8 +102,8 @@ pub(super) struct Parser<'a> {
     pub(super) spheres: Vec<Sphere>,
     /// Told the share of the text parsed, every [`SPHERES_PER_REPORT`] spheres.
     pub(super) progress: &'a dyn Fn(f64),
-    /// A run of sphere statements parsed ahead on another thread ([`split`]).
-    pub(super) ahead: Option<Ahead<'a>>,
+    /// Runs of sphere statements parsed ahead on other threads, in file order ([`split`]).
+    pub(super) ahead: std::collections::VecDeque<Ahead<'a>>,
 }
 
 impl<'a> Parser<'a> {
@@ -114,7 +114,7 @@ impl<'a> Parser<'a> {
             material_references: Vec::new(),
             spheres: Vec::new(),
             progress,
-            ahead: None,
+            ahead: std::collections::VecDeque::new(),
         }
     }
 

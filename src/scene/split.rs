@@ -1,14 +1,17 @@
-//! Parsing a big file on two threads. The second half's run of sphere statements (from the first
-//! line there that starts with `Sphere`, through `Sphere` and `MaterialIndex` statements, to the
-//! first other token or error) is parsed ahead on a thread of its own while the main parser reads
-//! the first half; when the main parser reaches that line inside a group it takes the run whole:
-//! the spheres (those before the run's first `MaterialIndex` get the material in effect there),
-//! the `MaterialIndex` references with their lines made absolute, and its place in the file.
+//! Parsing a big file on as many threads as the process may use. The text is cut into as many
+//! chunks as threads, each starting at the first line past its share that starts with `Sphere`;
+//! each chunk's run of sphere statements (through `Sphere` and `MaterialIndex` statements, to the
+//! first other token, error or the chunk's end) is parsed ahead on a thread of its own while the
+//! main parser reads the first chunk. When the main parser reaches a run's first line inside a
+//! group it takes the run whole: the spheres (those before the run's first `MaterialIndex` get the
+//! material in effect there), the `MaterialIndex` references with their lines made absolute, and
+//! its place in the file; then it reads on from where the run stopped.
 //!
-//! Nothing about the result depends on the split: the run stops before any statement it cannot
+//! Nothing about the result depends on the split: a run stops before any statement it cannot
 //! parse, and the main parser reads that one itself (so errors have the same message and place),
 //! and a run the main parser never reaches is dropped.
 
+use std::collections::VecDeque;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::channel;
 
@@ -18,41 +21,78 @@ use super::lexer::Token;
 use super::model::{Scene, Sphere};
 use super::parse::Parser;
 
+#[cfg(test)]
+thread_local! {
+    /// Runs the main parser on this thread has taken (the tests check the chunks were used).
+    static RUNS_TAKEN: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+}
+
 /// Below this many bytes a file is parsed on one thread.
 pub(super) const SPLIT_MIN_BYTES: usize = 4 << 20;
 
-/// Parses `text` with the second half's run of sphere statements parsed ahead on a thread of its
-/// own (files of `split_min_bytes` or more that have such a run; others on this thread).
+/// Each chunk is at least this many bytes (a thread's start costs more than parsing less).
+const CHUNK_MIN_BYTES: usize = 1 << 20;
+
+/// Parses `text` in chunks, one per thread the process may use (files of `split_min_bytes` or
+/// more; others on this thread).
 pub(super) fn parse_text(
     text: &str,
     progress: &dyn Fn(f64),
     split_min_bytes: usize,
 ) -> Result<Scene, ParseError> {
-    let split = (text.len() >= split_min_bytes)
-        .then(|| split_point(text))
-        .flatten();
-    let Some((line_start, token_offset)) = split else {
-        return Parser::new(text, progress).scene();
+    let threads = std::thread::available_parallelism().map_or(1, usize::from);
+    let chunks = if split_min_bytes == 0 {
+        // The fuzz target's path: split however small the text.
+        threads.max(2)
+    } else {
+        threads.min(text.len() / CHUNK_MIN_BYTES)
     };
+    parse_in_chunks(text, progress, split_min_bytes, chunks)
+}
+
+/// Parses `text` cut into `chunks` (at most; see [`split_points`]), the runs of all chunks but
+/// the first parsed ahead on threads of their own, when it has `split_min_bytes` or more.
+pub(super) fn parse_in_chunks(
+    text: &str,
+    progress: &dyn Fn(f64),
+    split_min_bytes: usize,
+    chunks: usize,
+) -> Result<Scene, ParseError> {
+    let starts = if text.len() >= split_min_bytes && chunks >= 2 {
+        split_points(text, chunks)
+    } else {
+        Vec::new()
+    };
+    if starts.is_empty() {
+        return Parser::new(text, progress).scene();
+    }
     let cancelled = AtomicBool::new(false);
     std::thread::scope(|scope| {
-        let (sender, run) = channel();
-        let ahead_text = &text[line_start..];
         let cancelled = &cancelled;
-        let spawned = std::thread::Builder::new()
-            .name("parse-ahead".into())
-            .spawn_scoped(scope, move || {
-                // The main parser may have finished without it; then nobody listens.
-                let _ = sender.send(parse_run(ahead_text, cancelled));
-            });
-        let mut parser = Parser::new(text, progress);
-        if spawned.is_ok() {
-            parser.ahead = Some(Ahead {
+        let mut aheads = VecDeque::new();
+        for (index, &(line_start, token_offset)) in starts.iter().enumerate() {
+            // Each run ends where the next chunk starts: no sphere is parsed twice.
+            let end = starts.get(index + 1).map_or(text.len(), |&(next, _)| next);
+            let ahead_text = &text[line_start..end];
+            let (sender, run) = channel();
+            let spawned = std::thread::Builder::new()
+                .name("parse-ahead".into())
+                .spawn_scoped(scope, move || {
+                    // The main parser may have finished without it; then nobody listens.
+                    let _ = sender.send(parse_run(ahead_text, cancelled));
+                });
+            if spawned.is_err() {
+                // No more threads: the main parser reads the rest itself.
+                break;
+            }
+            aheads.push_back(Ahead {
                 token_offset,
                 line_start,
                 run,
             });
         }
+        let mut parser = Parser::new(text, progress);
+        parser.ahead = aheads;
         let scene = parser.scene();
         cancelled.store(true, Ordering::Relaxed);
         scene
@@ -63,14 +103,28 @@ impl<'a> Parser<'a> {
     /// Takes the run parsed ahead if `token` (a `Sphere` inside a group) is where it starts;
     /// returns the spheres it added (0: parse the statement here).
     pub(super) fn take_run_at(&mut self, token: &Token<'a>) -> u64 {
-        let Some(ahead) = &self.ahead else { return 0 };
-        if self.lexer.offset_of(token) != ahead.token_offset {
+        let offset = self.lexer.offset_of(token);
+        // Runs this parser went past without reaching them at a sphere inside a group are
+        // dropped.
+        while self
+            .ahead
+            .front()
+            .is_some_and(|ahead| ahead.token_offset < offset)
+        {
+            self.ahead.pop_front();
+        }
+        if self
+            .ahead
+            .front()
+            .is_none_or(|ahead| ahead.token_offset != offset)
+        {
             return 0;
         }
+        let Some(ahead) = self.ahead.pop_front() else {
+            return 0;
+        };
         let line_start = ahead.line_start;
-        let run = ahead.run.recv();
-        self.ahead = None;
-        let Ok(run) = run else { return 0 };
+        let Ok(run) = ahead.run.recv() else { return 0 };
         if run.spheres.is_empty() {
             return 0;
         }
@@ -98,6 +152,8 @@ impl<'a> Parser<'a> {
                 };
                 (index, at)
             }));
+        #[cfg(test)]
+        RUNS_TAKEN.with(|taken| taken.set(taken.get() + 1));
         if let Some(material) = run.material_after {
             self.current_material = material;
         }
@@ -107,12 +163,35 @@ impl<'a> Parser<'a> {
     }
 }
 
+/// Where the chunks after the first start: for each k of 1 … `chunks` − 1, the first line past
+/// k/`chunks` of `text` whose first token is `Sphere` (fewer where two shares find the same line,
+/// or none is found).
+pub(super) fn split_points(text: &str, chunks: usize) -> Vec<(usize, usize)> {
+    let mut points: Vec<(usize, usize)> = Vec::new();
+    for k in 1..chunks {
+        let from = text.len() / chunks * k;
+        let from = from.max(points.last().map_or(0, |&(line_start, _)| line_start + 1));
+        match split_point_from(text, from) {
+            Some(point) => points.push(point),
+            None => break,
+        }
+    }
+    points
+}
+
 /// The start of the first line in the second half of `text` whose first token is `Sphere`:
 /// (line start, token offset).
+#[cfg(test)]
 pub(super) fn split_point(text: &str) -> Option<(usize, usize)> {
+    split_point_from(text, text.len() / 2)
+}
+
+/// The start of the first line after byte `from` of `text` whose first token is `Sphere`: (line
+/// start, token offset).
+fn split_point_from(text: &str, from: usize) -> Option<(usize, usize)> {
     let bytes = text.as_bytes();
-    let mut line_start =
-        bytes[text.len() / 2..].iter().position(|&b| b == b'\n')? + text.len() / 2 + 1;
+    let from = from.min(bytes.len());
+    let mut line_start = bytes[from..].iter().position(|&b| b == b'\n')? + from + 1;
     while line_start < bytes.len() {
         let indent = bytes[line_start..]
             .iter()
@@ -227,6 +306,38 @@ mod tests {
         let split = parse_scene(&text).unwrap();
         assert_eq!(split, sequential(&text).unwrap());
         assert_eq!(split.spheres.len(), 120_000);
+    }
+
+    #[test]
+    fn any_number_of_chunks_gives_the_one_thread_scene_and_errors() {
+        let text = big_text(60_000);
+        let one_thread = sequential(&text).unwrap();
+        for chunks in [2, 3, 5, 8, 16] {
+            let points = split_points(&text, chunks);
+            assert_eq!(points.len(), chunks - 1, "{chunks} chunks");
+            assert!(points.windows(2).all(|pair| pair[0].0 < pair[1].0));
+            RUNS_TAKEN.with(|taken| taken.set(0));
+            let scene = parse_in_chunks(&text, &|_| {}, 0, chunks).unwrap();
+            assert_eq!(scene, one_thread, "{chunks} chunks");
+            // Every chunk after the first was parsed ahead and taken whole.
+            assert_eq!(
+                RUNS_TAKEN.with(|taken| taken.get()),
+                chunks - 1,
+                "{chunks} chunks"
+            );
+        }
+        // An error in each eighth of the file: the one a single thread finds.
+        for eighth in 1..8 {
+            let at = text.len() / 8 * eighth + 100;
+            let line = at + text[at..].find("radius 0.").unwrap();
+            let mut broken = text.clone();
+            broken.replace_range(line..line + 9, "radius -0.");
+            let expected = sequential(&broken).unwrap_err();
+            for chunks in [3, 8] {
+                let split = parse_in_chunks(&broken, &|_| {}, 0, chunks).unwrap_err();
+                assert_eq!(split, expected, "eighth {eighth}, {chunks} chunks");
+            }
+        }
     }
 
     #[test]
