@@ -321,7 +321,7 @@ mod tests {
             assert_eq!(scene, one_thread, "{chunks} chunks");
             // Every chunk after the first was parsed ahead and taken whole.
             assert_eq!(
-                RUNS_TAKEN.with(|taken| taken.get()),
+                RUNS_TAKEN.with(std::cell::Cell::get),
                 chunks - 1,
                 "{chunks} chunks"
             );
