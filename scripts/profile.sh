@@ -8,6 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-docs/profile.md}
 command -v perf >/dev/null || { echo "profile.sh needs perf (linux-perf)" >&2; exit 1; }
+cargo build --release --quiet
 cargo build --release --quiet --example viewer_frame --example generate
 bin=target/release
 data=target/scaling

@@ -1,6 +1,7 @@
 //! Settings saved by an earlier viewer still load: `tests/regressions/viewer-settings-3a2a41d.ron`
 //! is what the viewer at revision 3a2a41d (before its state was regrouped by feature) wrote to
-//! eframe's storage under its key, with every setting moved off its default. The viewer starts
+//! eframe's storage under its key, with every setting moved off its default (the few its writer
+//! was not given were then edited by hand, in the same notation). The viewer starts
 //! from it as it would after a restart, and everything comes back; what it saves again loads the
 //! same.
 #![cfg(feature = "gui")]
@@ -14,6 +15,7 @@ use egui_kittest::Harness;
 use raytracer::app::ViewerApp;
 use raytracer::app::settings::{ExportFormat, Settings};
 use raytracer::cli::ViewerRequest;
+use raytracer::export::ExtraDepth;
 use raytracer::render::depth_map::DepthColourMap;
 use raytracer::render::{Filter, Sampler};
 
@@ -68,6 +70,13 @@ fn settings_saved_by_an_earlier_viewer_still_load() {
     assert_eq!(settings.export.path, "shots/");
     assert_eq!(settings.export.format, ExportFormat::Tga);
     assert!(!settings.export.legend);
+    assert!(!settings.export.side_by_side);
+    assert!(!settings.export.displayed_size);
+    assert_eq!(settings.export.size_px, [640, 480]);
+    assert_eq!(settings.export.extra_depth, ExtraDepth::Png16);
+    assert_eq!(settings.export.scene_path, "mine.txt");
+    assert!(!settings.depth.mark_no_hit);
+    assert!(settings.depth.log_counts);
     let sampling = settings.quality.sampling.expect("16 jittered samples");
     assert_eq!(sampling.samples, 16);
     assert_eq!(sampling.sampler, Sampler::Jittered);

@@ -165,16 +165,24 @@ impl ViewerApp {
         Some((plan, view))
     }
 
-    /// Why an export to `base_path` cannot start, if it cannot.
-    fn export_problem(&self, base_path: &Path) -> Option<String> {
+    /// Why an export at the chosen size cannot start, if it cannot (asked before anything is
+    /// offered or created).
+    pub(super) fn export_size_problem(&self) -> Option<String> {
         let export = &self.settings.export;
         if !export.displayed_size
             && let Err(error) = check_image_size(export.size_px[0], export.size_px[1])
         {
             return Some(format!("export: {error}"));
         }
-        let names_a_folder = base_path.as_os_str().to_string_lossy().ends_with('/');
-        if names_a_folder && !base_path.is_dir() {
+        None
+    }
+
+    /// Why an export to `base_path` cannot start, if it cannot.
+    fn export_problem(&self, base_path: &Path) -> Option<String> {
+        if let Some(problem) = self.export_size_problem() {
+            return Some(problem);
+        }
+        if crate::export::names_a_folder(base_path) && !base_path.is_dir() {
             return Some(format!(
                 "export: the folder {} does not exist",
                 base_path.display()

@@ -46,6 +46,14 @@ impl ViewerApp {
 
     /// Carries out a write action now if it replaces nothing; otherwise asks first.
     pub(super) fn write_or_ask(&mut self, action: Action) {
+        // An export that cannot start is refused before anything is offered or created (the
+        // typed size is kept valid by its field; this guards the state set another way).
+        if let Action::ExportTo(_) = &action
+            && let Some(problem) = self.export_size_problem()
+        {
+            self.status = Some(super::status::Status::error(problem));
+            return;
+        }
         // In a browser page files are downloads: there are no folders to create.
         #[cfg(not(target_arch = "wasm32"))]
         if let Action::ExportTo(base) = &action

@@ -42,7 +42,8 @@ pub(crate) struct Panels {
     pub(crate) drawer_open: bool,
 }
 
-/// Below this window width the controls are a drawer over the images, not a side panel.
+/// Below this window width the controls are closed at first and the toolbar's Controls opens
+/// them: beside the images from [`PUSH_ASIDE_FROM_POINTS`], as a drawer over them below that.
 pub(crate) const DRAWER_BELOW_POINTS: f32 = 900.0;
 
 /// How far below the toolbar a scene's error floats: past the images' captions (the depth
@@ -58,8 +59,8 @@ pub(crate) fn panel_points(window_width: f32) -> f32 {
     (0.25 * window_width).clamp(PANEL_POINTS, 440.0)
 }
 
-/// From this window width down to [`DRAWER_BELOW_POINTS`] the opened controls push the images
-/// aside (they shrink, nothing is covered); below it they are a drawer over the images.
+/// From this window width up to [`DRAWER_BELOW_POINTS`] the opened controls push the images aside
+/// (they shrink, nothing is covered); below it they are a drawer over the images.
 pub(crate) const PUSH_ASIDE_FROM_POINTS: f32 = 640.0;
 
 impl ViewerApp {

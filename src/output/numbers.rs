@@ -36,13 +36,17 @@ pub(crate) fn decimals_for_span(span: f64) -> usize {
 /// thousands grouped ("10.301", "16.037"); [`short_number`] for ends of 1e9 and more.
 pub(crate) fn range_ends(low: f64, high: f64) -> [String; 2] {
     let decimals = decimals_for_span(high - low);
-    [low, high].map(|value| {
-        if value.is_finite() && value.abs() < 1e9 {
-            grouped(value, decimals)
-        } else {
-            short_number(value)
-        }
-    })
+    [low, high].map(|value| with_decimals(value, decimals))
+}
+
+/// `value` with `decimals` decimals and thousands grouped; [`short_number`] from 1e9 up (and
+/// for what is not a finite number).
+pub(crate) fn with_decimals(value: f64, decimals: usize) -> String {
+    if value.is_finite() && value.abs() < 1e9 {
+        grouped(value, decimals)
+    } else {
+        short_number(value)
+    }
 }
 
 /// `value` with `decimals` decimals and its thousands grouped with commas.
@@ -102,6 +106,7 @@ mod tests {
         assert_eq!(range_ends(540.954387, 1312.918088), ["541.0", "1,312.9"]);
         assert_eq!(range_ends(9.0, 10.0), ["9.000", "10.000"]);
         assert_eq!(range_ends(-2.5, 2.5), ["-2.500", "2.500"]);
+        assert_eq!(with_decimals(1e200, 3), "1.0000e200");
         assert_eq!(decimals_for_span(0.0), 6);
         assert_eq!(decimals_for_span(1e-9), 6);
         assert_eq!(decimals_for_span(5000.0), 0);

@@ -164,8 +164,8 @@ impl<'a> Parser<'a> {
 }
 
 /// Where the chunks after the first start: for each k of 1 … `chunks` − 1, the first line past
-/// k/`chunks` of `text` whose first token is `Sphere` (fewer where two shares find the same line,
-/// or none is found).
+/// k/`chunks` of `text` whose first token is `Sphere`, each after the one before (fewer where none
+/// is found).
 pub(super) fn split_points(text: &str, chunks: usize) -> Vec<(usize, usize)> {
     let mut points: Vec<(usize, usize)> = Vec::new();
     for k in 1..chunks {

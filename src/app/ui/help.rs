@@ -76,11 +76,16 @@ const POINTER_ROWS: usize = 9;
 /// so that it fits a 900-point-high window without scrolling.
 const TWO_COLUMNS_FROM_POINTS: f32 = 1000.0;
 
+/// ... and from this window height: the two columns are not scrolled, so a lower window gets the
+/// one scrolled column.
+const TWO_COLUMNS_FROM_HEIGHT_POINTS: f32 = 560.0;
+
 /// The overlay; returns whether it stays open.
 pub(crate) fn help_ui(ctx: &egui::Context) -> bool {
     let mut open = true;
     let screen = ctx.content_rect();
-    let two_columns = screen.width() >= TWO_COLUMNS_FROM_POINTS;
+    let two_columns = screen.width() >= TWO_COLUMNS_FROM_POINTS
+        && screen.height() >= TWO_COLUMNS_FROM_HEIGHT_POINTS;
     let width = if two_columns {
         (screen.width() - 80.0).min(1100.0)
     } else {

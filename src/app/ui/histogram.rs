@@ -9,7 +9,7 @@
 use egui::{Align2, Color32, CursorIcon, FontId, Pos2, Rect, Sense, Stroke, Ui, Vec2};
 
 use crate::explore::depth_stats::DepthHistogram;
-use crate::output::numbers::{decimals_for_span, grouped, range_ends};
+use crate::output::numbers::{decimals_for_span, grouped, range_ends, with_decimals};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 
 /// Height of the legend strip under the bars, in points.
@@ -401,7 +401,7 @@ fn paint_hover_readout(
     let decimals = decimals_for_span(layout.axis_high - layout.axis_low);
     let text = format!(
         "t {} · {} px",
-        grouped(t, decimals),
+        with_decimals(t, decimals),
         grouped(count as f64, 0)
     );
     painter.line_segment(

@@ -191,7 +191,7 @@ mod tests {
         ];
         let t_olds = [10.0 - 2f64.sqrt(), 9.0, 10.0, f64::INFINITY, -0.0, f64::NAN];
         for &dv_sq in &values {
-            for du in values.chunks(4).filter(|c| c.len() == 4) {
+            for du in values.windows(4) {
                 for &t_old in &t_olds {
                     let du_sq = [du[0], du[1], du[2], du[3]];
                     let lanes = test(
