@@ -226,8 +226,9 @@ test("settings survive a reload of the page in the browser's storage", async () 
   const { page, context } = await openViewer(browser, site.url);
   await settled(page);
   assert.equal(await page.evaluate(() => window.raytracer.colour_map()), "Grey");
-  // The depth section's "turbo" radio button, where the 1280×720 page lays it out.
-  await page.mouse.click(141, 258);
+  // The depth section's "turbo" radio button, where the 1280×720 page lays it out (below the
+  // view's sliders, each with its name and value on a line above it: docs/screenshot.png).
+  await page.mouse.click(141, 396);
   await page.waitForFunction(() => window.raytracer.colour_map() === "Turbo", null, { timeout: 10_000 });
   await page.reload();
   await page.waitForFunction(() => window.raytracer !== undefined, null, { timeout: 60_000 });
