@@ -7,18 +7,25 @@
 #   15, in one process: dense 100,000 and 1,000,000 spheres and a random million;
 # * whole command, cold: the course's command (`-output c.tga -depth … d.tga`) at 1024², its
 #   `-stats` render_ms, median of 5 fresh processes: dense 100k, dense 1M, scene1_02;
-# * parse of the random million (`examples/parse_time`'s parse, median of 5).
+# * parse of the random million (`examples/parse_time`'s parse, median of 5);
+# * where the warm frame's time goes, phase by phase (`examples/frame_phases`, median of 9), for
+#   the three scenes, and the cold (first) frame of the dense million.
 # The scenes are made once by `examples/generate` under target/scaling/. Speed-ups are ratios
 # within one run (machines are noisy; compare nothing across runs). About 10 minutes on 2 cores.
+# SCALING_BIN=DIR runs binaries built before (DIR/raytracer, DIR/examples/…) and builds nothing,
+# for a machine without the toolchain.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 max=${1:-$(nproc)}
 output=${2:-docs/scaling.md}
 plot="${output%.md}.svg"
 
-cargo build --release --quiet
-cargo build --release --quiet --example viewer_frame --example parse_time --example generate
-bin=target/release
+bin=${SCALING_BIN:-target/release}
+if [ -z "${SCALING_BIN:-}" ]; then
+  cargo build --release --quiet
+  cargo build --release --quiet --example viewer_frame --example parse_time --example generate \
+    --example frame_phases
+fi
 data=target/scaling
 mkdir -p "$data"
 [ -f "$data/dense_1e5.txt" ] || "$bin/examples/generate" --dense 100000 "$data/dense_1e5.txt"
@@ -30,6 +37,18 @@ trap 'rm -rf "$work"' EXIT
 cores=()
 for c in 1 2 4 8 16 32 64; do [ "$c" -le "$max" ] && cores+=("$c"); done
 [ "${cores[-1]}" -ne "$max" ] && cores+=("$max")
+last=${cores[-1]}
+
+# Runs a command on the first C cores: `pinned C COMMAND…` (taskset, or Python's affinity call
+# where util-linux is missing).
+pinned() {
+  local c=$1; shift
+  if command -v taskset > /dev/null; then
+    taskset -c "0-$((c - 1))" "$@"
+  else
+    python3 -c 'import os, sys; os.sched_setaffinity(0, range(int(sys.argv[1]))); os.execv(sys.argv[2], sys.argv[2:])' "$c" "$@"
+  fi
+}
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 
@@ -37,7 +56,7 @@ median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 command_ms() {
   local c=$1 scene=$2 low=$3 high=$4
   for _ in 1 2 3 4 5; do
-    taskset -c "0-$((c - 1))" "$bin/raytracer" -input "$scene" -size 1024 1024 \
+    pinned "$c" "$bin/raytracer" -input "$scene" -size 1024 1024 \
       -output "$work/c.tga" -depth "$low" "$high" "$work/d.tga" -stats |
       awk '/^render_ms:/ { print $2 }'
     rm -f "$work/c.tga" "$work/d.tga"
@@ -51,7 +70,7 @@ rows=("warm viewer frame, dense 100k, ms" "warm viewer frame, dense 1M, ms"
 declare -A value
 for c in "${cores[@]}"; do
   echo "== $c core(s)" >&2
-  pin=(taskset -c "0-$((c - 1))")
+  pin=(pinned "$c")
   value[0,$c]=$("${pin[@]}" "$bin/examples/viewer_frame" "$data/dense_1e5.txt" 1024 1024 15)
   value[1,$c]=$("${pin[@]}" "$bin/examples/viewer_frame" "$data/dense_1e6.txt" 1024 1024 15)
   value[2,$c]=$("${pin[@]}" "$bin/examples/viewer_frame" "$data/random_1e6.txt" 1024 1024 15)
@@ -59,10 +78,30 @@ for c in "${cores[@]}"; do
   value[4,$c]=$(command_ms "$c" "$data/dense_1e6.txt" 0 100)
   value[5,$c]=$(command_ms "$c" scenes/scene1_02.txt 8 12)
   value[6,$c]=$("${pin[@]}" "$bin/examples/parse_time" "$data/random_1e6.txt" 5 | awk '{ print $2 }')
+  for scene in dense_1e5 dense_1e6 random_1e6; do
+    "${pin[@]}" "$bin/examples/frame_phases" "$data/$scene.txt" 1024 1024 9 > "$work/phases_${scene}_$c"
+  done
 done
 
+# A phase table: one row per phase (first seen at 1 core), one column per core count; FIELD 2 is
+# the cold frame, 3 the warm median.
+phase_table() {
+  local scene=$1 field=$2
+  printf '| phase |'; for c in "${cores[@]}"; do printf ' %s |' "$c"; done; printf ' %s vs 1 |\n' "$last"
+  printf '|---|'; for _ in "${cores[@]}"; do printf -- '---|'; done; printf -- '---|\n'
+  cut -f1 "$work/phases_${scene}_1" | while read -r phase; do
+    printf '| %s |' "$phase"
+    for c in "${cores[@]}"; do
+      awk -F'\t' -v p="$phase" -v f="$field" '$1 == p { printf " %s |", $f; found = 1 }
+        END { if (!found) printf " – |" }' "$work/phases_${scene}_$c"
+    done
+    awk -F'\t' -v p="$phase" -v f="$field" '$1 == p { print $f }' "$work/phases_${scene}_1" \
+      "$work/phases_${scene}_$last" | paste -sd' ' |
+      awk '{ if (NF == 2 && $2 > 0) printf " %.2f× |\n", $1 / $2; else print " – |" }'
+  done
+}
+
 cpu=$(awk -F': ' '/^model name/ { print $2; exit }' /proc/cpuinfo)
-last=${cores[-1]}
 {
   echo "# Scaling with cores"
   echo
@@ -79,6 +118,26 @@ last=${cores[-1]}
   done
   echo
   echo "![speed-up against cores]($(basename "$plot"))"
+  echo
+  echo "## Where the frame's time goes"
+  echo
+  echo "The viewer's frame phase by phase (\`examples/frame_phases\`, \`raytracer::render::phases\`),"
+  echo "milliseconds at 1024². A phase that stays flat as cores are added is a serial part. The"
+  echo "histogram and the textures run at the same time, so the phases can add up to more than the"
+  echo "frame; a dense frame's binning and drawing are summed over its passes."
+  for scene in dense_1e6 dense_1e5 random_1e6; do
+    case $scene in
+      dense_1e6) name="dense 1M" ;; dense_1e5) name="dense 100k" ;; random_1e6) name="random 1M" ;;
+    esac
+    echo
+    echo "### $name, warm (median of 9)"
+    echo
+    phase_table "$scene" 3
+  done
+  echo
+  echo "### dense 1M, cold (the first frame in a fresh process)"
+  echo
+  phase_table dense_1e6 2
 } > "$output"
 
 # The plot: each row's speed-up (1-core time over c-core time) against cores, with the ideal line.

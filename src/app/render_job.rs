@@ -9,6 +9,7 @@ use rayon::prelude::*;
 
 use crate::explore::depth_stats::DepthHistogram;
 use crate::render::depth_map::DepthColourMap;
+use crate::render::phases::time;
 use crate::render::worker::{RenderResult, RenderWorker};
 use crate::render::{Frame, Quality, View, ViewError, render_with};
 use crate::scene::Scene;
@@ -74,8 +75,8 @@ pub fn prepare_frame(job: &ViewerJob) -> JobOutput {
     let size = [frame.width_px as usize, frame.height_px as usize];
     // The histogram alongside the two textures.
     let (histogram, (colour, depth)) = rayon::join(
-        || DepthHistogram::new(&frame, HISTOGRAM_BINS),
-        || textures(job, &frame, size),
+        || time("histogram", || DepthHistogram::new(&frame, HISTOGRAM_BINS)),
+        || time("textures", || textures(job, &frame, size)),
     );
     Ok(PreparedFrame {
         frame: Arc::new(frame),

@@ -9,11 +9,13 @@
 //! * [`depth_map`]: t → grey and colour maps, 8- and 16-bit quantisation.
 //! * [`rng`]: the seeded generator behind random sample positions.
 //! * [`worker`]: a background worker for interactive use.
+//! * [`phases`]: a frame's phases timed, to see where its time goes.
 
 pub mod depth_map;
 pub mod disc;
 mod frame;
 pub mod memory;
+pub mod phases;
 pub mod rng;
 pub(crate) mod sampling;
 mod view;

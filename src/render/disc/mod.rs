@@ -107,6 +107,11 @@ pub(crate) fn project_discs_with_depths(
     view: &View,
     basis: &CameraBasis,
 ) -> (Vec<Disc>, Depths) {
+    crate::render::phases::time("project", || project_in_parallel(scene, view, basis))
+}
+
+/// [`project_discs_with_depths`]'s work, chunk by chunk in parallel.
+fn project_in_parallel(scene: &Scene, view: &View, basis: &CameraBasis) -> (Vec<Disc>, Depths) {
     use rayon::prelude::*;
     let mut discs = vec![Disc::NONE; scene.spheres.len()];
     let grid = view.grid();

@@ -13,6 +13,7 @@ use super::hit::test;
 use super::shade::frame_from_hits;
 use super::tiles::rasterise_discs_in_tiles;
 use crate::geometry::camera::PixelGrid;
+use crate::render::phases::time;
 use crate::render::{Frame, NO_HIT, View};
 use crate::scene::Scene;
 
@@ -110,9 +111,9 @@ pub(crate) fn rasterise_frame(
     discs: &[Disc],
     depths: &Depths,
 ) -> Frame {
-    let plan = Plan::of(discs, depths, grid, FIRST_PASS_LAYERS);
+    let plan = time("plan", || Plan::of(discs, depths, grid, FIRST_PASS_LAYERS));
     let (t, sphere, disc_tests) = rasterise_hits(grid, discs, plan);
-    let mut frame = frame_from_hits(scene, view, t, sphere);
+    let mut frame = time("shade", || frame_from_hits(scene, view, t, sphere));
     frame.disc_tests = disc_tests;
     frame
 }
@@ -126,8 +127,11 @@ pub(super) fn rasterise_hits(
 ) -> (Vec<f64>, Vec<u32>, u64) {
     let pixels = grid.width_px as usize * grid.height_px as usize;
     // "No hit" everywhere, written in parallel (a `vec![…; n]` fills serially).
-    let mut t: Vec<f64> = (0..pixels).into_par_iter().map(|_| f64::INFINITY).collect();
-    let mut sphere: Vec<u32> = (0..pixels).into_par_iter().map(|_| NO_HIT).collect();
+    let (mut t, mut sphere) = time("clear", || {
+        let t: Vec<f64> = (0..pixels).into_par_iter().map(|_| f64::INFINITY).collect();
+        let sphere: Vec<u32> = (0..pixels).into_par_iter().map(|_| NO_HIT).collect();
+        (t, sphere)
+    });
     let mut out = (t.as_mut_slice(), sphere.as_mut_slice());
     let disc_tests = match plan {
         Plan::FileOrder => rasterise_discs(discs, grid, Order::File, &mut out),
@@ -138,8 +142,8 @@ pub(super) fn rasterise_hits(
                 if passes.is_empty(pass) {
                     continue;
                 }
-                let drawn = (pass > 0).then(|| CoarseDepth::of(out.0, grid));
-                let discs = passes.take(pass, drawn.as_ref());
+                let drawn = (pass > 0).then(|| time("coarse depth", || CoarseDepth::of(out.0, grid)));
+                let discs = time("pass discs", || passes.take(pass, drawn.as_ref()));
                 disc_tests += rasterise_discs(&discs, grid, Order::FrontToBack, &mut out);
             }
             disc_tests
@@ -170,8 +174,9 @@ fn rasterise_discs(
         return rasterise_discs_in_tiles(discs, grid, (t, sphere));
     }
     let width = grid.width_px as usize;
-    let bands = bin_discs(discs, grid);
-    t.par_chunks_mut(width * BAND_ROWS)
+    let bands = time("bin", || bin_discs(discs, grid));
+    time("draw", || {
+        t.par_chunks_mut(width * BAND_ROWS)
         .zip(sphere.par_chunks_mut(width * BAND_ROWS))
         .enumerate()
         .map(|(band, out)| {
@@ -179,4 +184,5 @@ fn rasterise_discs(
             rasterise_band(discs, bands.band(band), grid, first_row, out)
         })
         .sum()
+    })
 }

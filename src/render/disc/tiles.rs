@@ -20,10 +20,11 @@ use rayon::prelude::*;
 use wide::{f64x4, u32x4};
 
 use super::Disc;
-use super::bins::{BAND_ROWS, bin_by_rows, column_span, rows_of};
+use super::bins::{BAND_ROWS, Bands, bin_by_rows, column_span, rows_of};
 use super::chord::Columns;
 use super::hit::{take_ties, takes_pixel, test};
 use crate::geometry::camera::PixelGrid;
+use crate::render::phases::time;
 
 /// Columns per tile (a tile is this many columns of a band's rows).
 const TILE_COLUMNS: usize = 8;
@@ -104,18 +105,33 @@ pub(super) fn rasterise_discs_in_tiles(
     grid: &PixelGrid,
     (t, sphere): (&mut [f64], &mut [u32]),
 ) -> u64 {
-    let width = grid.width_px as usize;
-    let placed: Vec<Placed> = discs
-        .par_iter()
-        .filter_map(|disc| Placed::of(disc, grid))
-        .collect();
-    let bands = bin_by_rows(&placed, grid, |placed| {
-        Some((placed.rows.0 as usize, placed.rows.1 as usize))
+    let (placed, bands) = time("bin", || {
+        let placed: Vec<Placed> = discs
+            .par_iter()
+            .filter_map(|disc| Placed::of(disc, grid))
+            .collect();
+        let bands = bin_by_rows(&placed, grid, |placed| {
+            Some((placed.rows.0 as usize, placed.rows.1 as usize))
+        });
+        (placed, bands)
     });
     let columns = Columns::of(grid);
     let u_of_column: Vec<f64> = (0..grid.width_px)
         .map(|x| columns.u(f64::from(x)))
         .collect();
+    time("draw", || draw_bands(&placed, &bands, grid, (t, sphere), &u_of_column))
+}
+
+/// Draws each band's listed discs into its rows of `t` and `sphere`, bands in parallel. Returns the
+/// pixel–disc tests made.
+fn draw_bands(
+    placed: &[Placed],
+    bands: &Bands,
+    grid: &PixelGrid,
+    (t, sphere): (&mut [f64], &mut [u32]),
+    u_of_column: &[f64],
+) -> u64 {
+    let width = grid.width_px as usize;
     t.par_chunks_mut(width * BAND_ROWS)
         .zip(sphere.par_chunks_mut(width * BAND_ROWS))
         .enumerate()
@@ -130,7 +146,7 @@ pub(super) fn rasterise_discs_in_tiles(
                 t,
                 sphere,
                 width,
-                u_of_column: &u_of_column,
+                u_of_column,
                 v_of_row: Vec::new(),
             };
             rasterise_band(&band_discs, grid, band * BAND_ROWS, pixels)

@@ -1,0 +1,79 @@
+//! Where the viewer's frame spends its time: each phase of `prepare_frame` (projection, the plan,
+//! clearing, binning, drawing, shading, histogram, textures; [`raytracer::render::phases`]) for a
+//! scene file's own camera at WIDTH×HEIGHT pixels. The first frame in the process is the cold one
+//! (fresh pages, threads starting); the warm figure is the median of the next RUNS frames, each
+//! after GAP_MS of idling when given.
+//! `scripts/scaling.sh` runs it pinned to 1, 2, 4, … cores, to show which phases stop scaling:
+//!
+//! ```sh
+//! cargo run --release --example frame_phases -- SCENE WIDTH HEIGHT [RUNS [GAP_MS]]
+//! ```
+//!
+//! Prints one line per phase, `name<TAB>cold ms<TAB>warm ms`, then the whole frame's as `frame`.
+//! A phase run more than once in a frame (a pass's binning and drawing) is summed over the frame;
+//! the histogram and the textures run at the same time, so the phases can add up to more than the
+//! frame.
+
+#[cfg(all(feature = "mimalloc", not(target_os = "macos")))]
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
+#[path = "support/frame_args.rs"]
+mod frame_args;
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use raytracer::app::render_job::{ViewerJob, prepare_frame};
+use raytracer::explore::initial_depth_range;
+use raytracer::render::phases;
+
+/// One frame's phases, summed by name in the order first seen, with the whole frame last.
+type FramePhases = Vec<(&'static str, f64)>;
+
+fn main() {
+    let frame_args::FrameArgs {
+        scene,
+        mut view,
+        runs,
+        gap,
+    } = frame_args::frame_args("frame_phases SCENE WIDTH HEIGHT [RUNS [GAP_MS]]", 15);
+    view.depth_range = initial_depth_range(&scene, &view);
+    let job = ViewerJob {
+        scene: Arc::new(scene),
+        view,
+        scene_epoch: 0,
+        quality: Default::default(),
+        depth_style: Default::default(),
+    };
+    let frame = || {
+        let started = Instant::now();
+        let (output, recorded) = phases::measure(|| prepare_frame(&job));
+        let frame_ms = started.elapsed().as_secs_f64() * 1e3;
+        std::hint::black_box(output.expect("renders"));
+        let mut summed: FramePhases = Vec::new();
+        for (name, ms) in recorded {
+            match summed.iter_mut().find(|(seen, _)| *seen == name) {
+                Some((_, total)) => *total += ms,
+                None => summed.push((name, ms)),
+            }
+        }
+        summed.push(("frame", frame_ms));
+        summed
+    };
+    let cold = frame();
+    let warm: Vec<FramePhases> = (0..runs.max(1))
+        .map(|_| {
+            std::thread::sleep(gap);
+            frame()
+        })
+        .collect();
+    for (name, cold_ms) in cold {
+        let mut times: Vec<f64> = warm
+            .iter()
+            .map(|phases| phases.iter().find(|(seen, _)| *seen == name).map_or(0.0, |p| p.1))
+            .collect();
+        times.sort_by(f64::total_cmp);
+        println!("{name}\t{cold_ms:.2}\t{:.2}", times[times.len() / 2]);
+    }
+}
