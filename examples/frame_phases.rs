@@ -71,7 +71,12 @@ fn main() {
     for (name, cold_ms) in cold {
         let mut times: Vec<f64> = warm
             .iter()
-            .map(|phases| phases.iter().find(|(seen, _)| *seen == name).map_or(0.0, |p| p.1))
+            .map(|phases| {
+                phases
+                    .iter()
+                    .find(|(seen, _)| *seen == name)
+                    .map_or(0.0, |p| p.1)
+            })
             .collect();
         times.sort_by(f64::total_cmp);
         println!("{name}\t{cold_ms:.2}\t{:.2}", times[times.len() / 2]);

@@ -321,11 +321,28 @@ fn tangent_pixel_hits_and_the_next_one_misses() {
 
 #[test]
 fn rendering_is_deterministic_across_thread_counts() {
-    // 200 spheres; and 200,000, where the discs are binned in chunks whose size depends on the
-    // thread count (16,384 at least, a quarter of the discs per thread at most), so the bands'
-    // lists are put together from different chunks on 1, 2 and 5 threads.
-    for (count, size) in [(200, (257, 129)), (200_000, (160, 96))] {
-        let scene = raytracer::oracle::random_scene(7, count);
+    // 200 spheres; 200,000, where the discs are binned in chunks whose size depends on the thread
+    // count (4,096 at least, a quarter of the discs per thread at most), so the bands' lists are
+    // put together from different chunks; and 200,000 dense ones, drawn front to back in passes
+    // whose discs are sorted by depth in as many groups as there are threads.
+    let scenes = [
+        (
+            "200 random",
+            raytracer::oracle::random_scene(7, 200),
+            (257, 129),
+        ),
+        (
+            "200,000 random",
+            raytracer::oracle::random_scene(7, 200_000),
+            (160, 96),
+        ),
+        (
+            "200,000 dense",
+            raytracer::oracle::dense_scene(7, 200_000),
+            (160, 96),
+        ),
+    ];
+    for (name, scene, size) in scenes {
         let view = view_of(&scene, size.0, size.1);
         let with_threads = |threads| {
             rayon::ThreadPoolBuilder::new()
@@ -335,14 +352,12 @@ fn rendering_is_deterministic_across_thread_counts() {
                 .install(|| render(&scene, &view).unwrap())
         };
         let one = with_threads(1);
-        assert!(
-            one == with_threads(2),
-            "{count} spheres: 1 and 2 threads differ"
-        );
-        assert!(
-            one == with_threads(5),
-            "{count} spheres: 1 and 5 threads differ"
-        );
+        for threads in [2, 5, 16] {
+            assert!(
+                one == with_threads(threads),
+                "{name}: 1 and {threads} threads differ"
+            );
+        }
     }
 }
 

@@ -45,5 +45,7 @@ pub(crate) fn time<R>(name: &'static str, phase: impl FnOnce() -> R) -> R {
 
 /// The recorded phases, whatever a panicking holder left (a list of timings cannot be broken).
 fn lock() -> std::sync::MutexGuard<'static, Vec<PhaseTime>> {
-    RECORDED.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
+    RECORDED
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner())
 }

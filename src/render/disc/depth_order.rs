@@ -17,8 +17,13 @@ use crate::geometry::camera::PixelGrid;
 /// Slices of the depth range the front-to-back order sorts discs into.
 const DEPTH_SLICES: usize = 4096;
 
-/// Discs handled per parallel task.
-const CHUNK: usize = 32_768;
+/// Discs handled per parallel task, for `discs` discs: about 32 tasks, from 4,096 to 32,768
+/// discs each. It depends on the count alone, never on the threads: the per-slice sums, and so
+/// the passes, come out the same whatever the machine (a plan decided at a threshold must not
+/// change with it).
+fn chunk_len(discs: usize) -> usize {
+    (discs / 32).clamp(4096, 32_768)
+}
 
 /// Below this many discs over a pixel on average, sorting costs more than culling saves (measured
 /// with `examples/performance.rs`: the random scenes of 100,000 and 1,000,000 spheres lie about
@@ -179,8 +184,9 @@ impl Passes {
         let inverse_pixel = 1.0 / grid.pixel_size_world;
         let cells = Cells::of(grid);
         // Per chunk: each disc's slice and cell, and the pixels each slice covers.
+        let chunk = chunk_len(discs.len());
         let chunks: Vec<ChunkKeys> = discs
-            .par_chunks(CHUNK)
+            .par_chunks(chunk)
             .map(|discs| {
                 let mut covered = vec![0.0f64; DEPTH_SLICES];
                 let keys = discs
@@ -218,7 +224,7 @@ impl Passes {
         let count = usize::from(pass_of_slice[DEPTH_SLICES - 1]) + 1;
         let cell_count = cells.across * cells.down;
         let chunks = discs
-            .par_chunks(CHUNK)
+            .par_chunks(chunk)
             .zip(chunks)
             .map(|(discs, ChunkKeys { keys, .. })| {
                 let pass_of = |slice: u16| usize::from(pass_of_slice[usize::from(slice)]);
@@ -313,24 +319,72 @@ impl Passes {
 }
 
 /// The discs of `kept` (per chunk, with their slices) ordered by slice, in chunk order within a
-/// slice: a counting sort.
+/// slice: a counting sort, in parallel (16 cores measured the one-thread sort at a sixth of a
+/// dense frame: docs/scaling.md). The slices are split into as many groups of about equal discs
+/// as there are threads; each group's task reads every chunk's slices and moves the discs of its
+/// own slices into its own part of the result. The result is the same whatever the grouping.
 fn by_slice(kept: &[(Vec<u16>, Vec<Disc>)]) -> Vec<Disc> {
+    let counts: Vec<Vec<u32>> = kept
+        .par_iter()
+        .map(|(slices, _)| {
+            let mut counts = vec![0u32; DEPTH_SLICES];
+            for &slice in slices {
+                counts[usize::from(slice)] += 1;
+            }
+            counts
+        })
+        .collect();
+    // Where each slice's discs start in the result.
     let mut starts = vec![0usize; DEPTH_SLICES + 1];
-    for &slice in kept.iter().flat_map(|(slices, _)| slices) {
-        starts[usize::from(slice) + 1] += 1;
+    for counts in &counts {
+        for (slice, &count) in counts.iter().enumerate() {
+            starts[slice + 1] += count as usize;
+        }
     }
     for slice in 0..DEPTH_SLICES {
         starts[slice + 1] += starts[slice];
     }
-    let mut sorted = vec![Disc::NONE; starts[DEPTH_SLICES]];
-    for (slices, discs) in kept {
-        for (&slice, disc) in slices.iter().zip(discs) {
-            let slot = &mut starts[usize::from(slice)];
-            sorted[*slot] = *disc;
-            *slot += 1;
+    let total = starts[DEPTH_SLICES];
+    // Groups of slices `[first, end)`, each about `total / groups` discs.
+    let groups = rayon::current_num_threads().max(1);
+    let mut bounds = vec![0usize];
+    for group in 1..groups {
+        let wanted = total * group / groups;
+        let slice = starts
+            .partition_point(|&start| start < wanted)
+            .min(DEPTH_SLICES);
+        if slice > *bounds.last().unwrap_or(&0) {
+            bounds.push(slice);
         }
     }
-    sorted
+    bounds.push(DEPTH_SLICES);
+    // Written once in parallel, then each group's part filled by its own task.
+    let mut all: Vec<Disc> = (0..total).into_par_iter().map(|_| Disc::NONE).collect();
+    let mut parts = Vec::with_capacity(bounds.len() - 1);
+    let mut rest = all.as_mut_slice();
+    for group in bounds.windows(2) {
+        let len = starts[group[1]] - starts[group[0]];
+        let (part, after) = std::mem::take(&mut rest).split_at_mut(len);
+        parts.push((group[0]..group[1], part));
+        rest = after;
+    }
+    parts.into_par_iter().for_each(|(group, part)| {
+        let first = group.start;
+        let offset = starts[group.start];
+        let mut cursor: Vec<usize> = starts[group.clone()]
+            .iter()
+            .map(|start| start - offset)
+            .collect();
+        for (slices, discs) in kept {
+            for (&slice, disc) in slices.iter().zip(discs) {
+                if let Some(slot) = cursor.get_mut(usize::from(slice).wrapping_sub(first)) {
+                    part[*slot] = *disc;
+                    *slot += 1;
+                }
+            }
+        }
+    });
+    all
 }
 
 #[cfg(test)]

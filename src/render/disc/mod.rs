@@ -113,7 +113,12 @@ pub(crate) fn project_discs_with_depths(
 /// [`project_discs_with_depths`]'s work, chunk by chunk in parallel.
 fn project_in_parallel(scene: &Scene, view: &View, basis: &CameraBasis) -> (Vec<Disc>, Depths) {
     use rayon::prelude::*;
-    let mut discs = vec![Disc::NONE; scene.spheres.len()];
+    // Placeholders written in parallel: `vec![…; n]` writes (and, in a fresh process, faults in)
+    // every page on one thread, a serial part on many cores (docs/scaling.md).
+    let mut discs: Vec<Disc> = (0..scene.spheres.len())
+        .into_par_iter()
+        .map(|_| Disc::NONE)
+        .collect();
     let grid = view.grid();
     let depths = discs
         .par_chunks_mut(PROJECT_CHUNK)

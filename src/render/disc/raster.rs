@@ -142,7 +142,8 @@ pub(super) fn rasterise_hits(
                 if passes.is_empty(pass) {
                     continue;
                 }
-                let drawn = (pass > 0).then(|| time("coarse depth", || CoarseDepth::of(out.0, grid)));
+                let drawn =
+                    (pass > 0).then(|| time("coarse depth", || CoarseDepth::of(out.0, grid)));
                 let discs = time("pass discs", || passes.take(pass, drawn.as_ref()));
                 disc_tests += rasterise_discs(&discs, grid, Order::FrontToBack, &mut out);
             }
@@ -177,12 +178,12 @@ fn rasterise_discs(
     let bands = time("bin", || bin_discs(discs, grid));
     time("draw", || {
         t.par_chunks_mut(width * BAND_ROWS)
-        .zip(sphere.par_chunks_mut(width * BAND_ROWS))
-        .enumerate()
-        .map(|(band, out)| {
-            let first_row = band * BAND_ROWS;
-            rasterise_band(discs, bands.band(band), grid, first_row, out)
-        })
-        .sum()
+            .zip(sphere.par_chunks_mut(width * BAND_ROWS))
+            .enumerate()
+            .map(|(band, out)| {
+                let first_row = band * BAND_ROWS;
+                rasterise_band(discs, bands.band(band), grid, first_row, out)
+            })
+            .sum()
     })
 }

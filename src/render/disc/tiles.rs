@@ -67,6 +67,18 @@ impl Placed {
         columns: (0, 0),
     };
 
+    /// A disc off the image: binned nowhere (its first row is past its last).
+    const OFF: Self = Self {
+        rows: (1, 0),
+        ..Self::NONE
+    };
+
+    /// The image rows (top first) it is binned in; `None` off the image.
+    fn binned_rows(&self) -> Option<(usize, usize)> {
+        let (first, last) = self.rows;
+        (first <= last).then_some((first as usize, last as usize))
+    }
+
     /// `disc` placed on `grid`; `None` off the image.
     fn of(disc: &Disc, grid: &PixelGrid) -> Option<Self> {
         let radius = disc.radius_sq.sqrt();
@@ -106,20 +118,22 @@ pub(super) fn rasterise_discs_in_tiles(
     (t, sphere): (&mut [f64], &mut [u32]),
 ) -> u64 {
     let (placed, bands) = time("bin", || {
+        // One per disc, so that the collect writes in parallel (a filtered collect joins its
+        // pieces on one thread, a serial part on many cores: docs/scaling.md).
         let placed: Vec<Placed> = discs
             .par_iter()
-            .filter_map(|disc| Placed::of(disc, grid))
+            .map(|disc| Placed::of(disc, grid).unwrap_or(Placed::OFF))
             .collect();
-        let bands = bin_by_rows(&placed, grid, |placed| {
-            Some((placed.rows.0 as usize, placed.rows.1 as usize))
-        });
+        let bands = bin_by_rows(&placed, grid, Placed::binned_rows);
         (placed, bands)
     });
     let columns = Columns::of(grid);
     let u_of_column: Vec<f64> = (0..grid.width_px)
         .map(|x| columns.u(f64::from(x)))
         .collect();
-    time("draw", || draw_bands(&placed, &bands, grid, (t, sphere), &u_of_column))
+    time("draw", || {
+        draw_bands(&placed, &bands, grid, (t, sphere), &u_of_column)
+    })
 }
 
 /// Draws each band's listed discs into its rows of `t` and `sphere`, bands in parallel. Returns the
