@@ -287,49 +287,51 @@ impl Passes {
     pub(super) fn take(&mut self, pass: usize, coarse: Option<&CoarseDepth>) -> Vec<Disc> {
         let around = coarse.map(|coarse| coarse.farthest_around_cells(&self.cells));
         let reach_sq = self.cells.reaching_neighbours_radius_sq;
-        // Per chunk, the discs kept and their slices.
-        let kept: Vec<(Vec<u16>, Vec<Disc>)> = self
-            .chunks
-            .par_iter_mut()
-            .map(|lists| {
-                let list = std::mem::take(&mut lists[pass]);
-                let (mut slices, mut discs) = (Vec::new(), Vec::new());
-                for cell in 0..list.starts.len().saturating_sub(1) {
-                    // Every disc of the cell reaches only the cells around it, and lies behind
-                    // everything drawn there.
-                    let cell_hidden = around.as_ref().is_some_and(|around| {
-                        list.largest_radius_sq[cell] <= reach_sq
-                            && list.nearest_t[cell] > around[cell]
-                    });
-                    if cell_hidden {
-                        continue;
-                    }
-                    for at in list.starts[cell]..list.starts[cell + 1] {
-                        if coarse.is_none_or(|coarse| coarse.may_show(&list.discs[at])) {
-                            slices.push(list.slices[at]);
-                            discs.push(list.discs[at]);
+        // Per chunk, its pass list and the positions in it of the discs kept (the discs are
+        // moved once, by the depth sort: moving them here too cost a fifth of a dense frame).
+        let kept: Vec<(PassList, Vec<u32>)> = crate::render::phases::time("cull", || {
+            self.chunks
+                .par_iter_mut()
+                .map(|lists| {
+                    let list = std::mem::take(&mut lists[pass]);
+                    let mut positions = Vec::with_capacity(list.discs.len());
+                    for cell in 0..list.starts.len().saturating_sub(1) {
+                        // Every disc of the cell reaches only the cells around it, and lies behind
+                        // everything drawn there.
+                        let cell_hidden = around.as_ref().is_some_and(|around| {
+                            list.largest_radius_sq[cell] <= reach_sq
+                                && list.nearest_t[cell] > around[cell]
+                        });
+                        if cell_hidden {
+                            continue;
+                        }
+                        // A chunk's discs fit u32 (a sphere count does).
+                        for at in list.starts[cell]..list.starts[cell + 1] {
+                            if coarse.is_none_or(|coarse| coarse.may_show(&list.discs[at])) {
+                                positions.push(at as u32);
+                            }
                         }
                     }
-                }
-                (slices, discs)
-            })
-            .collect();
-        by_slice(&kept)
+                    (list, positions)
+                })
+                .collect()
+        });
+        crate::render::phases::time("depth sort", || by_slice(&kept))
     }
 }
 
-/// The discs of `kept` (per chunk, with their slices) ordered by slice, in chunk order within a
-/// slice: a counting sort, in parallel (16 cores measured the one-thread sort at a sixth of a
+/// The discs of `kept` (per chunk, its pass list and the positions in it of the discs kept)
+/// ordered by slice, in chunk order within a slice: a counting sort, in parallel (16 cores measured the one-thread sort at a sixth of a
 /// dense frame: docs/scaling.md). The slices are split into as many groups of about equal discs
-/// as there are threads; each group's task reads every chunk's slices and moves the discs of its
-/// own slices into its own part of the result. The result is the same whatever the grouping.
-fn by_slice(kept: &[(Vec<u16>, Vec<Disc>)]) -> Vec<Disc> {
+/// as there are threads; each group's task reads every kept disc's slice and moves the discs of
+/// its own slices into its own part of the result. The result is the same whatever the grouping.
+fn by_slice(kept: &[(PassList, Vec<u32>)]) -> Vec<Disc> {
     let counts: Vec<Vec<u32>> = kept
         .par_iter()
-        .map(|(slices, _)| {
+        .map(|(list, positions)| {
             let mut counts = vec![0u32; DEPTH_SLICES];
-            for &slice in slices {
-                counts[usize::from(slice)] += 1;
+            for &at in positions {
+                counts[usize::from(list.slices[at as usize])] += 1;
             }
             counts
         })
@@ -375,10 +377,11 @@ fn by_slice(kept: &[(Vec<u16>, Vec<Disc>)]) -> Vec<Disc> {
             .iter()
             .map(|start| start - offset)
             .collect();
-        for (slices, discs) in kept {
-            for (&slice, disc) in slices.iter().zip(discs) {
-                if let Some(slot) = cursor.get_mut(usize::from(slice).wrapping_sub(first)) {
-                    part[*slot] = *disc;
+        for (list, positions) in kept {
+            for &at in positions {
+                let slice = usize::from(list.slices[at as usize]);
+                if let Some(slot) = cursor.get_mut(slice.wrapping_sub(first)) {
+                    part[*slot] = list.discs[at as usize];
                     *slot += 1;
                 }
             }

@@ -144,7 +144,7 @@ pub(super) fn rasterise_hits(
                 }
                 let drawn =
                     (pass > 0).then(|| time("coarse depth", || CoarseDepth::of(out.0, grid)));
-                let discs = time("pass discs", || passes.take(pass, drawn.as_ref()));
+                let discs = passes.take(pass, drawn.as_ref());
                 disc_tests += rasterise_discs(&discs, grid, Order::FrontToBack, &mut out);
             }
             disc_tests
