@@ -323,24 +323,36 @@ impl Passes {
 /// The discs of `kept` (per chunk, its pass list and the positions in it of the discs kept)
 /// ordered by slice, in chunk order within a slice: a counting sort, in parallel (16 cores measured the one-thread sort at a sixth of a
 /// dense frame: docs/scaling.md). The slices are split into as many groups of about equal discs
-/// as there are threads; each group's task reads every kept disc's slice and moves the discs of
-/// its own slices into its own part of the result. The result is the same whatever the grouping.
+/// as there are threads. Each chunk orders the positions of its kept discs by slice; each group's
+/// task then moves, chunk by chunk, the discs of its own slices into its own part of the result.
+/// The result is the same whatever the grouping.
 fn by_slice(kept: &[(PassList, Vec<u32>)]) -> Vec<Disc> {
-    let counts: Vec<Vec<u32>> = kept
+    // Per chunk: where each slice's kept discs start in its order, and their positions by slice.
+    let orders: Vec<(Vec<u32>, Vec<u32>)> = kept
         .par_iter()
         .map(|(list, positions)| {
-            let mut counts = vec![0u32; DEPTH_SLICES];
+            let mut starts = vec![0u32; DEPTH_SLICES + 1];
             for &at in positions {
-                counts[usize::from(list.slices[at as usize])] += 1;
+                starts[usize::from(list.slices[at as usize]) + 1] += 1;
             }
-            counts
+            for slice in 0..DEPTH_SLICES {
+                starts[slice + 1] += starts[slice];
+            }
+            let mut cursor = starts.clone();
+            let mut order = vec![0u32; positions.len()];
+            for &at in positions {
+                let slot = &mut cursor[usize::from(list.slices[at as usize])];
+                order[*slot as usize] = at;
+                *slot += 1;
+            }
+            (starts, order)
         })
         .collect();
     // Where each slice's discs start in the result.
     let mut starts = vec![0usize; DEPTH_SLICES + 1];
-    for counts in &counts {
-        for (slice, &count) in counts.iter().enumerate() {
-            starts[slice + 1] += count as usize;
+    for (chunk_starts, _) in &orders {
+        for (slice, run) in chunk_starts.windows(2).enumerate() {
+            starts[slice + 1] += (run[1] - run[0]) as usize;
         }
     }
     for slice in 0..DEPTH_SLICES {
@@ -377,13 +389,13 @@ fn by_slice(kept: &[(PassList, Vec<u32>)]) -> Vec<Disc> {
             .iter()
             .map(|start| start - offset)
             .collect();
-        for (list, positions) in kept {
-            for &at in positions {
+        for ((list, _), (chunk_starts, order)) in kept.iter().zip(&orders) {
+            let mine = chunk_starts[group.start] as usize..chunk_starts[group.end] as usize;
+            for &at in &order[mine] {
                 let slice = usize::from(list.slices[at as usize]);
-                if let Some(slot) = cursor.get_mut(slice.wrapping_sub(first)) {
-                    part[*slot] = list.discs[at as usize];
-                    *slot += 1;
-                }
+                let slot = &mut cursor[slice - first];
+                part[*slot] = list.discs[at as usize];
+                *slot += 1;
             }
         }
     });
