@@ -321,10 +321,8 @@ fn tangent_pixel_hits_and_the_next_one_misses() {
 
 #[test]
 fn rendering_is_deterministic_across_thread_counts() {
-    // 200 spheres; 200,000, where the discs are binned in chunks whose size depends on the thread
-    // count (4,096 at least, a quarter of the discs per thread at most), so the bands' lists are
-    // put together from different chunks; and 200,000 dense ones, drawn front to back in passes
-    // whose discs are sorted by depth in as many groups as there are threads.
+    // 200,000 random spheres are binned in chunks sized by the thread count; 200,000 dense ones
+    // are drawn in passes, their discs sorted by depth in one group per thread.
     let scenes = [
         (
             "200 random",
@@ -353,10 +351,8 @@ fn rendering_is_deterministic_across_thread_counts() {
         };
         let one = with_threads(1);
         for threads in [2, 5, 16] {
-            assert!(
-                one == with_threads(threads),
-                "{name}: 1 and {threads} threads differ"
-            );
+            let differ = format!("{name}: 1 and {threads} threads differ");
+            assert!(one == with_threads(threads), "{differ}");
         }
     }
 }

@@ -47,5 +47,5 @@ pub(crate) fn time<R>(name: &'static str, phase: impl FnOnce() -> R) -> R {
 fn lock() -> std::sync::MutexGuard<'static, Vec<PhaseTime>> {
     RECORDED
         .lock()
-        .unwrap_or_else(|poisoned| poisoned.into_inner())
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
 }

@@ -21,6 +21,7 @@
 //! * [`hit`]: the pixel–disc test and its tie rule, once for one pixel and for four SIMD lanes
 //! * [`chord`]: a disc's chord on a row, a band's discs gathered
 //! * [`depth_order`]: discs sorted front to back, and the nearest ones that cover the image
+//! * [`depth_sort`]: a pass's kept discs ordered by depth slice, in parallel
 //! * [`coarse_depth`]: discs behind what the nearest ones drew, culled frame-wide
 //! * [`tiles`]: dense scenes drawn front to back tile by tile, each tile stopping where the rest
 //!   is hidden
@@ -32,6 +33,7 @@ mod bins;
 mod chord;
 mod coarse_depth;
 mod depth_order;
+mod depth_sort;
 mod hit;
 mod raster;
 mod shade;

@@ -1,0 +1,99 @@
+//! The depth sort of a pass's discs: the discs each chunk kept, ordered by depth slice (front
+//! to back), in chunk order within a slice, in parallel.
+
+use rayon::prelude::*;
+
+use super::Disc;
+
+/// One chunk's discs of a pass: each disc's slice, the discs, and the positions of those kept.
+pub(super) struct Kept<'a> {
+    pub(super) slices: &'a [u16],
+    pub(super) discs: &'a [Disc],
+    pub(super) positions: &'a [u32],
+}
+
+/// The discs of `kept` (per chunk, its pass list and the positions in it of the discs kept)
+/// ordered by slice, in chunk order within a slice: a counting sort, in parallel (16 cores measured the one-thread sort at a sixth of a
+/// dense frame: docs/scaling.md). The slices are split into as many groups of about equal discs
+/// as there are threads. Each chunk orders the positions of its kept discs by slice; each group's
+/// task then moves, chunk by chunk, the discs of its own slices into its own part of the result.
+/// The result is the same whatever the grouping.
+pub(super) fn by_slice(kept: &[Kept<'_>], slice_count: usize) -> Vec<Disc> {
+    // Per chunk: where each slice's kept discs start in its order, and their positions by slice.
+    let orders: Vec<(Vec<u32>, Vec<u32>)> = kept
+        .par_iter()
+        .map(
+            |Kept {
+                 slices, positions, ..
+             }| {
+                let mut starts = vec![0u32; slice_count + 1];
+                for &at in *positions {
+                    starts[usize::from(slices[at as usize]) + 1] += 1;
+                }
+                for slice in 0..slice_count {
+                    starts[slice + 1] += starts[slice];
+                }
+                let mut cursor = starts.clone();
+                let mut order = vec![0u32; positions.len()];
+                for &at in *positions {
+                    let slot = &mut cursor[usize::from(slices[at as usize])];
+                    order[*slot as usize] = at;
+                    *slot += 1;
+                }
+                (starts, order)
+            },
+        )
+        .collect();
+    // Where each slice's discs start in the result.
+    let mut starts = vec![0usize; slice_count + 1];
+    for (chunk_starts, _) in &orders {
+        for (slice, run) in chunk_starts.windows(2).enumerate() {
+            starts[slice + 1] += (run[1] - run[0]) as usize;
+        }
+    }
+    for slice in 0..slice_count {
+        starts[slice + 1] += starts[slice];
+    }
+    let total = starts[slice_count];
+    // Groups of slices `[first, end)`, each about `total / groups` discs.
+    let groups = rayon::current_num_threads().max(1);
+    let mut bounds = vec![0usize];
+    for group in 1..groups {
+        let wanted = total * group / groups;
+        let slice = starts
+            .partition_point(|&start| start < wanted)
+            .min(slice_count);
+        if slice > *bounds.last().unwrap_or(&0) {
+            bounds.push(slice);
+        }
+    }
+    bounds.push(slice_count);
+    // Written once in parallel, then each group's part filled by its own task.
+    let mut all: Vec<Disc> = (0..total).into_par_iter().map(|_| Disc::NONE).collect();
+    let mut parts = Vec::with_capacity(bounds.len() - 1);
+    let mut rest = all.as_mut_slice();
+    for group in bounds.windows(2) {
+        let len = starts[group[1]] - starts[group[0]];
+        let (part, after) = std::mem::take(&mut rest).split_at_mut(len);
+        parts.push((group[0]..group[1], part));
+        rest = after;
+    }
+    parts.into_par_iter().for_each(|(group, part)| {
+        let first = group.start;
+        let offset = starts[group.start];
+        let mut cursor: Vec<usize> = starts[group.clone()]
+            .iter()
+            .map(|start| start - offset)
+            .collect();
+        for (kept, (chunk_starts, order)) in kept.iter().zip(&orders) {
+            let mine = chunk_starts[group.start] as usize..chunk_starts[group.end] as usize;
+            for &at in &order[mine] {
+                let slice = usize::from(kept.slices[at as usize]);
+                let slot = &mut cursor[slice - first];
+                part[*slot] = kept.discs[at as usize];
+                *slot += 1;
+            }
+        }
+    });
+    all
+}
