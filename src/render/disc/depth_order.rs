@@ -8,6 +8,8 @@
 //! pass and screen cell, then, in a pass, by [`DEPTH_SLICES`] slices of the depth range. Linear
 //! in the discs.
 
+use std::ops::Range;
+
 use rayon::prelude::*;
 
 use super::Disc;
@@ -143,6 +145,8 @@ impl Depths {
 /// grouped by cell.
 pub(super) struct Passes {
     count: usize,
+    /// Per pass, the depth slices it takes.
+    slices: Vec<Range<usize>>,
     cells: Cells,
     chunks: Vec<Vec<PassList>>,
 }
@@ -223,6 +227,14 @@ impl Passes {
             }
         }
         let count = usize::from(pass_of_slice[DEPTH_SLICES - 1]) + 1;
+        // Passes take consecutive slices.
+        let slices: Vec<Range<usize>> = (0..count)
+            .map(|pass| {
+                let first = pass_of_slice.partition_point(|&p| usize::from(p) < pass);
+                let end = pass_of_slice.partition_point(|&p| usize::from(p) <= pass);
+                first..end
+            })
+            .collect();
         let cell_count = cells.across * cells.down;
         let chunks = discs
             .par_chunks(chunk)
@@ -268,6 +280,7 @@ impl Passes {
             .collect();
         Self {
             count,
+            slices,
             cells,
             chunks,
         }
@@ -325,7 +338,8 @@ impl Passes {
                 positions,
             })
             .collect();
-        crate::render::phases::time("depth sort", || by_slice(&kept, DEPTH_SLICES))
+        let slices = self.slices[pass].clone();
+        crate::render::phases::time("depth sort", || by_slice(&kept, slices))
     }
 }
 

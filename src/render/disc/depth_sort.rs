@@ -1,6 +1,8 @@
 //! The depth sort of a pass's discs: the discs each chunk kept, ordered by depth slice (front
 //! to back), in chunk order within a slice, in parallel.
 
+use std::ops::Range;
+
 use rayon::prelude::*;
 
 use super::Disc;
@@ -13,30 +15,33 @@ pub(super) struct Kept<'a> {
 }
 
 /// The discs of `kept` (per chunk, its pass list and the positions in it of the discs kept)
-/// ordered by slice, in chunk order within a slice: a counting sort, in parallel (16 cores measured the one-thread sort at a sixth of a
-/// dense frame: docs/scaling.md). The slices are split into as many groups of about equal discs
+/// ordered by slice, in chunk order within a slice: a counting sort, in parallel (16 cores
+/// measured the one-thread sort at a sixth of a dense frame: docs/scaling.md). Every kept disc's
+/// slice lies in `slices`, the pass's; the sort's tables span those alone. The slices are split into as many groups of about equal discs
 /// as there are threads. Each chunk orders the positions of its kept discs by slice; each group's
 /// task then moves, chunk by chunk, the discs of its own slices into its own part of the result.
 /// The result is the same whatever the grouping.
-pub(super) fn by_slice(kept: &[Kept<'_>], slice_count: usize) -> Vec<Disc> {
+pub(super) fn by_slice(kept: &[Kept<'_>], slices: Range<usize>) -> Vec<Disc> {
+    let slice_count = slices.len();
+    let first_slice = slices.start;
     // Per chunk: where each slice's kept discs start in its order, and their positions by slice.
     let orders: Vec<(Vec<u32>, Vec<u32>)> = kept
         .par_iter()
         .map(
-            |Kept {
+            |&Kept {
                  slices, positions, ..
              }| {
                 let mut starts = vec![0u32; slice_count + 1];
-                for &at in *positions {
-                    starts[usize::from(slices[at as usize]) + 1] += 1;
+                for &at in positions {
+                    starts[usize::from(slices[at as usize]) - first_slice + 1] += 1;
                 }
                 for slice in 0..slice_count {
                     starts[slice + 1] += starts[slice];
                 }
                 let mut cursor = starts.clone();
                 let mut order = vec![0u32; positions.len()];
-                for &at in *positions {
-                    let slot = &mut cursor[usize::from(slices[at as usize])];
+                for &at in positions {
+                    let slot = &mut cursor[usize::from(slices[at as usize]) - first_slice];
                     order[*slot as usize] = at;
                     *slot += 1;
                 }
@@ -88,7 +93,7 @@ pub(super) fn by_slice(kept: &[Kept<'_>], slice_count: usize) -> Vec<Disc> {
         for (kept, (chunk_starts, order)) in kept.iter().zip(&orders) {
             let mine = chunk_starts[group.start] as usize..chunk_starts[group.end] as usize;
             for &at in &order[mine] {
-                let slice = usize::from(kept.slices[at as usize]);
+                let slice = usize::from(kept.slices[at as usize]) - first_slice;
                 let slot = &mut cursor[slice - first];
                 part[*slot] = kept.discs[at as usize];
                 *slot += 1;
