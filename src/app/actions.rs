@@ -5,7 +5,6 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use super::ViewerApp;
 use super::background::{Poll, Task};
 #[cfg(not(target_arch = "wasm32"))]
 use super::dialogs::spawn_dialog;
@@ -13,6 +12,7 @@ use super::dialogs::{DialogAnswer, DialogKind};
 use super::render_job::{DepthStyle, ViewerJob, prepare_frame};
 use super::settings::ExportFormat;
 use super::status::Status;
+use super::{ViewerApp, viewing};
 use crate::export::ExportPlan;
 #[cfg(not(target_arch = "wasm32"))]
 use crate::export::{save_view_as_scene, write_export};
@@ -103,15 +103,34 @@ impl ViewerApp {
             Action::Open(path) => self.open(&path),
             Action::Reload => self.reload(),
             Action::FrameAll => self.frame_all(),
-            Action::ResetView => self.reset_view(),
-            Action::ResetDepth => self.reset_depth(),
+            Action::ResetView => self.viewing.reset_view(&self.scene.loaded.file_view),
+            Action::ResetDepth => self.viewing.reset_depth(&self.scene.loaded.file_view),
             Action::AutoRange => self.auto_range(),
             Action::UseDepthRange(range) => self.viewing.view.depth_range = range,
-            Action::Undo => self.undo(),
-            Action::Redo => self.redo(),
-            Action::NameView(name) => self.name_view(&name),
-            Action::GoToView(index) => self.go_to_view(index),
-            Action::ForgetView(index) => self.forget_view(index),
+            Action::Undo => {
+                let status = self.viewing.undo();
+                self.say(status);
+            }
+            Action::Redo => {
+                let status = self.viewing.redo();
+                self.say(status);
+            }
+            Action::NameView(name) => {
+                let path = self.scene.loaded.path.as_deref();
+                let status = self
+                    .viewing
+                    .name_view(&mut self.settings.views, path, &name);
+                self.say(Some(status));
+            }
+            Action::GoToView(index) => {
+                let path = self.scene.loaded.path.as_deref();
+                self.viewing
+                    .go_to_view(&mut self.settings.views, path, index);
+            }
+            Action::ForgetView(index) => {
+                let path = self.scene.loaded.path.as_deref();
+                viewing::forget_view(&mut self.settings.views, path, index);
+            }
             Action::ToggleHelp => self.panels.help_open = !self.panels.help_open,
             Action::ResetMagnifier => self.viewing.magnifier = Default::default(),
             Action::ExportTo(_) | Action::SaveViewTo(_) => self.write_or_ask(action),
@@ -123,9 +142,9 @@ impl ViewerApp {
                     self.compare.show = show;
                 }
             }
-            Action::CompareFlip => self.flip_comparison(),
-            Action::CompareDifference => self.toggle_difference(),
-            Action::CompareClose => self.close_comparison(),
+            Action::CompareFlip => self.compare.flip(),
+            Action::CompareDifference => self.compare.toggle_difference(),
+            Action::CompareClose => self.compare.close(),
         }
     }
 

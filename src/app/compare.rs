@@ -323,101 +323,73 @@ fn to_colour_image(image: &RgbImage) -> ColorImage {
     )
 }
 
-impl ViewerApp {
-    /// Opens the image at `path` and compares it with the exact render of the open scene.
-    pub(crate) fn compare_with_file(&mut self, path: PathBuf, kind: ImageKind) {
-        let scene = Arc::clone(&self.scene.loaded.scene);
-        let depth_view = self.viewing.view;
-        self.compare.kind = kind;
-        self.start_comparison(move || {
-            let theirs = read_their_image(&path)?;
-            compare_file(&scene, &path, theirs, kind, &depth_view)
-        });
-    }
-
-    /// Compares the image `bytes` named `name` (a browser page's dropped or picked file) with the
-    /// exact render, as [`Self::compare_with_file`] does a file.
-    pub fn compare_with_bytes(&mut self, name: &str, bytes: Arc<[u8]>, kind: ImageKind) {
-        let scene = Arc::clone(&self.scene.loaded.scene);
-        let depth_view = self.viewing.view;
-        let path = PathBuf::from(name);
-        self.compare.kind = kind;
-        self.start_comparison(move || {
-            let theirs = decode_their_image(&path, &bytes)?;
-            compare_file(&scene, &path, theirs, kind, &depth_view)
-        });
-    }
-
-    /// Measures the chosen quality against the exact render on the current view.
-    pub(crate) fn compare_quality(&mut self) {
-        let scene = Arc::clone(&self.scene.loaded.scene);
-        let view = self.viewing.view;
-        let quality = self.settings.quality;
-        self.start_comparison(move || compare_quality(&scene, &view, &quality));
+impl CompareState {
+    /// Starts `work` (a comparison) in the background; `ctx` repaints when it is done.
+    fn start(
+        &mut self,
+        ctx: &egui::Context,
+        work: impl FnOnce() -> Result<ComparisonPixels, String> + Send + 'static,
+    ) -> Option<Status> {
+        match Task::spawn("compare", ctx, move |_| work()) {
+            Ok(task) => {
+                self.pending = Some(task);
+                None
+            }
+            Err(error) => Some(Status::error(format!(
+                "cannot start the comparison: {error}"
+            ))),
+        }
     }
 
     /// Closes the comparison (the view is free again).
-    pub(crate) fn close_comparison(&mut self) {
-        self.compare.current = None;
-        self.compare.pending = None;
-        self.compare.show = CompareShow::Rendered;
+    pub(crate) fn close(&mut self) {
+        self.current = None;
+        self.pending = None;
+        self.show = CompareShow::Rendered;
     }
 
-    fn start_comparison(
-        &mut self,
-        work: impl FnOnce() -> Result<ComparisonPixels, String> + Send + 'static,
-    ) {
-        match Task::spawn("compare", &self.ctx, move |_| work()) {
-            Ok(task) => self.compare.pending = Some(task),
-            Err(error) => {
-                self.status = Some(Status::error(format!(
-                    "cannot start the comparison: {error}"
-                )));
+    /// Their depth image on screen, compared at another depth range than `depth_range`: its
+    /// file, to compare again.
+    fn stale_depth_file(&self, depth_range: DepthRange) -> Option<PathBuf> {
+        let current = self.current.as_ref()?;
+        match &current.pixels.source {
+            CompareSource::File(path)
+                if current.pixels.kind == ImageKind::Depth
+                    && current.pixels.view.depth_range != depth_range =>
+            {
+                Some(path.clone())
             }
+            _ => None,
         }
     }
 
-    /// Takes a finished comparison in; with their image, holds the view at the file's camera and
-    /// their size. A depth comparison follows the depth range: it is made again when it changes.
-    pub(crate) fn poll_comparison(&mut self) {
-        let Some(task) = &self.compare.pending else {
-            if let Some(current) = &self.compare.current
-                && let CompareSource::File(path) = &current.pixels.source
-                && current.pixels.kind == ImageKind::Depth
-                && current.pixels.view.depth_range != self.viewing.view.depth_range
-            {
-                let path = path.clone();
-                self.compare_with_file(path, ImageKind::Depth);
-            }
-            return;
+    /// Takes a finished comparison in, its textures made through `ctx`. `Ok(Some(view))` with
+    /// their image: the view to hold (the file's camera at their size); an error when it failed.
+    fn poll(&mut self, ctx: &egui::Context) -> Result<Option<View>, Status> {
+        let Some(task) = &self.pending else {
+            return Ok(None);
         };
         let pixels = match task.poll() {
-            Poll::Running => return,
+            Poll::Running => return Ok(None),
             Poll::Done(Ok(pixels)) => pixels,
             Poll::Done(Err(error)) => {
-                self.compare.pending = None;
-                self.status = Some(Status::error(format!("compare: {error}")));
-                return;
+                self.pending = None;
+                return Err(Status::error(format!("compare: {error}")));
             }
             Poll::Lost => {
-                self.compare.pending = None;
-                self.status = Some(Status::error("compare: the comparison stopped"));
-                return;
+                self.pending = None;
+                return Err(Status::error("compare: the comparison stopped"));
             }
         };
-        self.compare.pending = None;
-        let first = self.compare.current.is_none();
-        if let CompareSource::File(_) = pixels.source {
-            let depth_range = self.viewing.view.depth_range;
-            self.viewing.view = pixels.view;
-            self.viewing.view.depth_range = depth_range;
-        }
-        let theirs_texture = self.ctx.load_texture(
+        self.pending = None;
+        let first = self.current.is_none();
+        let hold = matches!(pixels.source, CompareSource::File(_)).then_some(pixels.view);
+        let theirs_texture = ctx.load_texture(
             "compare theirs",
             to_colour_image(&pixels.theirs),
             TextureOptions::NEAREST,
         );
-        let heat_texture = self.ctx.load_texture(
+        let heat_texture = ctx.load_texture(
             "compare heat",
             to_colour_image(&match &pixels.unexplained {
                 Some(unexplained) => heat_map_marked(&pixels.difference, unexplained),
@@ -426,19 +398,20 @@ impl ViewerApp {
             TextureOptions::NEAREST,
         );
         if first || matches!(pixels.source, CompareSource::Quality(_)) {
-            self.compare.show = CompareShow::Difference;
+            self.show = CompareShow::Difference;
         }
-        self.compare.current = Some(Comparison {
+        self.current = Some(Comparison {
             pixels,
             theirs_texture,
             heat_texture,
         });
+        Ok(hold)
     }
 
     /// The A/B flip: the render and their image in turn.
-    pub(crate) fn flip_comparison(&mut self) {
-        if self.compare.current.is_some() {
-            self.compare.show = match self.compare.show {
+    pub(crate) fn flip(&mut self) {
+        if self.current.is_some() {
+            self.show = match self.show {
                 CompareShow::Theirs => CompareShow::Rendered,
                 _ => CompareShow::Theirs,
             };
@@ -447,8 +420,8 @@ impl ViewerApp {
 
     /// The difference view on and off.
     pub(crate) fn toggle_difference(&mut self) {
-        if self.compare.current.is_some() {
-            self.compare.show = match self.compare.show {
+        if self.current.is_some() {
+            self.show = match self.show {
                 CompareShow::Difference => CompareShow::Rendered,
                 _ => CompareShow::Difference,
             };
@@ -456,8 +429,8 @@ impl ViewerApp {
     }
 
     /// The probe's line for the compared image at pixel `px` (y up): theirs, exact, difference.
-    pub(crate) fn compare_probe_line(&self, px: glam::DVec2) -> Option<String> {
-        let pixels = &self.compare.current.as_ref()?.pixels;
+    pub(crate) fn probe_line(&self, px: glam::DVec2) -> Option<String> {
+        let pixels = &self.current.as_ref()?.pixels;
         let (width, height) = pixels.theirs.dimensions();
         if px.x < 0.0 || px.y < 0.0 || px.x >= f64::from(width) || px.y >= f64::from(height) {
             return None;
@@ -483,5 +456,66 @@ impl ViewerApp {
             pixels.difference.per_pixel[index],
             if unexplained { " · unexplained" } else { "" }
         ))
+    }
+}
+
+impl ViewerApp {
+    /// Opens the image at `path` and compares it with the exact render of the open scene.
+    pub(crate) fn compare_with_file(&mut self, path: PathBuf, kind: ImageKind) {
+        let scene = Arc::clone(&self.scene.loaded.scene);
+        let depth_view = self.viewing.view;
+        self.compare.kind = kind;
+        let status = self.compare.start(&self.ctx, move || {
+            let theirs = read_their_image(&path)?;
+            compare_file(&scene, &path, theirs, kind, &depth_view)
+        });
+        self.say(status);
+    }
+
+    /// Compares the image `bytes` named `name` (a browser page's dropped or picked file) with the
+    /// exact render, as [`Self::compare_with_file`] does a file.
+    pub fn compare_with_bytes(&mut self, name: &str, bytes: Arc<[u8]>, kind: ImageKind) {
+        let scene = Arc::clone(&self.scene.loaded.scene);
+        let depth_view = self.viewing.view;
+        let path = PathBuf::from(name);
+        self.compare.kind = kind;
+        let status = self.compare.start(&self.ctx, move || {
+            let theirs = decode_their_image(&path, &bytes)?;
+            compare_file(&scene, &path, theirs, kind, &depth_view)
+        });
+        self.say(status);
+    }
+
+    /// Measures the chosen quality against the exact render on the current view.
+    pub(crate) fn compare_quality(&mut self) {
+        let scene = Arc::clone(&self.scene.loaded.scene);
+        let view = self.viewing.view;
+        let quality = self.settings.quality;
+        let status = self
+            .compare
+            .start(&self.ctx, move || compare_quality(&scene, &view, &quality));
+        self.say(status);
+    }
+
+    /// Takes a finished comparison in ([`CompareState::poll`]); with their image, holds the view
+    /// at the file's camera and their size, keeping the depth range. A depth comparison follows
+    /// the depth range: it is made again when it changes.
+    pub(crate) fn poll_comparison(&mut self) {
+        if !self.compare.busy() {
+            if let Some(path) = self.compare.stale_depth_file(self.viewing.view.depth_range) {
+                self.compare_with_file(path, ImageKind::Depth);
+            }
+            return;
+        }
+        match self.compare.poll(&self.ctx) {
+            Ok(None) => {}
+            Ok(Some(view)) => {
+                self.viewing.view = View {
+                    depth_range: self.viewing.view.depth_range,
+                    ..view
+                };
+            }
+            Err(status) => self.status = Some(status),
+        }
     }
 }

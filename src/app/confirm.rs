@@ -90,58 +90,10 @@ impl ViewerApp {
         });
     }
 
-    /// The modal asking whether to replace files; on yes, the write goes ahead.
+    /// The modal asking whether to replace files ([`PendingReplace::ui`]); on yes, the write goes
+    /// ahead (into a folder created first when it was missing).
     pub(super) fn confirm_ui(&mut self, ctx: &egui::Context) {
-        let Some(pending) = &self.writes.pending_replace else {
-            return;
-        };
-        let mut answer = None;
-        let modal = egui::Modal::new(egui::Id::unique("replace files")).show(ctx, |ui| {
-            ui.set_max_width(520.0);
-            if let Some(folder) = &pending.missing_folder {
-                ui.heading("Create this folder?");
-                ui.label("The export goes into a folder that does not exist yet:");
-                ui.label(RichText::new(folder.display().to_string()).monospace());
-                ui.horizontal(|ui| {
-                    if ui.button(CREATE_FOLDER_LABEL).clicked() {
-                        answer = Some(true);
-                    }
-                    if ui.button("Cancel").clicked() {
-                        answer = Some(false);
-                    }
-                });
-                return;
-            }
-            let count = pending.existing.len();
-            let title = match count {
-                1 => "Replace this file?".to_owned(),
-                _ => format!("Replace these {count} files?"),
-            };
-            ui.heading(title);
-            if pending.open_scene {
-                ui.label(
-                    RichText::new(
-                        "One of them is the scene file on screen: its text will be replaced \
-                         by the scene with the current camera.",
-                    )
-                    .color(ui.visuals().warn_fg_color),
-                );
-            }
-            for path in &pending.existing {
-                ui.label(RichText::new(path.display().to_string()).monospace());
-            }
-            ui.horizontal(|ui| {
-                if ui.button(REPLACE_LABEL).clicked() {
-                    answer = Some(true);
-                }
-                if ui.button("Cancel").clicked() {
-                    answer = Some(false);
-                }
-            });
-        });
-        if modal.should_close() && answer.is_none() {
-            answer = Some(false);
-        }
+        let answer = self.writes.pending_replace.as_ref().and_then(|p| p.ui(ctx));
         match answer {
             Some(true) => match self.writes.pending_replace.take() {
                 Some(PendingReplace {
@@ -165,6 +117,58 @@ impl ViewerApp {
             None => {}
         }
     }
+}
+
+impl PendingReplace {
+    /// The modal window asking for the yes: `Some(true)` on yes, `Some(false)` on "Cancel",
+    /// Escape or a click outside, `None` while it waits.
+    pub(crate) fn ui(&self, ctx: &egui::Context) -> Option<bool> {
+        let mut answer = None;
+        let modal = egui::Modal::new(egui::Id::unique("replace files")).show(ctx, |ui| {
+            ui.set_max_width(520.0);
+            if let Some(folder) = &self.missing_folder {
+                ui.heading("Create this folder?");
+                ui.label("The export goes into a folder that does not exist yet:");
+                ui.label(RichText::new(folder.display().to_string()).monospace());
+                answer = yes_or_cancel(ui, CREATE_FOLDER_LABEL);
+                return;
+            }
+            let count = self.existing.len();
+            let title = match count {
+                1 => "Replace this file?".to_owned(),
+                _ => format!("Replace these {count} files?"),
+            };
+            ui.heading(title);
+            if self.open_scene {
+                ui.label(
+                    RichText::new(
+                        "One of them is the scene file on screen: its text will be replaced \
+                         by the scene with the current camera.",
+                    )
+                    .color(ui.visuals().warn_fg_color),
+                );
+            }
+            for path in &self.existing {
+                ui.label(RichText::new(path.display().to_string()).monospace());
+            }
+            answer = yes_or_cancel(ui, REPLACE_LABEL);
+        });
+        if modal.should_close() && answer.is_none() {
+            answer = Some(false);
+        }
+        answer
+    }
+}
+
+/// A row of the yes button (`yes_label`) and "Cancel": `Some(true)` or `Some(false)` when one
+/// is clicked.
+fn yes_or_cancel(ui: &mut egui::Ui, yes_label: &str) -> Option<bool> {
+    ui.horizontal(|ui| {
+        let yes = ui.button(yes_label).clicked();
+        let cancel = ui.button("Cancel").clicked();
+        (yes || cancel).then_some(yes)
+    })
+    .inner
 }
 
 /// The files an export plan writes.

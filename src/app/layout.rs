@@ -251,7 +251,7 @@ impl ViewerApp {
             .viewing
             .probe
             .hover_px
-            .and_then(|px| self.compare_probe_line(px))
+            .and_then(|px| self.compare.probe_line(px))
         {
             probe_lines.push(line);
         }
@@ -295,7 +295,7 @@ impl ViewerApp {
             let mut measured = current.pixels.view;
             measured.depth_range = self.viewing.view.depth_range;
             if measured != self.viewing.view {
-                self.close_comparison();
+                self.compare.close();
             }
         }
     }

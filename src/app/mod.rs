@@ -160,6 +160,13 @@ impl ViewerApp {
         app
     }
 
+    /// Shows what a feature had to say, if anything, in the status bar.
+    fn say(&mut self, status: Option<Status>) {
+        if let Some(status) = status {
+            self.status = Some(status);
+        }
+    }
+
     /// Remembers the view the open scene is in, to restore when it is opened again.
     fn remember_view(&mut self) {
         if let Some(path) = &self.scene.loaded.path {

@@ -13,7 +13,8 @@ use super::render_job::ViewerWorker;
 use super::render_job::{DepthStyle, JobResult, ViewerJob};
 use super::status::{Clears, Status};
 use crate::explore::depth_stats::DepthHistogram;
-use crate::render::{Frame, Quality, View};
+use crate::render::{Frame, Quality, View, ViewError};
+use crate::scene::Scene;
 
 /// The viewer's "frames" feature: the render worker, what was asked of it, the frame on screen
 /// and, when the environment asks for it, the frame log.
@@ -71,68 +72,51 @@ impl Default for Requests {
     }
 }
 
-impl ViewerApp {
-    /// How the depth texture is coloured now.
-    pub(super) fn depth_style(&self) -> DepthStyle {
-        DepthStyle {
-            colour_map: self.settings.depth.colour_map,
-            no_hit_rgb: self.settings.depth.no_hit_rgb(),
-        }
-    }
-
-    /// True when the frame on screen is the current view of the current scene at the current
-    /// quality. While a scene loads this is false: the frame will change once it is in.
-    pub fn frame_is_current(&self) -> bool {
-        let style = self.depth_style();
-        self.scene.loading.is_none()
-            && self.frames.shown.as_ref().is_some_and(|s| {
-                s.view == self.viewing.view
-                    && s.scene_epoch == self.scene.epoch
-                    && s.quality == self.settings.quality
-                    && s.depth_style == style
-            })
-    }
-
-    /// Whether the frame on screen is a one-sample preview of a supersampled quality.
-    pub fn showing_preview(&self) -> bool {
-        self.frames.shown.as_ref().is_some_and(|s| {
-            s.quality.sampling.is_none() && self.settings.quality.sampling.is_some()
+impl Frames {
+    /// True when the frame on screen is `wanted` (a view of a scene load at a quality, in a
+    /// depth style).
+    pub(crate) fn shows(&self, wanted: Wanted) -> bool {
+        let (view, epoch, quality, style) = wanted;
+        self.shown.as_ref().is_some_and(|s| {
+            s.view == view
+                && s.scene_epoch == epoch
+                && s.quality == quality
+                && s.depth_style == style
         })
     }
 
-    /// Progressive refinement: while the view keeps changing, one sample per pixel (a preview);
-    /// once it has been still for [`REFINE_DELAY`], the chosen quality.
-    pub(super) fn submit_if_changed(&mut self) {
-        let style = self.depth_style();
-        let chosen = (
-            self.viewing.view,
-            self.scene.epoch,
-            self.settings.quality,
-            style,
-        );
-        let requests = &mut self.frames.requests;
+    /// Progressive refinement: while `chosen` (of `scene`) keeps changing, one sample per pixel
+    /// (a preview); once it has been still for [`REFINE_DELAY`], its own quality. Asks `ctx` for
+    /// a repaint when the refinement is due.
+    pub(crate) fn submit_if_changed(
+        &mut self,
+        scene: &Arc<Scene>,
+        chosen: Wanted,
+        ctx: &egui::Context,
+    ) {
+        let (view, epoch, chosen_quality, style) = chosen;
+        let requests = &mut self.requests;
         if requests.last_wanted != Some(chosen) {
             requests.last_wanted = Some(chosen);
             requests.last_change = Instant::now();
         }
         let still_for = requests.last_change.elapsed();
-        let refine = self.settings.quality.sampling.is_none() || still_for >= REFINE_DELAY;
+        let refine = chosen_quality.sampling.is_none() || still_for >= REFINE_DELAY;
         let quality = if refine {
-            self.settings.quality
+            chosen_quality
         } else {
-            self.ctx
-                .request_repaint_after(REFINE_DELAY.saturating_sub(still_for));
+            ctx.request_repaint_after(REFINE_DELAY.saturating_sub(still_for));
             Quality { sampling: None }
         };
-        let wanted = (self.viewing.view, self.scene.epoch, quality, style);
+        let wanted = (view, epoch, quality, style);
         if requests.submitted == Some(wanted) {
             return;
         }
-        if let Some(worker) = &self.frames.worker {
+        if let Some(worker) = &self.worker {
             worker.submit(ViewerJob {
-                scene: Arc::clone(&self.scene.loaded.scene),
-                view: self.viewing.view,
-                scene_epoch: self.scene.epoch,
+                scene: Arc::clone(scene),
+                view,
+                scene_epoch: epoch,
                 quality,
                 depth_style: style,
             });
@@ -146,34 +130,23 @@ impl ViewerApp {
         }
     }
 
-    /// Takes a frame the worker finished into the textures (or shows why it failed).
-    pub(super) fn receive_frame(&mut self) {
-        let Some(result) = self
-            .frames
-            .worker
-            .as_ref()
-            .and_then(super::super::render::worker::RenderWorker::take_finished)
-        else {
-            return;
-        };
+    /// Takes a frame the worker finished into the textures (made through `ctx` the first time).
+    /// `None` when none finished; the render's error when it failed.
+    pub(crate) fn receive(&mut self, ctx: &egui::Context) -> Option<Result<(), ViewError>> {
         let JobResult {
             job,
             output,
             render_time,
             ..
-        } = result;
+        } = self.worker.as_ref()?.take_finished()?;
         let prepared = match output {
             Ok(prepared) => prepared,
-            Err(error) => {
-                self.status = Some(Status::view_error(error));
-                return;
-            }
+            Err(error) => return Some(Err(error)),
         };
         let render_ms = render_time.as_secs_f64() * 1e3;
-        if let Some(log) = &mut self.frames.log {
+        if let Some(log) = &mut self.log {
             let wanted = (job.view, job.scene_epoch, job.quality, job.depth_style);
             let changed_at = self
-                .frames
                 .requests
                 .changed_at
                 .iter()
@@ -182,7 +155,7 @@ impl ViewerApp {
             let size = [job.view.width_px, job.view.height_px];
             log.frame(render_ms, changed_at, size);
         }
-        if let Some(shown) = &mut self.frames.shown {
+        if let Some(shown) = &mut self.shown {
             shown.colour.set(prepared.colour, TextureOptions::NEAREST);
             shown.depth.set(prepared.depth, TextureOptions::NEAREST);
             shown.frame = prepared.frame;
@@ -193,13 +166,9 @@ impl ViewerApp {
             shown.histogram = prepared.histogram;
             shown.render_ms = render_ms;
         } else {
-            let colour = self
-                .ctx
-                .load_texture("colour", prepared.colour, TextureOptions::NEAREST);
-            let depth = self
-                .ctx
-                .load_texture("depth", prepared.depth, TextureOptions::NEAREST);
-            self.frames.shown = Some(Shown {
+            let colour = ctx.load_texture("colour", prepared.colour, TextureOptions::NEAREST);
+            let depth = ctx.load_texture("depth", prepared.depth, TextureOptions::NEAREST);
+            self.shown = Some(Shown {
                 frame: prepared.frame,
                 view: job.view,
                 scene_epoch: job.scene_epoch,
@@ -211,13 +180,71 @@ impl ViewerApp {
                 render_ms,
             });
         }
-        if self
-            .status
-            .as_ref()
-            .is_some_and(|s| s.clears == Clears::WhenAFrameRenders)
-        {
-            self.status = None;
+        Some(Ok(()))
+    }
+}
+
+impl ViewerApp {
+    /// How the depth texture is coloured now.
+    pub(super) fn depth_style(&self) -> DepthStyle {
+        DepthStyle {
+            colour_map: self.settings.depth.colour_map,
+            no_hit_rgb: self.settings.depth.no_hit_rgb(),
         }
-        self.follow_depth();
+    }
+
+    /// The frame the settings, the view and the open scene ask for.
+    fn wanted(&self) -> Wanted {
+        let style = self.depth_style();
+        (
+            self.viewing.view,
+            self.scene.epoch,
+            self.settings.quality,
+            style,
+        )
+    }
+
+    /// True when the frame on screen is the current view of the current scene at the current
+    /// quality. While a scene loads this is false: the frame will change once it is in.
+    pub fn frame_is_current(&self) -> bool {
+        self.scene.loading.is_none() && self.frames.shows(self.wanted())
+    }
+
+    /// Whether the frame on screen is a one-sample preview of a supersampled quality.
+    pub fn showing_preview(&self) -> bool {
+        self.frames.shown.as_ref().is_some_and(|s| {
+            s.quality.sampling.is_none() && self.settings.quality.sampling.is_some()
+        })
+    }
+
+    /// Asks the worker for the wanted frame when it changed ([`Frames::submit_if_changed`]).
+    pub(super) fn submit_if_changed(&mut self) {
+        let wanted = self.wanted();
+        self.frames
+            .submit_if_changed(&self.scene.loaded.scene, wanted, &self.ctx);
+    }
+
+    /// Takes a finished frame in ([`Frames::receive`]): a status waiting for one clears, and
+    /// "follow" fits the depth range to it; a failed render says why.
+    pub(super) fn receive_frame(&mut self) {
+        match self.frames.receive(&self.ctx) {
+            None => {}
+            Some(Err(error)) => self.status = Some(Status::view_error(error)),
+            Some(Ok(())) => {
+                if self
+                    .status
+                    .as_ref()
+                    .is_some_and(|s| s.clears == Clears::WhenAFrameRenders)
+                {
+                    self.status = None;
+                }
+                self.viewing.follow_depth(
+                    self.settings.depth.follow,
+                    self.frames.shown.as_ref(),
+                    self.scene.epoch,
+                    self.settings.depth.auto_cut_percent,
+                );
+            }
+        }
     }
 }

@@ -127,68 +127,63 @@ impl PendingLoad {
     }
 }
 
-impl ViewerApp {
-    /// Starts loading the scene at `path` in the background; once read, it replaces the scene
-    /// on screen and is watched for changes. On failure the error is shown and the previous scene
-    /// stays. A load started while another runs replaces it.
-    pub fn open(&mut self, path: &Path) {
-        self.start_load(path, LoadKind::Open);
-    }
-
-    /// Opens the scene `bytes` named `name`, which came from no file the viewer can read (a
-    /// browser page's dropped, picked or fetched file): as [`Self::open`], without a file to
-    /// reload or watch.
-    pub fn open_bytes(&mut self, name: &str, bytes: std::sync::Arc<[u8]>) {
-        let size = (self.viewing.view.width_px, self.viewing.view.height_px);
-        match PendingLoad::start_bytes(name, bytes, size, &self.ctx) {
-            Ok(pending) => self.scene.loading = Some(pending),
+impl OpenScene {
+    /// Starts loading the scene at `path` in the background (its initial view `size_px`); `ctx`
+    /// is asked to repaint when it is in. A load that cannot start puts its error on screen.
+    fn start_load(
+        &mut self,
+        path: &Path,
+        kind: LoadKind,
+        size_px: (u32, u32),
+        ctx: &egui::Context,
+    ) {
+        match PendingLoad::start(path, kind, size_px, ctx) {
+            Ok(pending) => self.loading = Some(pending),
             Err(error) => {
-                self.scene.error = Some(format!("{name}: cannot start loading: {error}"));
+                self.error = Some(format!("{}: cannot start loading: {error}", path.display()));
             }
         }
     }
 
-    /// Reads the open file again (in the background). A broken file shows its error and the last
-    /// good scene stays; a good one replaces the scene and keeps the user's camera unless it was
-    /// still the file's.
-    pub(crate) fn reload(&mut self) {
-        // A file that failed to open is tried again: it may have been fixed.
-        if let Some(failed) = self.scene.failed_open.clone() {
-            self.start_load(&failed, LoadKind::Open);
-            return;
+    /// Starts loading the scene `bytes` named `name`, as [`Self::start_load`].
+    fn start_bytes(
+        &mut self,
+        name: &str,
+        bytes: std::sync::Arc<[u8]>,
+        size_px: (u32, u32),
+        ctx: &egui::Context,
+    ) {
+        match PendingLoad::start_bytes(name, bytes, size_px, ctx) {
+            Ok(pending) => self.loading = Some(pending),
+            Err(error) => self.error = Some(format!("{name}: cannot start loading: {error}")),
         }
-        let Some(path) = self.scene.loaded.path.clone() else {
-            self.status = Some(Status::info(
+    }
+
+    /// What Reload loads: a file that failed to open (it may have been fixed) or the open file;
+    /// why not, for the embedded scene or one that came from a page.
+    fn reload_target(&self) -> Result<(PathBuf, LoadKind), Status> {
+        if let Some(failed) = &self.failed_open {
+            return Ok((failed.clone(), LoadKind::Open));
+        }
+        let Some(path) = &self.loaded.path else {
+            return Err(Status::info(
                 "the embedded default scene has no file to reload",
             ));
-            return;
         };
-        if self.scene.loaded.in_memory {
-            self.status = Some(Status::info(format!(
+        if self.loaded.in_memory {
+            return Err(Status::info(format!(
                 "{} came from the page, not from a file: open it again to reload it",
                 path.display()
             )));
-            return;
         }
-        self.start_load(&path, LoadKind::Reload);
+        Ok((path.clone(), LoadKind::Reload))
     }
 
-    fn start_load(&mut self, path: &Path, kind: LoadKind) {
-        let size = (self.viewing.view.width_px, self.viewing.view.height_px);
-        match PendingLoad::start(path, kind, size, &self.ctx) {
-            Ok(pending) => self.scene.loading = Some(pending),
-            Err(error) => {
-                self.scene.error =
-                    Some(format!("{}: cannot start loading: {error}", path.display()));
-            }
-        }
-    }
-
-    /// Takes a finished load: adopts the scene or shows the error.
-    pub(super) fn poll_load(&mut self) {
-        let Some(pending) = &self.scene.loading else {
-            return;
-        };
+    /// Takes a finished load: the scene, its file and why it was loaded. A failed one puts its
+    /// error on screen (and a file that failed to open is watched, so that fixing it opens it);
+    /// one still running asks `ctx` to look again soon.
+    fn poll(&mut self, ctx: &egui::Context) -> Option<(LoadedScene, PathBuf, LoadKind)> {
+        let pending = self.loading.as_ref()?;
         let result = match pending.task.poll() {
             Poll::Running => {
                 let wait = if pending.shows_progress() {
@@ -196,8 +191,8 @@ impl ViewerApp {
                 } else {
                     SHOW_PROGRESS_AFTER
                 };
-                self.ctx.request_repaint_after(wait);
-                return;
+                ctx.request_repaint_after(wait);
+                return None;
             }
             Poll::Done(result) => result,
             Poll::Lost => Err(format!(
@@ -206,16 +201,65 @@ impl ViewerApp {
             )),
         };
         let (path, kind, from_bytes) = (pending.path.clone(), pending.kind, pending.from_bytes);
-        self.scene.loading = None;
-        let loaded = match result {
-            Ok(loaded) => loaded,
+        self.loading = None;
+        match result {
+            Ok(loaded) => Some((loaded, path, kind)),
             Err(error) => {
-                self.scene.error = Some(error);
+                self.error = Some(error);
                 if kind == LoadKind::Open && !from_bytes {
-                    self.watch_failed_open(&path);
+                    self.failed_open = Some(path.clone());
+                    let ctx = ctx.clone();
+                    // A file that does not exist cannot be watched; Reload still tries it again.
+                    self.watcher = FileWatcher::watch(&path, move || ctx.request_repaint()).ok();
                 }
-                return;
+                None
             }
+        }
+    }
+
+    /// Puts `loaded` on screen, a new load (the same view of it renders again), its error gone.
+    fn adopt(&mut self, loaded: LoadedScene) {
+        self.loaded = loaded;
+        self.epoch += 1;
+        self.error = None;
+    }
+}
+
+impl ViewerApp {
+    /// Starts loading the scene at `path` in the background; once read, it replaces the scene
+    /// on screen and is watched for changes. On failure the error is shown and the previous scene
+    /// stays. A load started while another runs replaces it.
+    pub fn open(&mut self, path: &Path) {
+        let size = (self.viewing.view.width_px, self.viewing.view.height_px);
+        self.scene.start_load(path, LoadKind::Open, size, &self.ctx);
+    }
+
+    /// Opens the scene `bytes` named `name`, which came from no file the viewer can read (a
+    /// browser page's dropped, picked or fetched file): as [`Self::open`], without a file to
+    /// reload or watch.
+    pub fn open_bytes(&mut self, name: &str, bytes: std::sync::Arc<[u8]>) {
+        let size = (self.viewing.view.width_px, self.viewing.view.height_px);
+        self.scene.start_bytes(name, bytes, size, &self.ctx);
+    }
+
+    /// Reads the open file again (in the background). A broken file shows its error and the last
+    /// good scene stays; a good one replaces the scene and keeps the user's camera unless it was
+    /// still the file's.
+    pub(crate) fn reload(&mut self) {
+        match self.scene.reload_target() {
+            Ok((path, kind)) => {
+                let size = (self.viewing.view.width_px, self.viewing.view.height_px);
+                self.scene.start_load(&path, kind, size, &self.ctx);
+            }
+            Err(status) => self.status = Some(status),
+        }
+    }
+
+    /// Takes a finished load ([`OpenScene::poll`]) and puts it on screen: an open in the view it
+    /// was last seen in, a reload in the user's camera unless that was still the file's.
+    pub(super) fn poll_load(&mut self) {
+        let Some((loaded, path, kind)) = self.scene.poll(&self.ctx) else {
+            return;
         };
         match kind {
             LoadKind::Open => self.adopt_opened(loaded, &path),
@@ -232,14 +276,6 @@ impl ViewerApp {
                 }
             }
         }
-    }
-
-    /// Watches a file that failed to open, so that fixing it opens it.
-    fn watch_failed_open(&mut self, path: &Path) {
-        self.scene.failed_open = Some(path.to_path_buf());
-        let ctx = self.ctx.clone();
-        // A file that does not exist cannot be watched; Reload still tries it again.
-        self.scene.watcher = FileWatcher::watch(path, move || ctx.request_repaint()).ok();
     }
 
     /// Puts a newly opened scene on screen in the view it was last seen in (if it was), remembers
@@ -280,16 +316,13 @@ impl ViewerApp {
 
     /// Puts `loaded` on screen; `keep_view` keeps the current camera and depth range.
     fn adopt(&mut self, loaded: LoadedScene, keep_view: bool) {
-        let (width_px, height_px) = (self.viewing.view.width_px, self.viewing.view.height_px);
-        self.scene.loaded = loaded;
+        self.scene.adopt(loaded);
         if !keep_view {
             self.viewing.view = View {
-                width_px,
-                height_px,
+                width_px: self.viewing.view.width_px,
+                height_px: self.viewing.view.height_px,
                 ..self.scene.loaded.file_view
             };
         }
-        self.scene.epoch += 1;
-        self.scene.error = None;
     }
 }

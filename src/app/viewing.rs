@@ -2,15 +2,20 @@
 //! doing it), frame all, reset the camera or the depth range, undo and redo, and the named views
 //! of the open scene file.
 
+use std::path::Path;
+
 use glam::{DVec2, DVec3};
 
 use super::ViewerApp;
+use super::render_requests::Shown;
 use super::saved_views::{History, NamedView, SavedView, SceneViews};
 use super::status::Status;
 use super::ui::magnifier::Magnifier;
 use crate::explore::depth_stats::auto_range;
 use crate::explore::navigate;
-use crate::render::View;
+use crate::render::depth_map::DepthRange;
+use crate::render::{Frame, View};
+use crate::scene::Scene;
 
 /// The pointer's position (image pixels, y up) and the pinned point (world coordinates, so the
 /// pin stays on what was pinned while the view moves).
@@ -50,122 +55,147 @@ impl Viewing {
     }
 }
 
-impl ViewerApp {
-    /// "Auto range": fits the depth range to the t visible in the frame on screen, ignoring
-    /// the settings' percentage at each end. Says so when no sphere is visible.
-    pub fn auto_range(&mut self) {
-        let cut = self.settings.depth.auto_cut_percent;
-        match self
-            .frames
-            .shown
-            .as_ref()
-            .and_then(|s| auto_range(&s.frame, cut))
-        {
-            Some(range) => self.viewing.view.depth_range = range,
-            None => self.status = Some(Status::info("auto range: no sphere is visible")),
+impl Viewing {
+    /// "Auto range": fits the depth range to the t visible in `shown` (the frame on screen),
+    /// ignoring `cut_percent` at each end. Says so when no sphere is visible.
+    pub(crate) fn auto_range(&mut self, shown: Option<&Frame>, cut_percent: f64) -> Option<Status> {
+        match shown.and_then(|frame| auto_range(frame, cut_percent)) {
+            Some(range) => {
+                self.view.depth_range = range;
+                None
+            }
+            None => Some(Status::info("auto range: no sphere is visible")),
         }
     }
 
-    /// "Follow": once a frame of a changed camera is on screen, fits the depth range to it.
-    pub(super) fn follow_depth(&mut self) {
-        if !self.settings.depth.follow {
-            self.viewing.followed = None;
+    /// "Follow": once `shown` (the frame on screen, of a scene load `current_epoch` when it is of
+    /// the open scene) is of a changed camera, fits the depth range to it. `follow` off forgets
+    /// the camera last followed.
+    pub(crate) fn follow_depth(
+        &mut self,
+        follow: bool,
+        shown: Option<&Shown>,
+        current_epoch: u64,
+        cut_percent: f64,
+    ) {
+        if !follow {
+            self.followed = None;
             return;
         }
-        let Some(shown) = &self.frames.shown else {
+        let Some(shown) = shown else {
             return;
         };
         let camera = SavedView::of(&View {
-            depth_range: crate::render::depth_map::DepthRange::new(0.0, 0.0),
+            depth_range: DepthRange::new(0.0, 0.0),
             ..shown.view
         });
-        if self.viewing.followed == Some(camera) || shown.scene_epoch != self.scene.epoch {
+        if self.followed == Some(camera) || shown.scene_epoch != current_epoch {
             return;
         }
-        self.viewing.followed = Some(camera);
-        let cut = self.settings.depth.auto_cut_percent;
-        if let Some(range) = auto_range(&shown.frame, cut) {
-            self.viewing.view.depth_range = range;
+        self.followed = Some(camera);
+        if let Some(range) = auto_range(&shown.frame, cut_percent) {
+            self.view.depth_range = range;
         }
     }
 
-    /// "Frame all": fits centre and size to the scene's bounds (direction and up stay).
-    pub fn frame_all(&mut self) {
-        self.viewing.view = navigate::frame_all(&self.scene.loaded.scene, &self.viewing.view);
+    /// "Frame all": fits centre and size to `scene`'s bounds (direction and up stay).
+    pub(crate) fn frame_all(&mut self, scene: &Scene) {
+        self.view = navigate::frame_all(scene, &self.view);
     }
 
-    /// Restores the file's camera, keeping the image size and the depth range.
-    pub(crate) fn reset_view(&mut self) {
-        self.viewing.view = View {
-            width_px: self.viewing.view.width_px,
-            height_px: self.viewing.view.height_px,
-            depth_range: self.viewing.view.depth_range,
-            ..self.scene.loaded.file_view
+    /// Restores the file's camera (`file_view`), keeping the image size and the depth range.
+    pub(crate) fn reset_view(&mut self, file_view: &View) {
+        self.view = View {
+            width_px: self.view.width_px,
+            height_px: self.view.height_px,
+            depth_range: self.view.depth_range,
+            ..*file_view
         };
     }
 
-    /// Restores the depth range the file's view started with.
-    pub(crate) fn reset_depth(&mut self) {
-        self.viewing.view.depth_range = self.scene.loaded.file_view.depth_range;
+    /// Restores the depth range the file's view (`file_view`) started with.
+    pub(crate) fn reset_depth(&mut self, file_view: &View) {
+        self.view.depth_range = file_view.depth_range;
     }
 
     /// Back to the view before the last change (a burst of changes is one step).
-    pub(crate) fn undo(&mut self) {
-        match self.viewing.history.undo(&self.viewing.view) {
-            Some(view) => self.viewing.view = view,
-            None => self.status = Some(Status::info("nothing to undo")),
+    pub(crate) fn undo(&mut self) -> Option<Status> {
+        match self.history.undo(&self.view) {
+            Some(view) => {
+                self.view = view;
+                None
+            }
+            None => Some(Status::info("nothing to undo")),
         }
     }
 
     /// Forward again after an undo.
-    pub(crate) fn redo(&mut self) {
-        match self.viewing.history.redo(&self.viewing.view) {
-            Some(view) => self.viewing.view = view,
-            None => self.status = Some(Status::info("nothing to redo")),
+    pub(crate) fn redo(&mut self) -> Option<Status> {
+        match self.history.redo(&self.view) {
+            Some(view) => {
+                self.view = view;
+                None
+            }
+            None => Some(Status::info("nothing to redo")),
         }
     }
 
-    /// The named views of the open scene file, for changing.
-    fn named_views(&mut self) -> Option<&mut Vec<NamedView>> {
-        let key = SceneViews::key(self.scene.loaded.path.as_ref()?);
-        Some(self.settings.views.named.entry(key).or_default())
-    }
-
-    /// Names the current view.
-    pub(crate) fn name_view(&mut self, name: &str) {
-        let name = name.to_owned();
-        let view = SavedView::of(&self.viewing.view);
-        let Some(named) = self.named_views() else {
-            self.status = Some(Status::error(
-                "views are kept per scene file: open one first",
-            ));
-            return;
+    /// Names the current view among `saved`'s named views of the scene file at `path`.
+    pub(crate) fn name_view(
+        &self,
+        saved: &mut SceneViews,
+        path: Option<&Path>,
+        name: &str,
+    ) -> Status {
+        let Some(named) = named_views(saved, path) else {
+            return Status::error("views are kept per scene file: open one first");
         };
         named.retain(|existing| existing.name != name);
         named.push(NamedView {
-            name: name.clone(),
-            view,
+            name: name.to_owned(),
+            view: SavedView::of(&self.view),
         });
-        self.status = Some(Status::info(format!("named the view '{name}'")));
+        Status::info(format!("named the view '{name}'"))
     }
 
-    /// Goes to the named view at `index`.
-    pub(crate) fn go_to_view(&mut self, index: usize) {
-        let current = self.viewing.view;
-        if let Some(named) = self
-            .named_views()
-            .and_then(|views| views.get(index).cloned())
-        {
-            self.viewing.view = named.view.applied_to(&current);
+    /// Goes to the named view at `index` of the scene file at `path`.
+    pub(crate) fn go_to_view(&mut self, saved: &mut SceneViews, path: Option<&Path>, index: usize) {
+        if let Some(named) = named_views(saved, path).and_then(|views| views.get(index).cloned()) {
+            self.view = named.view.applied_to(&self.view);
         }
     }
+}
 
-    /// Forgets the named view at `index`.
-    pub(crate) fn forget_view(&mut self, index: usize) {
-        if let Some(named) = self.named_views()
-            && index < named.len()
-        {
-            named.remove(index);
-        }
+/// The named views of the scene file at `path` among `saved`, for changing; `None` for a scene
+/// with no file.
+fn named_views<'a>(
+    saved: &'a mut SceneViews,
+    path: Option<&Path>,
+) -> Option<&'a mut Vec<NamedView>> {
+    Some(saved.named.entry(SceneViews::key(path?)).or_default())
+}
+
+/// Forgets the named view at `index` of the scene file at `path`.
+pub(crate) fn forget_view(saved: &mut SceneViews, path: Option<&Path>, index: usize) {
+    if let Some(named) = named_views(saved, path)
+        && index < named.len()
+    {
+        named.remove(index);
+    }
+}
+
+impl ViewerApp {
+    /// "Auto range" on the frame on screen (the settings' cut at each ends).
+    pub fn auto_range(&mut self) {
+        let shown = self.frames.shown.as_ref().map(|shown| &*shown.frame);
+        let status = self
+            .viewing
+            .auto_range(shown, self.settings.depth.auto_cut_percent);
+        self.say(status);
+    }
+
+    /// "Frame all" on the open scene.
+    pub fn frame_all(&mut self) {
+        self.viewing.frame_all(&self.scene.loaded.scene);
     }
 }
