@@ -5,7 +5,6 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use super::background::{Poll, Task};
 #[cfg(not(target_arch = "wasm32"))]
 use super::dialogs::spawn_dialog;
 use super::dialogs::{DialogAnswer, DialogKind};
@@ -310,26 +309,15 @@ impl ViewerApp {
         });
     }
 
-    /// Runs `write` as a task; its message lands in the status bar.
+    /// Runs `write` as a task (`Writes::start`); its message lands in the
+    /// status bar.
     #[cfg(not(target_arch = "wasm32"))]
     fn write_in_background(
         &mut self,
         running: &str,
         write: impl FnOnce() -> Result<String, String> + Send + 'static,
     ) {
-        if self.writes.task.is_some() {
-            self.status = Some(Status::error("wait: a file is still being written"));
-            return;
-        }
-        match Task::spawn("export", &self.ctx, move |_| write()) {
-            Ok(task) => {
-                self.writes.task = Some(task);
-                self.status = Some(Status::info(running));
-            }
-            Err(error) => {
-                self.status = Some(Status::error(format!("cannot start writing: {error}")));
-            }
-        }
+        self.status = Some(self.writes.start(running, write, &self.ctx));
     }
 
     /// In a browser page: the browser's file chooser to open a scene or an image; export and save
@@ -426,18 +414,14 @@ impl ViewerApp {
                 }
             }
         }
-        let finished = match self.writes.task.as_ref().map(Task::poll) {
-            None | Some(Poll::Running) => return,
-            Some(Poll::Done(Ok(done))) => Status::info(done),
-            Some(Poll::Done(Err(error))) => Status::error(format!("writing failed: {error}")),
-            Some(Poll::Lost) => Status::error("writing failed: the writing thread stopped"),
+        let Some(finished) = self.writes.poll() else {
+            return;
         };
         if finished.is_error() {
             // Nothing was written, so no reload of our own follows.
             self.scene.saving_over = false;
         }
         self.status = Some(finished);
-        self.writes.task = None;
     }
 }
 

@@ -23,6 +23,7 @@ use super::ViewerApp;
 use super::background::{Poll, Task};
 use super::status::Status;
 use crate::compare::picture::{heat_map, heat_map_marked};
+use crate::compare::their_image::{decode_their_image, read_their_image};
 use crate::compare::{Difference, Theirs, diagnose, infer_depth_range};
 use crate::render::depth_map::DepthRange;
 use crate::render::sampling::Sampling;
@@ -143,42 +144,6 @@ pub(crate) struct CompareState {
     pub(crate) current: Option<Comparison>,
     /// A comparison being computed.
     pending: Option<Task<Result<ComparisonPixels, String>>>,
-}
-
-impl CompareState {
-    /// A comparison is being computed.
-    pub(crate) fn busy(&self) -> bool {
-        self.pending.is_some()
-    }
-
-    /// The size the view is held at while their image is compared.
-    pub(crate) fn held_size_px(&self) -> Option<(u32, u32)> {
-        let current = self.current.as_ref()?;
-        matches!(current.pixels.source, CompareSource::File(_))
-            .then(|| current.pixels.theirs.dimensions())
-    }
-}
-
-/// Reads an image file to compare (any size; TGA, PNG and what else the `image` crate reads).
-pub fn read_their_image(path: &Path) -> Result<RgbImage, String> {
-    let bytes = std::fs::read(path)
-        .map_err(|error| format!("cannot read '{}': {error}", path.display()))?;
-    decode_their_image(path, &bytes)
-}
-
-/// Decodes the image `bytes` named `name` (the format by the name's extension, as for a file,
-/// unless the bytes say otherwise), as an 8-bit RGB picture.
-pub fn decode_their_image(name: &Path, bytes: &[u8]) -> Result<RgbImage, String> {
-    let mut reader = image::ImageReader::new(std::io::Cursor::new(bytes));
-    if let Ok(format) = image::ImageFormat::from_path(name) {
-        reader.set_format(format);
-    }
-    let image = reader
-        .with_guessed_format()
-        .map_err(|error| format!("cannot read '{}': {error}", name.display()))?
-        .decode()
-        .map_err(|error| format!("cannot read the image '{}': {error}", name.display()))?;
-    Ok(image.to_rgb8())
 }
 
 /// The exact picture of `kind` for `view`.
@@ -324,6 +289,18 @@ fn to_colour_image(image: &RgbImage) -> ColorImage {
 }
 
 impl CompareState {
+    /// A comparison is being computed.
+    pub(crate) fn busy(&self) -> bool {
+        self.pending.is_some()
+    }
+
+    /// The size the view is held at while their image is compared.
+    pub(crate) fn held_size_px(&self) -> Option<(u32, u32)> {
+        let current = self.current.as_ref()?;
+        matches!(current.pixels.source, CompareSource::File(_))
+            .then(|| current.pixels.theirs.dimensions())
+    }
+
     /// Starts `work` (a comparison) in the background; `ctx` repaints when it is done.
     fn start(
         &mut self,
@@ -351,16 +328,12 @@ impl CompareState {
     /// Their depth image on screen, compared at another depth range than `depth_range`: its
     /// file, to compare again.
     fn stale_depth_file(&self, depth_range: DepthRange) -> Option<PathBuf> {
-        let current = self.current.as_ref()?;
-        match &current.pixels.source {
-            CompareSource::File(path)
-                if current.pixels.kind == ImageKind::Depth
-                    && current.pixels.view.depth_range != depth_range =>
-            {
-                Some(path.clone())
-            }
-            _ => None,
-        }
+        let pixels = &self.current.as_ref()?.pixels;
+        let CompareSource::File(path) = &pixels.source else {
+            return None;
+        };
+        (pixels.kind == ImageKind::Depth && pixels.view.depth_range != depth_range)
+            .then(|| path.clone())
     }
 
     /// Takes a finished comparison in, its textures made through `ctx`. `Ok(Some(view))` with
@@ -462,26 +435,29 @@ impl CompareState {
 impl ViewerApp {
     /// Opens the image at `path` and compares it with the exact render of the open scene.
     pub(crate) fn compare_with_file(&mut self, path: PathBuf, kind: ImageKind) {
-        let scene = Arc::clone(&self.scene.loaded.scene);
-        let depth_view = self.viewing.view;
-        self.compare.kind = kind;
-        let status = self.compare.start(&self.ctx, move || {
-            let theirs = read_their_image(&path)?;
-            compare_file(&scene, &path, theirs, kind, &depth_view)
-        });
-        self.say(status);
+        self.compare_theirs(path, kind, read_their_image);
     }
 
     /// Compares the image `bytes` named `name` (a browser page's dropped or picked file) with the
     /// exact render, as [`Self::compare_with_file`] does a file.
     pub fn compare_with_bytes(&mut self, name: &str, bytes: Arc<[u8]>, kind: ImageKind) {
+        self.compare_theirs(name.into(), kind, move |path| {
+            decode_their_image(path, &bytes)
+        });
+    }
+
+    /// Compares the image `read` gets for `path` with the exact render, in the background.
+    fn compare_theirs(
+        &mut self,
+        path: PathBuf,
+        kind: ImageKind,
+        read: impl FnOnce(&Path) -> Result<RgbImage, String> + Send + 'static,
+    ) {
         let scene = Arc::clone(&self.scene.loaded.scene);
         let depth_view = self.viewing.view;
-        let path = PathBuf::from(name);
         self.compare.kind = kind;
         let status = self.compare.start(&self.ctx, move || {
-            let theirs = decode_their_image(&path, &bytes)?;
-            compare_file(&scene, &path, theirs, kind, &depth_view)
+            compare_file(&scene, &path, read(&path)?, kind, &depth_view)
         });
         self.say(status);
     }

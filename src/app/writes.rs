@@ -5,9 +5,10 @@
 
 use std::path::PathBuf;
 
-use super::background::Task;
+use super::background::{Poll, Task};
 use super::confirm::PendingReplace;
 use super::dialogs::PendingDialog;
+use super::status::Status;
 
 /// The writes' state.
 pub(crate) struct Writes {
@@ -21,4 +22,39 @@ pub(crate) struct Writes {
     pub(crate) dialog_note: Option<&'static str>,
     /// The `raytracer` binary export scripts run.
     pub(crate) program: Option<PathBuf>,
+}
+
+impl Writes {
+    /// Starts `write` in the background (`ctx` repaints when it is done), unless a write is still
+    /// running: what the status bar says meanwhile.
+    #[cfg(not(target_arch = "wasm32"))]
+    pub(crate) fn start(
+        &mut self,
+        running: &str,
+        write: impl FnOnce() -> Result<String, String> + Send + 'static,
+        ctx: &egui::Context,
+    ) -> Status {
+        if self.task.is_some() {
+            return Status::error("wait: a file is still being written");
+        }
+        match Task::spawn("export", ctx, move |_| write()) {
+            Ok(task) => {
+                self.task = Some(task);
+                Status::info(running)
+            }
+            Err(error) => Status::error(format!("cannot start writing: {error}")),
+        }
+    }
+
+    /// The finished write's message (an error when it failed); `None` while none finished.
+    pub(crate) fn poll(&mut self) -> Option<Status> {
+        let finished = match self.task.as_ref().map(Task::poll)? {
+            Poll::Running => return None,
+            Poll::Done(Ok(done)) => Status::info(done),
+            Poll::Done(Err(error)) => Status::error(format!("writing failed: {error}")),
+            Poll::Lost => Status::error("writing failed: the writing thread stopped"),
+        };
+        self.task = None;
+        Some(finished)
+    }
 }

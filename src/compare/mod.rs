@@ -7,12 +7,14 @@
 //! * [`diagnosis`]: which set of mistakes explains a difference, if any does.
 //! * [`depth_range`]: the depth range a depth image was most likely made over.
 //! * [`picture`]: the difference picture (theirs, exact, heat map, legend).
+//! * [`their_image`]: reading the image a user compares.
 
 pub mod depth_range;
 pub mod diagnosis;
 pub mod difference;
 pub mod mistake;
 pub mod picture;
+pub mod their_image;
 pub mod variant;
 
 pub use depth_range::infer_depth_range;
