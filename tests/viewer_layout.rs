@@ -109,13 +109,20 @@ fn status_top(harness: &App) -> f32 {
         .fold(f32::NEG_INFINITY, f32::max)
 }
 
-#[test]
-fn a_pinned_and_a_hovered_pixel_are_read_whole_at_1600_by_900() {
-    let mut harness = viewer_sized(Some(scene_path("scene1_02.txt")), vec2(1600.0, 900.0), 1.0);
+/// scene1_02 in a `size` window, the colour image's centre pinned and the depth image's hovered:
+/// the viewer, the depth image's rectangle and the probe's lines.
+fn pinned_and_hovered(size: egui::Vec2) -> (App, Rect, Vec<(String, Rect)>) {
+    let mut harness = viewer_sized(Some(scene_path("scene1_02.txt")), size, 1.0);
     let colour = harness.get_by_label("colour image").rect();
     let depth = harness.get_by_label("depth image").rect();
     pin_and_hover(&mut harness, colour.center(), depth.center());
     let lines = probe_line_rects(&harness);
+    (harness, depth, lines)
+}
+
+#[test]
+fn a_pinned_and_a_hovered_pixel_are_read_whole_at_1600_by_900() {
+    let (harness, depth, lines) = pinned_and_hovered(vec2(1600.0, 900.0));
     assert!(lines.len() >= 8, "two hits of four lines: {lines:?}");
     let status_top = status_top(&harness);
     for (line, rect) in &lines {
@@ -129,11 +136,7 @@ fn a_pinned_and_a_hovered_pixel_are_read_whole_at_1600_by_900() {
 
 #[test]
 fn at_800_by_600_the_probe_wraps_its_lines_and_scrolls_to_the_last() {
-    let mut harness = viewer_sized(Some(scene_path("scene1_02.txt")), vec2(800.0, 600.0), 1.0);
-    let colour = harness.get_by_label("colour image").rect();
-    let depth = harness.get_by_label("depth image").rect();
-    pin_and_hover(&mut harness, colour.center(), depth.center());
-    let lines = probe_line_rects(&harness);
+    let (mut harness, depth, lines) = pinned_and_hovered(vec2(800.0, 600.0));
     // Nothing is cut on the right: the longest lines wrap onto a second row (of 11-point text).
     for (line, rect) in &lines {
         assert!(rect.right() <= depth.left(), "{line:?} at {rect:?}");

@@ -47,7 +47,8 @@ pub const DEFAULT_EXPORT_NAME: &str = "raytracer";
 /// separator (`/`, and `\` where that is one too).
 pub(crate) fn names_a_folder(path: &Path) -> bool {
     let text = path.as_os_str().to_string_lossy();
-    path.is_dir() || text.ends_with('/') || text.chars().last().is_some_and(std::path::is_separator)
+    // `/` is a separator everywhere, `\\` on Windows too.
+    path.is_dir() || text.chars().last().is_some_and(std::path::is_separator)
 }
 
 /// The base name of an export into a folder of the scene file `scene_path`: the file's stem
