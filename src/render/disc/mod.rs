@@ -102,8 +102,7 @@ pub fn project_discs(scene: &Scene, view: &View, basis: &CameraBasis) -> Vec<Dis
 /// Spheres projected per parallel task.
 const PROJECT_CHUNK: usize = 16_384;
 
-/// [`project_discs`], and their [`Depths`] on the view's grid, gathered on the way (the discs of
-/// a large scene are read once less).
+/// [`project_discs`], and their [`Depths`] on the view's grid.
 pub(crate) fn project_discs_with_depths(
     scene: &Scene,
     view: &View,
@@ -112,29 +111,25 @@ pub(crate) fn project_discs_with_depths(
     crate::render::phases::time("project", || project_in_parallel(scene, view, basis))
 }
 
-/// [`project_discs_with_depths`]'s work, chunk by chunk in parallel.
+/// [`project_discs_with_depths`]'s work in parallel: the discs, then their depths chunk by chunk
+/// (summed in file order, whatever the threads).
 fn project_in_parallel(scene: &Scene, view: &View, basis: &CameraBasis) -> (Vec<Disc>, Depths) {
     use rayon::prelude::*;
-    // Placeholders written in parallel: `vec![…; n]` writes (and, in a fresh process, faults in)
-    // every page on one thread, a serial part on many cores (docs/scaling.md).
-    let mut discs: Vec<Disc> = (0..scene.spheres.len())
-        .into_par_iter()
-        .map(|_| Disc::NONE)
+    // Written where they land by an indexed collect: no placeholders written first (on one
+    // thread, `vec![…; n]` was a serial part on many cores: docs/scaling.md).
+    let discs: Vec<Disc> = scene
+        .spheres
+        .par_iter()
+        .zip(0..scene.spheres.len() as u32)
+        .map(|(sphere, index)| project_sphere(sphere, index, view, basis))
         .collect();
     let grid = view.grid();
     let depths = discs
-        .par_chunks_mut(PROJECT_CHUNK)
-        .zip(scene.spheres.par_chunks(PROJECT_CHUNK))
-        .enumerate()
-        .map(|(chunk, (discs, spheres))| {
-            // Sphere counts fit u32 (the parser's limit).
-            let first = (chunk * PROJECT_CHUNK) as u32;
-            let mut depths = Depths::NONE;
-            for ((disc, sphere), index) in discs.iter_mut().zip(spheres).zip(first..) {
-                *disc = project_sphere(sphere, index, view, basis);
-                depths = depths.with(disc, &grid);
-            }
-            depths
+        .par_chunks(PROJECT_CHUNK)
+        .map(|discs| {
+            discs
+                .iter()
+                .fold(Depths::NONE, |depths, disc| depths.with(disc, &grid))
         })
         .collect::<Vec<Depths>>();
     (discs, merge_in_order(&depths))
