@@ -17,11 +17,15 @@ pub(super) struct Kept<'a> {
 /// The discs of `kept` (per chunk, its pass list and the positions in it of the discs kept)
 /// ordered by slice, in chunk order within a slice: a counting sort, in parallel (16 cores
 /// measured the one-thread sort at a sixth of a dense frame: docs/scaling.md). Every kept disc's
-/// slice lies in `slices`, the pass's; the sort's tables span those alone. The slices are split into as many groups of about equal discs
-/// as there are threads. Each chunk orders the positions of its kept discs by slice; each group's
-/// task then moves, chunk by chunk, the discs of its own slices into its own part of the result.
-/// The result is the same whatever the grouping.
+/// slice lies in `slices`, the pass's; the sort's tables span those alone. The slices are split
+/// into as many groups of about equal discs as there are threads. Each chunk orders the positions
+/// of its kept discs by slice; each group's task then moves, chunk by chunk, the discs of its own
+/// slices into its own part of the result. The result is the same whatever the grouping; on one
+/// thread, [`by_slice_on_one_thread`] makes it without the chunks' orders.
 pub(super) fn by_slice(kept: &[Kept<'_>], slices: Range<usize>) -> Vec<Disc> {
+    if rayon::current_num_threads() == 1 {
+        return by_slice_on_one_thread(kept, slices);
+    }
     let slice_count = slices.len();
     let first_slice = slices.start;
     // Per chunk: where each slice's kept discs start in its order, and their positions by slice.
@@ -100,5 +104,30 @@ pub(super) fn by_slice(kept: &[Kept<'_>], slices: Range<usize>) -> Vec<Disc> {
             }
         }
     });
+    all
+}
+
+/// [`by_slice`] on one thread: each kept disc moved once, straight to its place (a slice's
+/// cursor), in chunk order. The chunks' orders by slice, which let the threads' groups skip what
+/// is not theirs, cost more than the sort itself on one thread.
+fn by_slice_on_one_thread(kept: &[Kept<'_>], slices: Range<usize>) -> Vec<Disc> {
+    let first_slice = slices.start;
+    let mut cursor = vec![0usize; slices.len() + 1];
+    for kept in kept {
+        for &at in kept.positions {
+            cursor[usize::from(kept.slices[at as usize]) - first_slice + 1] += 1;
+        }
+    }
+    for slice in 0..slices.len() {
+        cursor[slice + 1] += cursor[slice];
+    }
+    let mut all = vec![Disc::NONE; cursor[slices.len()]];
+    for kept in kept {
+        for &at in kept.positions {
+            let slot = &mut cursor[usize::from(kept.slices[at as usize]) - first_slice];
+            all[*slot] = kept.discs[at as usize];
+            *slot += 1;
+        }
+    }
     all
 }
