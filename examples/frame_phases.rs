@@ -21,31 +21,17 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 #[path = "support/frame_args.rs"]
 mod frame_args;
 
-use std::sync::Arc;
 use std::time::Instant;
 
-use raytracer::app::render_job::{ViewerJob, prepare_frame};
-use raytracer::explore::initial_depth_range;
+use raytracer::app::render_job::prepare_frame;
 use raytracer::render::phases;
 
 /// One frame's phases, summed by name in the order first seen, with the whole frame last.
 type FramePhases = Vec<(&'static str, f64)>;
 
 fn main() {
-    let frame_args::FrameArgs {
-        scene,
-        mut view,
-        runs,
-        gap,
-    } = frame_args::frame_args("frame_phases SCENE WIDTH HEIGHT [RUNS [GAP_MS]]", 15);
-    view.depth_range = initial_depth_range(&scene, &view);
-    let job = ViewerJob {
-        scene: Arc::new(scene),
-        view,
-        scene_epoch: 0,
-        quality: Default::default(),
-        depth_style: Default::default(),
-    };
+    let frame_args::FrameArgs { job, runs, gap } =
+        frame_args::frame_args("frame_phases SCENE WIDTH HEIGHT [RUNS [GAP_MS]]", 15);
     let frame = || {
         let started = Instant::now();
         let (output, recorded) = phases::measure(|| prepare_frame(&job));

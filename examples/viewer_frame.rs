@@ -16,27 +16,13 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 #[path = "support/frame_args.rs"]
 mod frame_args;
 
-use std::sync::Arc;
 use std::time::Instant;
 
-use raytracer::app::render_job::{ViewerJob, prepare_frame};
-use raytracer::explore::initial_depth_range;
+use raytracer::app::render_job::prepare_frame;
 
 fn main() {
-    let frame_args::FrameArgs {
-        scene,
-        mut view,
-        runs,
-        gap,
-    } = frame_args::frame_args("viewer_frame SCENE WIDTH HEIGHT [RUNS [GAP_MS]]", 31);
-    view.depth_range = initial_depth_range(&scene, &view);
-    let job = ViewerJob {
-        scene: Arc::new(scene),
-        view,
-        scene_epoch: 0,
-        quality: Default::default(),
-        depth_style: Default::default(),
-    };
+    let frame_args::FrameArgs { job, runs, gap } =
+        frame_args::frame_args("viewer_frame SCENE WIDTH HEIGHT [RUNS [GAP_MS]]", 31);
     let mut times: Vec<f64> = (0..runs)
         .map(|_| {
             std::thread::sleep(gap);

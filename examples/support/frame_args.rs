@@ -1,14 +1,17 @@
 //! The arguments the frame-timing examples share: `SCENE WIDTH HEIGHT [RUNS [GAP_MS]]`, the
-//! scene loaded and its own camera's view at that size.
+//! scene loaded and the viewer's job for its own camera's view at that size.
 
+use std::sync::Arc;
+
+use raytracer::app::render_job::ViewerJob;
+use raytracer::explore::initial_depth_range;
 use raytracer::render::View;
 use raytracer::render::depth_map::DepthRange;
-use raytracer::scene::Scene;
 
-/// A scene file's view to time, and how many times.
+/// The viewer's job to time (a scene file's own camera at the size asked for, the depth range the
+/// viewer starts with, one sample, the default depth style), and how many times.
 pub(crate) struct FrameArgs {
-    pub(crate) scene: Scene,
-    pub(crate) view: View,
+    pub(crate) job: ViewerJob,
     pub(crate) runs: u32,
     /// Idle time before each frame (0: frames back to back).
     pub(crate) gap: std::time::Duration,
@@ -26,15 +29,22 @@ pub(crate) fn frame_args(usage: &str, default_runs: u32) -> FrameArgs {
     let runs = rest.first().map_or(default_runs, |r| number(r));
     let gap_ms = rest.get(1).map_or(0, |gap| number(gap));
     let scene = raytracer::scene::load_scene(std::path::Path::new(path)).expect("a scene");
-    let view = View::of_camera(
+    let mut view = View::of_camera(
         &scene.camera,
         number(width),
         number(height),
         DepthRange::new(0.0, 1.0),
     );
-    FrameArgs {
-        scene,
+    view.depth_range = initial_depth_range(&scene, &view);
+    let job = ViewerJob {
+        scene: Arc::new(scene),
         view,
+        scene_epoch: 0,
+        quality: Default::default(),
+        depth_style: Default::default(),
+    };
+    FrameArgs {
+        job,
         runs,
         gap: std::time::Duration::from_millis(u64::from(gap_ms)),
     }
