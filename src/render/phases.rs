@@ -1,6 +1,6 @@
-//! Where a frame's time goes: the named phases of a render (projection, the plan, clearing,
-//! binning, drawing, shading, and the viewer's histogram and textures), timed when asked for by
-//! [`measure`]. `examples/frame_phases` prints them at each thread count, to find the parts that
+//! Where a frame's time goes: the named phases of a render (projection, the plan, clearing, a
+//! dense frame's cull, depth sort and coarse depth, binning, drawing, shading, and the viewer's
+//! histogram and textures), timed when asked for by [`measure`]. `examples/frame_phases` prints them at each thread count, to find the parts that
 //! do not scale with cores (`scripts/scaling.sh`). Off unless measuring: a phase then costs one
 //! relaxed atomic load.
 //!
@@ -9,7 +9,9 @@
 
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::time::Instant;
+
+// The browser's clock in a page, where `std::time::Instant` panics.
+use web_time::Instant;
 
 /// Whether phases are being recorded.
 static RECORDING: AtomicBool = AtomicBool::new(false);
@@ -23,10 +25,18 @@ pub type PhaseTime = (&'static str, f64);
 /// the phases in the order they ended (a phase run several times, such as a pass's drawing, is
 /// listed each time).
 pub fn measure<R>(work: impl FnOnce() -> R) -> (R, Vec<PhaseTime>) {
+    /// Stops the recording when dropped, also when `work` panics.
+    struct Stop;
+    impl Drop for Stop {
+        fn drop(&mut self) {
+            RECORDING.store(false, Ordering::Relaxed);
+        }
+    }
     lock().clear();
     RECORDING.store(true, Ordering::Relaxed);
+    let stop = Stop;
     let result = work();
-    RECORDING.store(false, Ordering::Relaxed);
+    drop(stop);
     (result, std::mem::take(&mut *lock()))
 }
 
