@@ -23,11 +23,14 @@ use super::sampling::working_bytes;
 /// The program's own memory (code, libraries, thread stacks, allocator), generously.
 pub const BASELINE_BYTES: u64 = 96 << 20;
 
-/// Per sphere: the parsed sphere (40 bytes), its projected disc (40), for dense frames its copy
-/// in the front-to-back passes (42 with its depth slice; while its pass is selected and sorted,
-/// 84 at most: the copy, the kept copy, then the sorted disc) and, generously, its entries in
-/// the band lists and the band gathers (48, once the pass's copies are gone: 40 + 40 + 40 + 48).
-pub const SPHERE_BYTES: u64 = 178;
+/// Per sphere: the parsed sphere (40 bytes) and its projected disc (40); for dense frames, its
+/// copy in the front-to-back passes (42 with its depth slice) and, while its pass is culled and
+/// sorted, its position and its place in its chunk's order (4 + 4) and the sorted disc (40);
+/// once the pass's copies are gone, the sorted disc (40), its placed copy for the tiles (64) and,
+/// generously, its entries in the band lists and the band gathers (48). At most
+/// 40 + 40 + max(42 + 8 + 40, 40 + 64 + 48) = 232. (It was 178 until the placed copy was
+/// counted.)
+pub const SPHERE_BYTES: u64 = 232;
 
 /// Per pixel of a frame: 8-bit colour (3), t as f64 (8) and the sphere index (4).
 pub const FRAME_BYTES_PER_PIXEL: u64 = 15;
