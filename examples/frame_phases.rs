@@ -1,5 +1,6 @@
 //! Where the viewer's frame spends its time: each phase of `prepare_frame` (projection, the plan,
-//! clearing, binning, drawing, shading, histogram, textures; [`raytracer::render::phases`]) for a
+//! clearing, a dense frame's cull, depth sort and coarse depth, binning, drawing, shading,
+//! histogram, textures; [`raytracer::render::phases`]) for a
 //! scene file's own camera at WIDTH×HEIGHT pixels. The first frame in the process is the cold one
 //! (fresh pages, threads starting); the warm figure is the median of the next RUNS frames, each
 //! after GAP_MS of idling when given.

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Two builds of the renderer side by side on one machine, at 1 and 16 cores, to compare in one
-# run (machines differ run to run by more than the change): the warm viewer frame
-# (`examples/viewer_frame`, median of 15) of the three scenes of scripts/scaling.sh, and the
-# cold command's render_ms on the dense million (median of 5 fresh processes):
-#   bash scripts/scaling-before-after.sh BEFORE_DIR AFTER_DIR
+# Two builds of the renderer side by side on one machine, at 1 core and at CORES (default: all
+# the machine has), to compare in one run (machines differ run to run by more than the change):
+# the warm viewer frame (`examples/viewer_frame`, median of 15) of the three scenes of
+# scripts/scaling.sh, and the cold command's render_ms on the dense million (median of 5 fresh
+# processes):
+#   bash scripts/scaling-before-after.sh BEFORE_DIR AFTER_DIR [CORES]
 # BEFORE_DIR holds `viewer_frame` and `raytracer`; AFTER_DIR holds `raytracer` and
 # `examples/viewer_frame` (the layout of SCALING_BIN); the scenes are those scripts/scaling.sh
 # made under target/scaling/. docs/scaling-16-before-after.txt is its output on the 16-core
@@ -12,22 +13,36 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 before=$1
 after=$2
+most=${3:-$(nproc)}
 d=target/scaling
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# Runs a command on the first C cores (taskset, or Python's affinity call without util-linux).
+pinned() {
+  local c=$1; shift
+  if command -v taskset > /dev/null; then
+    taskset -c "0-$((c - 1))" "$@"
+  else
+    python3 -c 'import os, sys; os.sched_setaffinity(0, range(int(sys.argv[1]))); os.execv(sys.argv[2], sys.argv[2:])' "$c" "$@"
+  fi
+}
+
 for s in dense_1e5 dense_1e6 random_1e6; do
-  for c in 1 16; do
-    b=$(taskset -c 0-$((c - 1)) "$before/viewer_frame" $d/$s.txt 1024 1024 15)
-    a=$(taskset -c 0-$((c - 1)) "$after/examples/viewer_frame" $d/$s.txt 1024 1024 15)
+  for c in 1 "$most"; do
+    b=$(pinned "$c" "$before/viewer_frame" $d/$s.txt 1024 1024 15)
+    a=$(pinned "$c" "$after/examples/viewer_frame" $d/$s.txt 1024 1024 15)
     echo "warm $s cores=$c before=$b after=$a"
   done
 done
-for c in 1 16; do
+for c in 1 "$most"; do
   for which in before after; do
     bin=$before/raytracer
     [ "$which" = after ] && bin=$after/raytracer
-    for i in 1 2 3 4 5; do
-      taskset -c 0-$((c - 1)) "$bin" -input $d/dense_1e6.txt -size 1024 1024 -output "/tmp/c$i.tga" \
-        -depth 0 100 "/tmp/d$i.tga" -stats | awk '/^render_ms:/ { print $2 }'
-      rm -f "/tmp/c$i.tga" "/tmp/d$i.tga"
+    for _ in 1 2 3 4 5; do
+      pinned "$c" "$bin" -input $d/dense_1e6.txt -size 1024 1024 -output "$work/c.tga" \
+        -depth 0 100 "$work/d.tga" -stats | awk '/^render_ms:/ { print $2 }'
+      rm -f "$work/c.tga" "$work/d.tga"
     done | sort -g | sed -n 3p | sed "s/^/cold dense_1e6 cores=$c $which render_ms=/"
   done
 done

@@ -309,8 +309,7 @@ impl ViewerApp {
         });
     }
 
-    /// Runs `write` as a task (`Writes::start`); its message lands in the
-    /// status bar.
+    /// Runs `write` as a task (`Writes::start`); its message lands in the status bar.
     #[cfg(not(target_arch = "wasm32"))]
     fn write_in_background(
         &mut self,

@@ -10,7 +10,7 @@ use super::confirm::PendingReplace;
 use super::dialogs::PendingDialog;
 use super::status::Status;
 
-/// The writes' state.
+/// The writes' state; it starts a write in the background and takes its outcome in.
 pub(crate) struct Writes {
     /// A background write (export or saved scene): its outcome message.
     pub(crate) task: Option<Task<Result<String, String>>>,

@@ -47,7 +47,7 @@ pub const DEFAULT_EXPORT_NAME: &str = "raytracer";
 /// separator (`/`, and `\` where that is one too).
 pub(crate) fn names_a_folder(path: &Path) -> bool {
     let text = path.as_os_str().to_string_lossy();
-    // `/` is a separator everywhere, `\\` on Windows too.
+    // `/` is a separator everywhere, a backslash on Windows too.
     path.is_dir() || text.chars().last().is_some_and(std::path::is_separator)
 }
 

@@ -164,9 +164,8 @@ pub(super) fn column_span(
     )
 }
 
-/// Smallest chunk of discs binned by one task (16,384 left a dense 100,000-disc frame's binning
-/// on seven tasks, flat from 4 cores to 16: docs/scaling.md; a dense frame's later passes bin a
-/// few tens of thousands of discs each).
+/// Smallest chunk of discs binned by one task: small enough that a dense frame's later passes,
+/// a few tens of thousands of discs each, still bin on every thread.
 const MIN_BIN_CHUNK: usize = 1024;
 
 /// Lists each disc in the bands its rows touch: chunks in parallel, each in two passes (count,

@@ -302,7 +302,7 @@ impl Passes {
         let around = coarse.map(|coarse| coarse.farthest_around_cells(&self.cells));
         let reach_sq = self.cells.reaching_neighbours_radius_sq;
         // Per chunk, its pass list and the positions in it of the discs kept (the discs are
-        // moved once, by the depth sort: moving them here too cost a fifth of a dense frame).
+        // moved once, by the depth sort).
         let kept: Vec<(PassList, Vec<u32>)> = crate::render::phases::time("cull", || {
             self.chunks
                 .par_iter_mut()

@@ -15,8 +15,8 @@ pub(super) struct Kept<'a> {
 }
 
 /// The discs of `kept` (per chunk, its pass list and the positions in it of the discs kept)
-/// ordered by slice, in chunk order within a slice: a counting sort, in parallel (16 cores
-/// measured the one-thread sort at a sixth of a dense frame: docs/scaling.md). Every kept disc's
+/// ordered by slice, in chunk order within a slice: a counting sort, in parallel (on one thread
+/// it stayed flat as cores were added; docs/scaling-16.md tables each phase). Every kept disc's
 /// slice lies in `slices`, the pass's; the sort's tables span those alone. The slices are split
 /// into as many groups of about equal discs as there are threads. Each chunk orders the positions
 /// of its kept discs by slice; each group's task then moves, chunk by chunk, the discs of its own
@@ -130,4 +130,94 @@ fn by_slice_on_one_thread(kept: &[Kept<'_>], slices: Range<usize>) -> Vec<Disc> 
         }
     }
     all
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::rng::SplitMix64;
+
+    /// A chunk: each disc's slice (in `slices`), the discs (sphere ids from `first_id`) and the
+    /// positions kept (about half, increasing, as the cull makes them).
+    struct Chunk {
+        slices: Vec<u16>,
+        discs: Vec<Disc>,
+        positions: Vec<u32>,
+    }
+
+    fn chunk(rng: &mut SplitMix64, len: usize, slices: &Range<usize>, first_id: u32) -> Chunk {
+        let span = slices.len() as u64;
+        let slice_of = |rng: &mut SplitMix64| (slices.start as u64 + rng.next_u64() % span) as u16;
+        Chunk {
+            slices: (0..len).map(|_| slice_of(rng)).collect(),
+            discs: (first_id..first_id + len as u32)
+                .map(|sphere| Disc {
+                    sphere,
+                    ..Disc::NONE
+                })
+                .collect(),
+            positions: (0..len as u32)
+                .filter(|_| rng.next_u64().is_multiple_of(2))
+                .collect(),
+        }
+    }
+
+    /// The oracle: every kept disc in chunk order, then stably sorted by slice.
+    fn expected(chunks: &[Chunk]) -> Vec<u32> {
+        let mut kept: Vec<(u16, u32)> = chunks
+            .iter()
+            .flat_map(|c| {
+                c.positions
+                    .iter()
+                    .map(|&at| (c.slices[at as usize], c.discs[at as usize].sphere))
+            })
+            .collect();
+        kept.sort_by_key(|&(slice, _)| slice);
+        kept.into_iter().map(|(_, sphere)| sphere).collect()
+    }
+
+    #[test]
+    fn the_sort_keeps_every_kept_disc_by_slice_then_chunk_on_any_thread_count() {
+        let mut rng = SplitMix64::new(11);
+        // (chunk lengths, the pass's slices): empty chunks, a range far from 0, one slice, and
+        // fewer slices than threads.
+        let cases: [(&[usize], Range<usize>); 4] = [
+            (&[300, 0, 257, 1, 0, 999], 0..4096),
+            (&[500, 500, 500], 3000..3017),
+            (&[400, 0, 400], 77..78),
+            (&[50, 60], 10..12),
+        ];
+        for (lens, slices) in cases {
+            let mut first_id = 0;
+            let chunks: Vec<Chunk> = lens
+                .iter()
+                .map(|&len| {
+                    let made = chunk(&mut rng, len, &slices, first_id);
+                    first_id += len as u32;
+                    made
+                })
+                .collect();
+            let kept: Vec<Kept<'_>> = chunks
+                .iter()
+                .map(|c| Kept {
+                    slices: &c.slices,
+                    discs: &c.discs,
+                    positions: &c.positions,
+                })
+                .collect();
+            let want = expected(&chunks);
+            for threads in [1, 2, 5, 16] {
+                let pool = rayon::ThreadPoolBuilder::new()
+                    .num_threads(threads)
+                    .build()
+                    .unwrap();
+                let got: Vec<u32> = pool
+                    .install(|| by_slice(&kept, slices.clone()))
+                    .iter()
+                    .map(|disc| disc.sphere)
+                    .collect();
+                assert_eq!(got, want, "slices {slices:?}, {threads} threads");
+            }
+        }
+    }
 }

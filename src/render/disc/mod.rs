@@ -99,7 +99,7 @@ pub fn project_discs(scene: &Scene, view: &View, basis: &CameraBasis) -> Vec<Dis
     project_discs_with_depths(scene, view, basis).0
 }
 
-/// Spheres projected per parallel task.
+/// Discs whose depths one parallel task sums.
 const PROJECT_CHUNK: usize = 16_384;
 
 /// [`project_discs`], and their [`Depths`] on the view's grid.
@@ -116,7 +116,7 @@ pub(crate) fn project_discs_with_depths(
 fn project_in_parallel(scene: &Scene, view: &View, basis: &CameraBasis) -> (Vec<Disc>, Depths) {
     use rayon::prelude::*;
     // Written where they land by an indexed collect: no placeholders written first (on one
-    // thread, `vec![…; n]` was a serial part on many cores: docs/scaling.md).
+    // thread, `vec![…; n]` was a serial part on many cores: docs/scaling-16.md).
     let discs: Vec<Disc> = scene
         .spheres
         .par_iter()
