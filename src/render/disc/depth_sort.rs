@@ -16,11 +16,11 @@ pub(super) struct Kept<'a> {
 
 /// The discs of `kept` (per chunk, its pass list and the positions in it of the discs kept)
 /// ordered by slice, in chunk order within a slice: a counting sort, in parallel (on one thread
-/// it stayed flat as cores were added; docs/scaling-16-before.md tables each phase). Every kept disc's
-/// slice lies in `slices`, the pass's; the sort's tables span those alone. The slices are split
-/// into as many groups of about equal discs as there are threads. Each chunk orders the positions
-/// of its kept discs by slice; each group's task then moves, chunk by chunk, the discs of its own
-/// slices into its own part of the result. The result is the same whatever the grouping; on one
+/// it held a dense frame's "pass discs" to 4.9× on 16 cores: docs/scaling-16-before.md). Every
+/// kept disc's slice lies in `slices`, the pass's; the sort's tables span those alone. The
+/// slices are split into as many groups of about equal discs as there are threads. Each chunk
+/// orders the positions of its kept discs by slice; each group's task then moves, chunk by chunk,
+/// the discs of its own slices into its own part of the result. The result is the same whatever the grouping; on one
 /// thread, [`by_slice_on_one_thread`] makes it without the chunks' orders.
 pub(super) fn by_slice(kept: &[Kept<'_>], slices: Range<usize>) -> Vec<Disc> {
     if rayon::current_num_threads() == 1 {

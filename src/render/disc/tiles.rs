@@ -119,7 +119,7 @@ pub(super) fn rasterise_discs_in_tiles(
 ) -> u64 {
     let (placed, bands) = time("bin", || {
         // One per disc, so that the collect writes in parallel (a filtered collect joins its
-        // pieces on one thread, a serial part on many cores: docs/scaling-16-before.md).
+        // pieces on one thread: "bin" was flat from 4 cores to 16, docs/scaling-16-before.md).
         let placed: Vec<Placed> = discs
             .par_iter()
             .map(|disc| Placed::of(disc, grid).unwrap_or(Placed::OFF))
