@@ -18,15 +18,7 @@ d=target/scaling
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# Runs a command on the first C cores (taskset, or Python's affinity call without util-linux).
-pinned() {
-  local c=$1; shift
-  if command -v taskset > /dev/null; then
-    taskset -c "0-$((c - 1))" "$@"
-  else
-    python3 -c 'import os, sys; os.sched_setaffinity(0, range(int(sys.argv[1]))); os.execv(sys.argv[2], sys.argv[2:])' "$c" "$@"
-  fi
-}
+source scripts/pinned.sh
 
 for s in dense_1e5 dense_1e6 random_1e6; do
   for c in 1 "$most"; do

@@ -39,16 +39,7 @@ for c in 1 2 4 8 16 32 64; do [ "$c" -le "$max" ] && cores+=("$c"); done
 [ "${cores[-1]}" -ne "$max" ] && cores+=("$max")
 last=${cores[-1]}
 
-# Runs a command on the first C cores: `pinned C COMMAND…` (taskset, or Python's affinity call
-# where util-linux is missing).
-pinned() {
-  local c=$1; shift
-  if command -v taskset > /dev/null; then
-    taskset -c "0-$((c - 1))" "$@"
-  else
-    python3 -c 'import os, sys; os.sched_setaffinity(0, range(int(sys.argv[1]))); os.execv(sys.argv[2], sys.argv[2:])' "$c" "$@"
-  fi
-}
+source scripts/pinned.sh
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 

@@ -120,23 +120,24 @@ impl Viewing {
 
     /// Back to the view before the last change (a burst of changes is one step).
     pub(crate) fn undo(&mut self) -> Option<Status> {
-        match self.history.undo(&self.view) {
-            Some(view) => {
-                self.view = view;
-                None
-            }
-            None => Some(Status::info("nothing to undo")),
-        }
+        let view = self.history.undo(&self.view);
+        self.step_to(view, "nothing to undo")
     }
 
     /// Forward again after an undo.
     pub(crate) fn redo(&mut self) -> Option<Status> {
-        match self.history.redo(&self.view) {
+        let view = self.history.redo(&self.view);
+        self.step_to(view, "nothing to redo")
+    }
+
+    /// Goes to `view`, an undo or redo step; says `none` when there was no step to take.
+    fn step_to(&mut self, view: Option<View>, none: &str) -> Option<Status> {
+        match view {
             Some(view) => {
                 self.view = view;
                 None
             }
-            None => Some(Status::info("nothing to redo")),
+            None => Some(Status::info(none)),
         }
     }
 

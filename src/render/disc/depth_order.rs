@@ -144,8 +144,7 @@ impl Depths {
 /// A frame's discs split into passes front to back: per chunk of the file, per pass, the discs
 /// grouped by cell.
 pub(super) struct Passes {
-    count: usize,
-    /// Per pass, the depth slices it takes.
+    /// Per pass, the depth slices it takes (one range per pass).
     slices: Vec<Range<usize>>,
     cells: Cells,
     chunks: Vec<Vec<PassList>>,
@@ -279,7 +278,6 @@ impl Passes {
             })
             .collect();
         Self {
-            count,
             slices,
             cells,
             chunks,
@@ -288,7 +286,7 @@ impl Passes {
 
     /// How many passes there are.
     pub(super) fn count(&self) -> usize {
-        self.count
+        self.slices.len()
     }
 
     /// Whether pass `pass` holds no disc.

@@ -451,10 +451,10 @@ fn draw_disc(
                 // the disc's, so neither nearer nor tied holds there.
                 let mut taken = hit.nearer.to_bitmask();
                 let mut t_new = hit.nearer.select(hit.t, t_old).to_array();
-                let t_lanes = hit.t.to_array();
+                // The lanes' t read only for a tie (rare), not for every group.
                 take_ties(
                     disc.sphere,
-                    (hit.tied.to_bitmask(), |lane| t_lanes[lane]),
+                    (hit.tied.to_bitmask(), |lane| hit.t.to_array()[lane]),
                     sphere_px,
                     (&mut taken, &mut t_new),
                 );
