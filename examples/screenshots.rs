@@ -230,12 +230,14 @@ fn compare(folder: &Path) {
     harness.hover_at(hover);
     harness.run_steps(3);
     let heat = colour.min + vec2(40.0, 40.0);
+    // Right of the diagnosis's line (a badge sits above and left of its spot), clear of the
+    // match line above it.
     let diagnosis = harness
         .query_by_label_contains("diagnosis:")
         .unwrap()
         .rect()
-        .left_center()
-        + vec2(30.0, 0.0);
+        .right_center()
+        + vec2(28.0, 14.0);
     let probe = harness
         .query_by_label_contains("· off by")
         .unwrap()
