@@ -10,7 +10,7 @@
 //! ```
 //!
 //! Prints one line per gap: `gap_us<TAB>step_us<TAB>work_us<TAB>overhead_us`, each the median of
-//! RUNS steps (default 51; ITEM_US default 20). `scripts/thread-wake.sh` runs it pinned to 1, 2,
+//! RUNS steps (default 101; ITEM_US default 20). `scripts/thread-wake.sh` runs it pinned to 1, 2,
 //! 4, … cores.
 
 use std::hint::black_box;
@@ -47,7 +47,7 @@ fn main() {
             })
         })
     };
-    let runs = number(0, 51).max(1) as usize;
+    let runs = number(0, 101).max(1) as usize;
     let item_us = number(1, 20).max(1);
     // Iterations for one task of about ITEM_US on one thread.
     let probe = 100_000;
@@ -75,6 +75,8 @@ fn main() {
         });
     };
     step();
+    // Gap by gap: a step after the steps before it idled as long (a step's cost depends on how
+    // long the machine idled before the step before it, too).
     for gap_us in GAPS_US {
         let steps: Vec<f64> = (0..runs)
             .map(|_| {

@@ -30,7 +30,7 @@ cpu=$(awk -F': ' '/^model name/ { print $2; exit }' /proc/cpuinfo)
   echo "A frame is a chain of parallel steps on rayon's threads. A thread with nothing to do spins a"
   echo "while, then sleeps; a step that comes after the threads slept waits for them to wake."
   echo "\`examples/thread_wake\` times a step of four equal tasks per thread (about 20 µs each) after the"
-  echo "pool idled for each gap, median of 51, pinned to the first c cores. The figures are the step's"
+  echo "pool idled for each gap, median of 101, pinned to the first c cores. The figures are the step's"
   echo "wall time over its work on those threads, in microseconds: what the step lost to starting"
   echo "and waking threads. (A sleep of a few microseconds lasts longer: the gap is at least.)"
   echo
