@@ -1,5 +1,5 @@
 //! Where the viewer's frame spends its time: each phase of `prepare_frame` (projection, the plan,
-//! clearing, a dense frame's cull, depth sort and coarse depth, binning, drawing, shading,
+//! clearing, a dense frame's cull, sort and bin, and coarse depth, binning, drawing, shading,
 //! histogram, textures; [`raytracer::render::phases`]) for a
 //! scene file's own camera at WIDTH×HEIGHT pixels. The first frame in the process is the cold one
 //! (fresh pages, threads starting); the warm figure is the median of the next RUNS frames, each
@@ -11,9 +11,12 @@
 //! ```
 //!
 //! Prints one line per phase, `name<TAB>cold ms<TAB>warm ms`, then the whole frame's as `frame`.
-//! A phase run more than once in a frame (a pass's binning and drawing) is summed over the frame;
-//! the histogram and the textures run at the same time, so the phases can add up to more than the
-//! frame.
+//! A phase run more than once in a frame (a pass's sort and bin, and drawing) is summed over the
+//! frame; the histogram and the textures run at the same time, so the phases can add up to more
+//! than the frame. On Linux a last line, `thread sleeps (count)`, gives how many times the process's
+//! threads slept during the frame (their voluntary context switches, from `/proc/self/task`): a
+//! thread that runs out of work sleeps, and the next parallel step waits for it to wake
+//! (`docs/thread-wake.md`).
 
 #[cfg(all(feature = "mimalloc", not(target_os = "macos")))]
 #[global_allocator]
@@ -34,9 +37,13 @@ fn main() {
     let frame_args::FrameArgs { job, runs, gap } =
         frame_args::frame_args("frame_phases SCENE WIDTH HEIGHT [RUNS [GAP_MS]]", 15);
     let frame = || {
+        let slept_before = thread_sleeps();
         let started = Instant::now();
         let (output, recorded) = phases::measure(|| prepare_frame(&job));
         let frame_ms = started.elapsed().as_secs_f64() * 1e3;
+        let slept = thread_sleeps()
+            .zip(slept_before)
+            .map(|(after, before)| after.saturating_sub(before));
         std::hint::black_box(output.expect("renders"));
         let mut summed: FramePhases = Vec::new();
         for (name, ms) in recorded {
@@ -46,6 +53,9 @@ fn main() {
             }
         }
         summed.push(("frame", frame_ms));
+        if let Some(slept) = slept {
+            summed.push((SLEEPS, slept as f64));
+        }
         summed
     };
     let cold = frame();
@@ -66,6 +76,30 @@ fn main() {
             })
             .collect();
         times.sort_by(f64::total_cmp);
-        println!("{name}\t{cold_ms:.2}\t{:.2}", times[times.len() / 2]);
+        let warm = times[times.len() / 2];
+        if name == SLEEPS {
+            println!("{name}\t{cold_ms}\t{warm}");
+        } else {
+            println!("{name}\t{cold_ms:.2}\t{warm:.2}");
+        }
     }
+}
+
+/// The last line's name: a count, not milliseconds.
+const SLEEPS: &str = "thread sleeps (count)";
+
+/// How many times the process's threads have slept so far (the sum of their voluntary context
+/// switches); `None` where `/proc/self/task` cannot tell (not Linux). A thread that ended since
+/// the last call takes its count with it: the pool's threads live as long as the process.
+fn thread_sleeps() -> Option<u64> {
+    let tasks = std::fs::read_dir("/proc/self/task").ok()?;
+    let mut sleeps = 0;
+    for task in tasks {
+        let status = std::fs::read_to_string(task.ok()?.path().join("status")).ok()?;
+        let line = status
+            .lines()
+            .find_map(|line| line.strip_prefix("voluntary_ctxt_switches:"))?;
+        sleeps += line.trim().parse::<u64>().ok()?;
+    }
+    Some(sleeps)
 }

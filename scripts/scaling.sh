@@ -86,9 +86,11 @@ phase_table() {
       awk -F'\t' -v p="$phase" -v f="$field" '$1 == p { printf " %s |", $f; found = 1 }
         END { if (!found) printf " – |" }' "$work/phases_${scene}_$c"
     done
+    # A count (thread sleeps) has no speed-up.
     awk -F'\t' -v p="$phase" -v f="$field" '$1 == p { print $f }' "$work/phases_${scene}_1" \
       "$work/phases_${scene}_$last" | paste -sd' ' |
-      awk '{ if (NF == 2 && $2 > 0) printf " %.2f× |\n", $1 / $2; else print " – |" }'
+      awk -v count="$([[ $phase == *"(count)"* ]] && echo 1)" \
+        '{ if (!count && NF == 2 && $2 > 0) printf " %.2f× |\n", $1 / $2; else print " – |" }'
   done
 }
 
@@ -115,7 +117,10 @@ cpu=$(awk -F': ' '/^model name/ { print $2; exit }' /proc/cpuinfo)
   echo "The viewer's frame phase by phase (\`examples/frame_phases\`, \`raytracer::render::phases\`),"
   echo "milliseconds at 1024². A phase that stays flat as cores are added is a serial part. The"
   echo "histogram and the textures run at the same time, so the phases can add up to more than the"
-  echo "frame; a dense frame's binning and drawing are summed over its passes."
+  echo "frame; a dense frame's cull, sorting, binning and drawing are summed over its passes. The last row counts"
+  echo "the times the process's threads slept during the frame (their voluntary context switches):"
+  echo "each is a thread that ran out of work, which the next parallel step waits for to wake"
+  echo "([thread-wake.md](thread-wake.md) measures what a wake costs)."
   for scene in dense_1e6 dense_1e5 random_1e6; do
     case $scene in
       dense_1e6) name="dense 1M" ;; dense_1e5) name="dense 100k" ;; random_1e6) name="random 1M" ;;

@@ -11,7 +11,7 @@ use crate::explore::depth_stats::DepthHistogram;
 use crate::render::depth_map::DepthColourMap;
 use crate::render::phases::time;
 use crate::render::worker::{RenderResult, RenderWorker};
-use crate::render::{Frame, Quality, View, ViewError, render_with};
+use crate::render::{Frame, Quality, View, ViewError, on_the_pool, render_with};
 use crate::scene::Scene;
 
 /// What the worker renders: a scene through a view.
@@ -71,18 +71,21 @@ pub(crate) type JobResult = RenderResult<ViewerJob, JobOutput>;
 
 /// Renders `job` and prepares both texture images (what the worker runs).
 pub fn prepare_frame(job: &ViewerJob) -> JobOutput {
-    let frame = render_with(&job.scene, &job.view, &job.quality)?;
-    let size = [frame.width_px as usize, frame.height_px as usize];
-    // The histogram alongside the two textures.
-    let (histogram, (colour, depth)) = rayon::join(
-        || time("histogram", || DepthHistogram::new(&frame, HISTOGRAM_BINS)),
-        || time("textures", || textures(job, &frame, size)),
-    );
-    Ok(PreparedFrame {
-        frame: Arc::new(frame),
-        colour,
-        depth,
-        histogram,
+    // All of it on the pool's threads, the render's steps and the textures' alike.
+    on_the_pool(|| {
+        let frame = render_with(&job.scene, &job.view, &job.quality)?;
+        let size = [frame.width_px as usize, frame.height_px as usize];
+        // The histogram alongside the two textures.
+        let (histogram, (colour, depth)) = rayon::join(
+            || time("histogram", || DepthHistogram::new(&frame, HISTOGRAM_BINS)),
+            || time("textures", || textures(job, &frame, size)),
+        );
+        Ok(PreparedFrame {
+            frame: Arc::new(frame),
+            colour,
+            depth,
+            histogram,
+        })
     })
 }
 

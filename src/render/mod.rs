@@ -64,12 +64,24 @@ pub fn render_with(scene: &Scene, view: &View, quality: &Quality) -> Result<Fram
 pub(crate) fn render_strips<E: From<ViewError> + Send>(
     scene: &Scene,
     view: &View,
-    consume: impl Fn(disc::Strip<'_>) -> Result<(), E> + Sync,
+    consume: impl Fn(disc::Strip<'_>) -> Result<(), E> + Sync + Send,
 ) -> Result<u64, E> {
-    let basis = view.validate()?;
-    let grid = view.grid();
-    let (discs, depths) = disc::project_discs_with_depths(scene, view, &basis);
-    disc::rasterise_strips(&grid, &discs, &depths, consume)
+    on_the_pool(|| {
+        let basis = view.validate()?;
+        let grid = view.grid();
+        let (discs, depths) = disc::project_discs_with_depths(scene, view, &basis);
+        disc::rasterise_strips(&grid, &discs, &depths, consume)
+    })
+}
+
+/// Runs `work` on a thread of rayon's pool (in place when already on one). A frame is a chain of
+/// parallel steps with serial work between them: run from a thread outside the pool, that thread
+/// hands each step to the pool and sleeps until it is done, and each of the pool's threads that
+/// ran out of work sleeps too, so every step waits for threads to wake. On a pool thread the
+/// serial work runs where the steps begin and end, and the thread waits for a step's last tasks
+/// by taking part in them (`examples/frame_phases` counts the sleeps: docs/scaling.md).
+pub(crate) fn on_the_pool<R: Send>(work: impl FnOnce() -> R + Send) -> R {
+    rayon::scope(|_| work())
 }
 
 /// Whether [`render_strips`] draws `scene` through `view` strip by strip (`true`) or draws the
@@ -93,15 +105,18 @@ pub(crate) fn render_with_progress(
     }
     let basis = view.validate()?;
     let grid = view.grid();
-    let (discs, depths) = disc::project_discs_with_depths(scene, view, &basis);
-    let mut frame = disc::rasterise_frame(scene, view, &grid, &discs, &depths);
-    if let Some(sampling) = &quality.sampling {
-        let supersampled =
-            sampling::supersample(scene, &discs, &grid, view.depth_range, sampling, progress);
-        frame.colour = supersampled.colour;
-        frame.depth_grey = Some((view.depth_range, supersampled.depth_grey));
-        frame.disc_tests += supersampled.disc_tests;
-    }
+    let frame = on_the_pool(|| {
+        let (discs, depths) = disc::project_discs_with_depths(scene, view, &basis);
+        let mut frame = disc::rasterise_frame(scene, view, &grid, &discs, &depths);
+        if let Some(sampling) = &quality.sampling {
+            let supersampled =
+                sampling::supersample(scene, &discs, &grid, view.depth_range, sampling, progress);
+            frame.colour = supersampled.colour;
+            frame.depth_grey = Some((view.depth_range, supersampled.depth_grey));
+            frame.disc_tests += supersampled.disc_tests;
+        }
+        frame
+    });
     progress(1.0);
     Ok(frame)
 }

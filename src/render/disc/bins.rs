@@ -20,33 +20,28 @@ pub(crate) struct Bands {
 
 /// One chunk's lists: band `b`'s discs are `indices[offsets[b]..offsets[b + 1]]`.
 #[derive(Debug, Clone, PartialEq, Eq)]
-struct ChunkBands {
+pub(crate) struct ChunkBands {
     offsets: Vec<usize>,
     indices: Vec<u32>,
+}
+
+impl ChunkBands {
+    /// The indices listed in band `band` (none past the last band).
+    pub(crate) fn band(&self, band: usize) -> &[u32] {
+        match self.offsets.get(band..=band + 1) {
+            Some(&[start, end]) => &self.indices[start..end],
+            _ => &[],
+        }
+    }
 }
 
 impl Bands {
     /// The discs (indices into the projected discs) listed in band `band`, in the order they
     /// came in.
     pub(crate) fn band(&self, band: usize) -> impl Iterator<Item = u32> + '_ {
-        self.chunks.iter().flat_map(move |chunk| {
-            let listed = match chunk.offsets.get(band..=band + 1) {
-                Some(&[start, end]) => &chunk.indices[start..end],
-                _ => &[],
-            };
-            listed.iter().copied()
-        })
-    }
-
-    /// How many discs band `band` lists.
-    pub(crate) fn band_len(&self, band: usize) -> usize {
         self.chunks
             .iter()
-            .map(|chunk| match chunk.offsets.get(band..=band + 1) {
-                Some(&[start, end]) => end - start,
-                _ => 0,
-            })
-            .sum()
+            .flat_map(move |chunk| chunk.band(band).iter().copied())
     }
 
     #[cfg(test)]
@@ -166,7 +161,7 @@ pub(super) fn column_span(
 
 /// Smallest chunk of discs binned by one task: small enough that a dense frame's later passes,
 /// a few tens of thousands of discs each, still bin on every thread.
-const MIN_BIN_CHUNK: usize = 1024;
+pub(super) const MIN_BIN_CHUNK: usize = 1024;
 
 /// Lists each disc in the bands its rows touch: chunks in parallel, each in two passes (count,
 /// then fill).
@@ -182,7 +177,7 @@ pub(crate) fn bin_by_rows<T: Sync>(
     grid: &PixelGrid,
     rows: impl Fn(&T) -> Option<(usize, usize)> + Sync,
 ) -> Bands {
-    let band_count = (grid.height_px as usize).div_ceil(BAND_ROWS);
+    let band_count = band_count(grid);
     let chunk_len = items
         .len()
         .div_ceil(4 * rayon::current_num_threads())
@@ -193,14 +188,31 @@ pub(crate) fn bin_by_rows<T: Sync>(
         .map(|(chunk_index, chunk)| {
             // Sphere counts fit u32 (the parser's limit), so do disc indices.
             let first_index = u32::try_from(chunk_index * chunk_len).unwrap_or(u32::MAX);
-            let spans: Vec<Option<(usize, usize)>> = chunk
-                .iter()
-                .map(|item| rows(item).map(|(first, last)| (first / BAND_ROWS, last / BAND_ROWS)))
-                .collect();
-            bin_chunk(&spans, first_index, band_count)
+            bin_part(chunk, first_index, band_count, &rows)
         })
         .collect();
     Bands { chunks }
+}
+
+/// The band lists of `items`, consecutive items of a frame's list whose first has index
+/// `first_index`, in `band_count` bands by the image rows `rows` gives each: one part of a
+/// [`Bands`] ([`Bands::of_parts`]).
+pub(crate) fn bin_part<T>(
+    items: &[T],
+    first_index: u32,
+    band_count: usize,
+    rows: impl Fn(&T) -> Option<(usize, usize)>,
+) -> ChunkBands {
+    let spans: Vec<Option<(usize, usize)>> = items
+        .iter()
+        .map(|item| rows(item).map(|(first, last)| (first / BAND_ROWS, last / BAND_ROWS)))
+        .collect();
+    bin_chunk(&spans, first_index, band_count)
+}
+
+/// The bands of `grid`.
+pub(crate) fn band_count(grid: &PixelGrid) -> usize {
+    (grid.height_px as usize).div_ceil(BAND_ROWS)
 }
 
 /// Bins items by their band spans (the first item has index `first_index`) into `band_count`

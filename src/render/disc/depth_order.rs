@@ -14,7 +14,8 @@ use rayon::prelude::*;
 
 use super::Disc;
 use super::coarse_depth::{Cells, CoarseDepth};
-use super::depth_sort::{Kept, by_slice};
+use super::depth_sort::{Kept, KeptPositions, by_slice};
+use super::placed::PlacedPart;
 use crate::geometry::camera::PixelGrid;
 
 /// Slices of the depth range the front-to-back order sorts discs into.
@@ -294,14 +295,21 @@ impl Passes {
         self.chunks.iter().all(|lists| lists[pass].discs.is_empty())
     }
 
-    /// The discs of pass `pass` front to back (by slice), and the pass's memory released. With
-    /// `coarse`, what is drawn so far: only the discs that may show in front of it.
-    pub(super) fn take(&mut self, pass: usize, coarse: Option<&CoarseDepth>) -> Vec<Disc> {
+    /// The discs of pass `pass` front to back (by slice), placed on `grid` and binned in
+    /// consecutive parts, and the pass's memory released. With `coarse`, what is drawn so far: only the discs
+    /// that may show in front of it.
+    pub(super) fn take(
+        &mut self,
+        pass: usize,
+        coarse: Option<&CoarseDepth>,
+        grid: &PixelGrid,
+    ) -> Vec<PlacedPart> {
         let around = coarse.map(|coarse| coarse.farthest_around_cells(&self.cells));
         let reach_sq = self.cells.reaching_neighbours_radius_sq;
-        // Per chunk, its pass list and the positions in it of the discs kept (the discs are
-        // moved once, by the depth sort).
-        let kept: Vec<(PassList, Vec<u32>)> = crate::render::phases::time("cull", || {
+        let pass_slices = self.slices[pass].clone();
+        // Per chunk, its pass list and the positions in it of the discs kept, ordered by slice
+        // while at hand (the discs are moved once, by the depth sort).
+        let kept: Vec<(PassList, KeptPositions)> = crate::render::phases::time("cull", || {
             self.chunks
                 .par_iter_mut()
                 .map(|lists| {
@@ -324,6 +332,7 @@ impl Passes {
                             }
                         }
                     }
+                    let positions = KeptPositions::of(positions, &list.slices, pass_slices.clone());
                     (list, positions)
                 })
                 .collect()
@@ -336,8 +345,7 @@ impl Passes {
                 positions,
             })
             .collect();
-        let slices = self.slices[pass].clone();
-        crate::render::phases::time("depth sort", || by_slice(&kept, slices))
+        crate::render::phases::time("sort and bin", || by_slice(&kept, pass_slices, grid))
     }
 }
 
@@ -385,8 +393,9 @@ mod tests {
         assert!(passes.count() > 2, "several passes");
         let coarse = CoarseDepth::of(t, grid);
         let kept: Vec<u32> = (0..passes.count())
-            .flat_map(|pass| passes.take(pass, Some(&coarse)))
-            .map(|disc| disc.sphere)
+            .flat_map(|pass| passes.take(pass, Some(&coarse), grid))
+            .flat_map(|part| part.placed)
+            .map(|placed| placed.disc.sphere)
             .collect();
         let size = (grid.width_px, grid.height_px);
         let mut wanted = 0;

@@ -22,6 +22,7 @@
 //! * [`chord`]: a disc's chord on a row, a band's discs gathered
 //! * [`depth_order`]: discs sorted front to back, and the nearest ones that cover the image
 //! * [`depth_sort`]: a pass's kept discs ordered by depth slice, in parallel
+//! * [`placed`]: discs placed on the image (rows, columns, nearest t) and binned, in parts
 //! * [`coarse_depth`]: discs behind what the nearest ones drew, culled frame-wide
 //! * [`tiles`]: dense scenes drawn front to back tile by tile, each tile stopping where the rest
 //!   is hidden
@@ -35,6 +36,7 @@ mod coarse_depth;
 mod depth_order;
 mod depth_sort;
 mod hit;
+mod placed;
 mod raster;
 mod shade;
 mod strips;

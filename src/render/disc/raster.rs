@@ -11,7 +11,7 @@ use super::coarse_depth::CoarseDepth;
 use super::depth_order::{Depths, Plan};
 use super::hit::test;
 use super::shade::frame_from_hits;
-use super::tiles::rasterise_discs_in_tiles;
+use super::tiles::{rasterise_discs_in_tiles, rasterise_placed_in_tiles};
 use crate::geometry::camera::PixelGrid;
 use crate::render::phases::time;
 use crate::render::{Frame, NO_HIT, View};
@@ -144,8 +144,8 @@ pub(super) fn rasterise_hits(
                 }
                 let drawn =
                     (pass > 0).then(|| time("coarse depth", || CoarseDepth::of(out.0, grid)));
-                let discs = passes.take(pass, drawn.as_ref());
-                disc_tests += rasterise_discs(&discs, grid, Order::FrontToBack, &mut out);
+                let parts = passes.take(pass, drawn.as_ref(), grid);
+                disc_tests += rasterise_placed_in_tiles(&parts, grid, (out.0, out.1));
             }
             disc_tests
         }

@@ -20,9 +20,10 @@ use rayon::prelude::*;
 use wide::{f64x4, u32x4};
 
 use super::Disc;
-use super::bins::{BAND_ROWS, Bands, bin_by_rows, column_span, rows_of};
+use super::bins::BAND_ROWS;
 use super::chord::Columns;
 use super::hit::{take_ties, takes_pixel, test};
+use super::placed::{Placed, PlacedPart, place_in_parts};
 use crate::geometry::camera::PixelGrid;
 use crate::render::phases::time;
 
@@ -49,54 +50,6 @@ const LANE_MASKS: [[u32; LANES]; 1 << LANES] = {
     masks
 };
 
-/// A disc placed on the image: its nearest t and the image rows (top first) and columns its
-/// pixels may lie in, conservative (the exact test decides).
-#[derive(Clone, Copy)]
-struct Placed {
-    disc: Disc,
-    front_t: f64,
-    rows: (u32, u32),
-    columns: (u32, u32),
-}
-
-impl Placed {
-    const NONE: Self = Self {
-        disc: Disc::NONE,
-        front_t: f64::INFINITY,
-        rows: (0, 0),
-        columns: (0, 0),
-    };
-
-    /// A disc off the image: binned nowhere (its first row is past its last).
-    const OFF: Self = Self {
-        rows: (1, 0),
-        ..Self::NONE
-    };
-
-    /// The image rows (top first) it is binned in; `None` off the image.
-    fn binned_rows(&self) -> Option<(usize, usize)> {
-        let (first, last) = self.rows;
-        (first <= last).then_some((first as usize, last as usize))
-    }
-
-    /// `disc` placed on `grid`; `None` off the image.
-    fn of(disc: &Disc, grid: &PixelGrid) -> Option<Self> {
-        let radius = disc.radius_sq.sqrt();
-        let inverse_pixel = 1.0 / grid.pixel_size_world;
-        let radius_px = radius * inverse_pixel;
-        let centre_column = disc.u * inverse_pixel + 0.5 * f64::from(grid.width_px) - 0.5;
-        let columns = column_span(grid, centre_column, radius_px, radius_px)?;
-        let rows = rows_of(grid, disc.v, radius)?;
-        // Image sides fit u32.
-        Some(Self {
-            disc: *disc,
-            front_t: disc.front_t(),
-            rows: (rows.0 as u32, rows.1 as u32),
-            columns: (columns.0 as u32, columns.1 as u32),
-        })
-    }
-}
-
 /// A band's pixels: its rows of t and sphere indices, `width` long, and the screen coordinates
 /// of their centres.
 struct BandPixels<'a> {
@@ -117,30 +70,30 @@ pub(super) fn rasterise_discs_in_tiles(
     grid: &PixelGrid,
     (t, sphere): (&mut [f64], &mut [u32]),
 ) -> u64 {
-    let (placed, bands) = time("bin", || {
-        // One per disc, so that the collect writes in parallel (a filtered collect joins its
-        // pieces on one thread: "bin" was flat from 4 cores to 16, docs/scaling-16-before.md).
-        let placed: Vec<Placed> = discs
-            .par_iter()
-            .map(|disc| Placed::of(disc, grid).unwrap_or(Placed::OFF))
-            .collect();
-        let bands = bin_by_rows(&placed, grid, Placed::binned_rows);
-        (placed, bands)
-    });
+    let parts = time("bin", || place_in_parts(discs, grid));
+    rasterise_placed_in_tiles(&parts, grid, (t, sphere))
+}
+
+/// [`rasterise_discs_in_tiles`] for discs already placed and binned: `parts`, consecutive parts
+/// of the discs in the order they come.
+pub(super) fn rasterise_placed_in_tiles(
+    parts: &[PlacedPart],
+    grid: &PixelGrid,
+    (t, sphere): (&mut [f64], &mut [u32]),
+) -> u64 {
     let columns = Columns::of(grid);
     let u_of_column: Vec<f64> = (0..grid.width_px)
         .map(|x| columns.u(f64::from(x)))
         .collect();
     time("draw", || {
-        draw_bands(&placed, &bands, grid, (t, sphere), &u_of_column)
+        draw_bands(parts, grid, (t, sphere), &u_of_column)
     })
 }
 
 /// Draws each band's listed discs into its rows of `t` and `sphere`, bands in parallel. Returns the
 /// pixel–disc tests made.
 fn draw_bands(
-    placed: &[Placed],
-    bands: &Bands,
+    parts: &[PlacedPart],
     grid: &PixelGrid,
     (t, sphere): (&mut [f64], &mut [u32]),
     u_of_column: &[f64],
@@ -150,12 +103,11 @@ fn draw_bands(
         .zip(sphere.par_chunks_mut(width * BAND_ROWS))
         .enumerate()
         .map(|(band, (t, sphere))| {
-            let mut band_discs = Vec::with_capacity(bands.band_len(band));
-            band_discs.extend(
-                bands
-                    .band(band)
-                    .map(|index| placed.get(index as usize).copied().unwrap_or(Placed::NONE)),
-            );
+            let mut band_discs =
+                Vec::with_capacity(parts.iter().map(|part| part.band_len(band)).sum());
+            for part in parts {
+                band_discs.extend(part.band(band).copied());
+            }
             let pixels = BandPixels {
                 t,
                 sphere,
