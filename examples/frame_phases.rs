@@ -90,16 +90,19 @@ const SLEEPS: &str = "thread sleeps (count)";
 
 /// How many times the process's threads have slept so far (the sum of their voluntary context
 /// switches); `None` where `/proc/self/task` cannot tell (not Linux). A thread that ended since
-/// the last call takes its count with it: the pool's threads live as long as the process.
+/// the last call, or ends while it is read, takes its count with it: the pool's threads live as
+/// long as the process.
 fn thread_sleeps() -> Option<u64> {
     let tasks = std::fs::read_dir("/proc/self/task").ok()?;
-    let mut sleeps = 0;
-    for task in tasks {
-        let status = std::fs::read_to_string(task.ok()?.path().join("status")).ok()?;
-        let line = status
-            .lines()
-            .find_map(|line| line.strip_prefix("voluntary_ctxt_switches:"))?;
-        sleeps += line.trim().parse::<u64>().ok()?;
-    }
+    let sleeps = tasks
+        .flatten()
+        .filter_map(|task| std::fs::read_to_string(task.path().join("status")).ok())
+        .filter_map(|status| {
+            status
+                .lines()
+                .find_map(|line| line.strip_prefix("voluntary_ctxt_switches:"))
+                .and_then(|count| count.trim().parse::<u64>().ok())
+        })
+        .sum();
     Some(sleeps)
 }

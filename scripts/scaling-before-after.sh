@@ -2,8 +2,8 @@
 # Two builds of the renderer side by side on one machine, at 1 core and at CORES (default: all
 # the machine has), to compare in one run (machines differ run to run by more than the change):
 # the warm viewer frame (`examples/viewer_frame`, median of 15) of the three scenes of
-# scripts/scaling.sh, the dense million's frame after 16 ms of idling, where `perf` is the threads'
-# sleeps per warm frame, and the cold command's render_ms on the dense million (median of 5 fresh
+# scripts/scaling.sh, the dense million's frame after 16 ms of idling, where `perf` is the context
+# switches per warm frame, and the cold command's render_ms on the dense million (median of 5 fresh
 # processes):
 #   bash scripts/scaling-before-after.sh BEFORE_DIR AFTER_DIR [CORES]
 # BEFORE_DIR holds `viewer_frame` and `raytracer`; AFTER_DIR holds `raytracer` and
@@ -34,11 +34,12 @@ for c in 1 "$most"; do
   a=$(pinned "$c" "$after/examples/viewer_frame" $d/dense_1e6.txt 1024 1024 15 16)
   echo "warm after 16 ms idle dense_1e6 cores=$c before=$b after=$a"
 done
-# Where perf is: the times the process's threads slept (context switches) per warm frame, from
-# 16 frames less 1.
-if command -v perf > /dev/null && perf stat -e context-switches true 2> /dev/null; then
+# Where perf is: the process's context switches (voluntary and involuntary: mostly threads that
+# ran out of work and slept) per warm frame, from 16 frames less 1.
+perf=$(command -v perf || true)
+if [ -n "$perf" ] && "$perf" stat -e context-switches true 2> /dev/null; then
   switches() {
-    pinned "$most" perf stat -x, -e context-switches "$@" 2>&1 > /dev/null |
+    pinned "$most" "$perf" stat -x, -e context-switches "$@" 2>&1 > /dev/null |
       awk -F, '/context-switches/ { print $1 }'
   }
   for which in before after; do
@@ -46,7 +47,11 @@ if command -v perf > /dev/null && perf stat -e context-switches true 2> /dev/nul
     [ "$which" = after ] && frame=$after/examples/viewer_frame
     one=$(switches "$frame" $d/dense_1e6.txt 1024 1024 1)
     many=$(switches "$frame" $d/dense_1e6.txt 1024 1024 16)
-    echo "sleeps per warm frame dense_1e6 cores=$most $which $(( (many - one) / 15 ))"
+    if [[ $one =~ ^[0-9]+$ && $many =~ ^[0-9]+$ ]]; then
+      echo "context switches per warm frame dense_1e6 cores=$most $which $(( (many - one) / 15 ))"
+    else
+      echo "context switches per warm frame dense_1e6 cores=$most $which: perf counted none"
+    fi
   done
 fi
 for c in 1 "$most"; do

@@ -159,8 +159,9 @@ pub(super) fn column_span(
     )
 }
 
-/// Smallest chunk of discs binned by one task: small enough that a dense frame's later passes,
-/// a few tens of thousands of discs each, still bin on every thread.
+/// Smallest chunk of discs binned by one task ([`bin_by_rows`], and the parts of a frame drawn in
+/// any order: `placed::place_in_parts`): small enough that a few tens of thousands of discs still
+/// bin on every thread.
 pub(super) const MIN_BIN_CHUNK: usize = 1024;
 
 /// Lists each disc in the bands its rows touch: chunks in parallel, each in two passes (count,
@@ -195,8 +196,8 @@ pub(crate) fn bin_by_rows<T: Sync>(
 }
 
 /// The band lists of `items`, consecutive items of a frame's list whose first has index
-/// `first_index`, in `band_count` bands by the image rows `rows` gives each: one part of a
-/// [`Bands`] ([`Bands::of_parts`]).
+/// `first_index`, in `band_count` bands by the image rows `rows` gives each (the lists of a
+/// chunk of [`bin_by_rows`], or of a part of placed discs: `placed::PlacedPart`).
 pub(crate) fn bin_part<T>(
     items: &[T],
     first_index: u32,

@@ -73,15 +73,15 @@ impl KeptPositions {
 /// slices (their positions ordered by slice in each chunk: [`KeptPositions`]) into its own part,
 /// then places and bins that part: one parallel step. The discs come out the same whatever the
 /// grouping; on one thread, or when a chunk's positions are not ordered,
-/// [`by_slice_on_one_thread`] makes them without the chunks' orders.
-pub(super) fn by_slice(
+/// [`sorted_serially`] makes them without the chunks' orders.
+pub(super) fn sort_place_and_bin(
     kept: &[Kept<'_>],
     slices: Range<usize>,
     grid: &PixelGrid,
 ) -> Vec<PlacedPart> {
     let ordered = kept.iter().all(|chunk| chunk.positions.is_ordered());
     if rayon::current_num_threads() == 1 || !ordered {
-        return vec![PlacedPart::of(&by_slice_on_one_thread(kept, slices), grid)];
+        return vec![PlacedPart::of(&sorted_serially(kept, slices), grid)];
     }
     let slice_count = slices.len();
     let first_slice = slices.start;
@@ -138,10 +138,10 @@ pub(super) fn by_slice(
         .collect()
 }
 
-/// [`by_slice`]'s discs on one thread: each kept disc moved once, straight to its place (a
+/// [`sort_place_and_bin`]'s discs on one thread: each kept disc moved once, straight to its place (a
 /// slice's cursor), in chunk order. The chunks' orders by slice, which let the threads' groups
 /// skip what is not theirs, cost more than the sort itself on one thread.
-fn by_slice_on_one_thread(kept: &[Kept<'_>], slices: Range<usize>) -> Vec<Disc> {
+fn sorted_serially(kept: &[Kept<'_>], slices: Range<usize>) -> Vec<Disc> {
     let first_slice = slices.start;
     let mut cursor = vec![0usize; slices.len() + 1];
     for kept in kept {
@@ -237,13 +237,14 @@ mod tests {
     fn the_sort_keeps_every_kept_disc_by_slice_then_chunk_placed_and_binned_on_any_thread_count() {
         let mut rng = SplitMix64::new(11);
         let grid = PixelGrid::new(40, 30, 4.0);
-        // (chunk lengths, the pass's slices): empty chunks, a range far from 0, one slice, and
-        // fewer slices than threads.
-        let cases: [(&[usize], Range<usize>); 4] = [
+        // (chunk lengths, the pass's slices): empty chunks, a range far from 0, one slice, fewer
+        // slices than threads, and no disc at all.
+        let cases: [(&[usize], Range<usize>); 5] = [
             (&[300, 0, 257, 1, 0, 999], 0..4096),
             (&[500, 500, 500], 3000..3017),
             (&[400, 0, 400], 77..78),
             (&[50, 60], 10..12),
+            (&[0, 0], 5..9),
         ];
         for (lens, slices) in cases {
             let mut first_id = 0;
@@ -256,29 +257,36 @@ mod tests {
                 })
                 .collect();
             let want = expected(&chunks);
-            for threads in [1, 2, 5, 16] {
-                let pool = rayon::ThreadPoolBuilder::new()
-                    .num_threads(threads)
-                    .build()
-                    .unwrap();
-                let parts = pool.install(|| {
-                    // As the cull makes them, in the same pool.
-                    let positions: Vec<KeptPositions> = chunks
+            // The positions as the cull makes them on `made_on` threads, sorted on `sorted_on`.
+            let sort = |made_on: usize, sorted_on: usize| {
+                let pool = |threads| {
+                    rayon::ThreadPoolBuilder::new()
+                        .num_threads(threads)
+                        .build()
+                        .unwrap()
+                };
+                let positions: Vec<KeptPositions> = pool(made_on).install(|| {
+                    chunks
                         .iter()
                         .map(|c| KeptPositions::of(c.positions.clone(), &c.slices, slices.clone()))
-                        .collect();
-                    let kept: Vec<Kept<'_>> = chunks
-                        .iter()
-                        .zip(&positions)
-                        .map(|(c, positions)| Kept {
-                            slices: &c.slices,
-                            discs: &c.discs,
-                            positions,
-                        })
-                        .collect();
-                    by_slice(&kept, slices.clone(), &grid)
+                        .collect()
                 });
-                let case = format!("slices {slices:?}, {threads} threads");
+                let kept: Vec<Kept<'_>> = chunks
+                    .iter()
+                    .zip(&positions)
+                    .map(|(c, positions)| Kept {
+                        slices: &c.slices,
+                        discs: &c.discs,
+                        positions,
+                    })
+                    .collect();
+                pool(sorted_on).install(|| sort_place_and_bin(&kept, slices.clone(), &grid))
+            };
+            // The same pool, as in a frame; and positions left unordered (made on one thread)
+            // sorted on several.
+            for (made_on, threads) in [(1, 1), (2, 2), (5, 5), (16, 16), (1, 4)] {
+                let parts = sort(made_on, threads);
+                let case = format!("slices {slices:?}, made on {made_on}, {threads} threads");
                 let placed: Vec<Placed> = parts.iter().flat_map(|p| p.placed.clone()).collect();
                 assert_eq!(placed.len(), want.len(), "{case}");
                 let mut on_image = 0;
@@ -291,7 +299,10 @@ mod tests {
                         assert!(Placed::on(disc, &grid).binned_rows().is_none(), "{case}");
                     }
                 }
-                assert!(on_image > want.len() / 2, "{case}: {on_image}");
+                assert!(
+                    want.is_empty() || on_image > want.len() / 2,
+                    "{case}: {on_image}"
+                );
                 // Each band lists, part after part, the discs (by sphere) that meet it.
                 let got_bands: Vec<Vec<u32>> = (0..=grid.height_px as usize / 8)
                     .map(|band| {
