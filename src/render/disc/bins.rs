@@ -159,10 +159,16 @@ pub(super) fn column_span(
     )
 }
 
-/// Smallest chunk of discs binned by one task ([`bin_by_rows`], and the parts of a frame drawn in
-/// any order: `placed::place_in_parts`): small enough that a few tens of thousands of discs still
-/// bin on every thread.
-pub(super) const MIN_BIN_CHUNK: usize = 1024;
+/// Smallest chunk of discs binned by one task: small enough that a few tens of thousands of discs
+/// still bin on every thread.
+const MIN_BIN_CHUNK: usize = 1024;
+
+/// Discs binned by one task, of `len` ([`bin_by_rows`], and the parts of a frame drawn in any
+/// order: `placed::place_in_parts`): about four tasks a thread, none under [`MIN_BIN_CHUNK`].
+pub(super) fn bin_chunk_len(len: usize) -> usize {
+    len.div_ceil(4 * rayon::current_num_threads())
+        .max(MIN_BIN_CHUNK)
+}
 
 /// Lists each disc in the bands its rows touch: chunks in parallel, each in two passes (count,
 /// then fill).
@@ -179,10 +185,7 @@ pub(crate) fn bin_by_rows<T: Sync>(
     rows: impl Fn(&T) -> Option<(usize, usize)> + Sync,
 ) -> Bands {
     let band_count = band_count(grid);
-    let chunk_len = items
-        .len()
-        .div_ceil(4 * rayon::current_num_threads())
-        .max(MIN_BIN_CHUNK);
+    let chunk_len = bin_chunk_len(items.len());
     let chunks = items
         .par_chunks(chunk_len)
         .enumerate()

@@ -6,7 +6,7 @@
 use rayon::prelude::*;
 
 use super::Disc;
-use super::bins::{ChunkBands, MIN_BIN_CHUNK, band_count, bin_part, column_span, rows_of};
+use super::bins::{ChunkBands, band_count, bin_chunk_len, bin_part, column_span, rows_of};
 use crate::geometry::camera::PixelGrid;
 
 /// A disc placed on the image: its nearest t and the image rows (top first) and columns its
@@ -88,12 +88,8 @@ impl PlacedPart {
 
 /// `discs` placed on `grid` and binned, in consecutive parts in parallel (one step).
 pub(super) fn place_in_parts(discs: &[Disc], grid: &PixelGrid) -> Vec<PlacedPart> {
-    let part_len = discs
-        .len()
-        .div_ceil(4 * rayon::current_num_threads())
-        .max(MIN_BIN_CHUNK);
     discs
-        .par_chunks(part_len)
+        .par_chunks(bin_chunk_len(discs.len()))
         .map(|discs| PlacedPart::of(discs, grid))
         .collect()
 }
