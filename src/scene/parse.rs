@@ -70,8 +70,9 @@ const MAX_QUOTED_CHARS: usize = 40;
 /// Spheres parsed between two progress reports.
 pub(super) const SPHERES_PER_REPORT: usize = 16_384;
 
-/// Spheres parsed before the list makes room for the rest of the text ([`Parser::sphere`]).
-const SPHERES_BEFORE_RESERVE: usize = 4_096;
+/// Spheres listed before the list makes room for the rest of the text ([`Parser::sphere`], or a
+/// run taken whole).
+pub(super) const SPHERES_BEFORE_RESERVE: usize = 4_096;
 
 /// Fewest bytes a sphere statement takes (`Sphere{center 0 0 0 radius 0}` is 30): the room made
 /// for the rest of a text never exceeds what it could hold.
@@ -104,6 +105,12 @@ pub(super) struct Parser<'a> {
     pub(super) progress: &'a dyn Fn(f64),
     /// Runs of sphere statements parsed ahead on other threads, in file order ([`split`]).
     pub(super) ahead: std::collections::VecDeque<Ahead<'a>>,
+    /// Byte offset where the file's spheres begin (the end of its first sphere statement, or the
+    /// start of a run taken whole): the lists' room for the rest is judged from the text after
+    /// it, not from a `Materials` block however large ([`Parser::reserve_for_the_rest`]).
+    pub(super) spheres_from_byte: Option<usize>,
+    /// Whether room for the rest of the text was made (once).
+    pub(super) reserved: bool,
 }
 
 impl<'a> Parser<'a> {
@@ -115,6 +122,8 @@ impl<'a> Parser<'a> {
             spheres: Vec::new(),
             progress,
             ahead: std::collections::VecDeque::new(),
+            spheres_from_byte: None,
+            reserved: false,
         }
     }
 
@@ -443,8 +452,11 @@ impl<'a> Parser<'a> {
             radius_world,
             material: self.current_material,
         });
-        if self.spheres.len() == SPHERES_BEFORE_RESERVE {
-            self.reserve_for_the_rest();
+        if self.spheres_from_byte.is_none() {
+            self.spheres_from_byte = Some(self.lexer.bytes_consumed_and_left().0);
+        }
+        if !self.reserved && self.spheres.len() >= SPHERES_BEFORE_RESERVE {
+            self.reserve_for_the_rest(0, 0);
         }
         if self.spheres.len().is_multiple_of(SPHERES_PER_REPORT) {
             (self.progress)(self.lexer.share_consumed());
@@ -452,22 +464,26 @@ impl<'a> Parser<'a> {
         Ok(())
     }
 
-    /// Room for as many more spheres and `MaterialIndex` statements as the rest of the text holds
-    /// at the density seen so far, a tenth more to spare, and never more than it could hold at
-    /// all: a big file's lists then grow once instead of doubling twenty times, each time copying
-    /// them into fresh memory and leaving the old block behind (slower, and a higher peak). Room
-    /// not filled is address space only (its pages are never touched).
-    fn reserve_for_the_rest(&mut self) {
+    /// Room for `coming_spheres` and `coming_references` (a run about to be added, read up to where
+    /// the lexer is) and for as many more spheres and `MaterialIndex` statements as the rest of
+    /// the text holds at the density seen since the spheres began, a tenth more to spare, and
+    /// never more than it could hold at all: a big file's lists then grow once instead of
+    /// doubling twenty times, each time copying them into fresh memory and leaving the old block
+    /// behind (slower, and a higher peak). Room not filled is address space only (its pages are
+    /// never touched).
+    pub(super) fn reserve_for_the_rest(&mut self, coming_spheres: usize, coming_references: usize) {
+        self.reserved = true;
         let (consumed, left) = self.lexer.bytes_consumed_and_left();
+        let span = consumed - self.spheres_from_byte.unwrap_or(0).min(consumed);
         let more = |seen: usize, fewest_bytes: usize| {
-            let per_byte = seen as f64 / consumed.max(1) as f64;
+            let per_byte = seen as f64 / span.max(1) as f64;
             ((left as f64 * per_byte * 1.1) as usize).min(left / fewest_bytes)
         };
+        let spheres = self.spheres.len() + coming_spheres;
+        let references = self.material_references.len() + coming_references;
         self.spheres
-            .reserve(more(self.spheres.len(), MIN_SPHERE_BYTES));
-        self.material_references.reserve(more(
-            self.material_references.len(),
-            MIN_MATERIAL_INDEX_BYTES,
-        ));
+            .reserve(coming_spheres + more(spheres, MIN_SPHERE_BYTES));
+        self.material_references
+            .reserve(coming_references + more(references, MIN_MATERIAL_INDEX_BYTES));
     }
 }

@@ -19,7 +19,7 @@ use super::ahead::{Ahead, Run};
 use super::error::{Location, ParseError};
 use super::lexer::Token;
 use super::model::{Scene, Sphere};
-use super::parse::Parser;
+use super::parse::{Parser, SPHERES_BEFORE_RESERVE};
 
 #[cfg(test)]
 thread_local! {
@@ -131,6 +131,14 @@ impl<'a> Parser<'a> {
         let line = token.location.line;
         let inherited = self.current_material;
         let added = run.spheres.len();
+        // Read on from where the run stopped; room for the rest is judged from there.
+        self.lexer.continue_after(line_start, line, &run.end);
+        if self.spheres_from_byte.is_none() {
+            self.spheres_from_byte = Some(line_start);
+        }
+        if !self.reserved && self.spheres.len() + added >= SPHERES_BEFORE_RESERVE {
+            self.reserve_for_the_rest(added, run.material_references.len());
+        }
         self.spheres.extend(
             run.spheres
                 .into_iter()
@@ -157,7 +165,6 @@ impl<'a> Parser<'a> {
         if let Some(material) = run.material_after {
             self.current_material = material;
         }
-        self.lexer.continue_after(line_start, line, &run.end);
         (self.progress)(self.lexer.share_consumed());
         added as u64
     }
@@ -351,6 +358,54 @@ mod tests {
             let spare = scene.spheres.capacity() as f64 / count as f64;
             assert!((1.0..1.25).contains(&spare), "{count}: room for {spare}×");
         }
+    }
+
+    /// [`big_text`] with `extra` more materials in its `Materials` block, ahead of every sphere.
+    fn big_text_after_materials(count: usize, extra: usize) -> String {
+        let mut materials = format!("Materials {{ numMaterials {}\n", 3 + extra);
+        for i in 0..extra {
+            let _ = writeln!(
+                materials,
+                "PhongMaterial {{ diffuseColor 0.{} 0.5 0.5 }}",
+                i % 10
+            );
+        }
+        big_text(count).replacen("Materials { numMaterials 3\n", &materials, 1)
+    }
+
+    #[test]
+    fn room_for_the_spheres_is_judged_from_where_they_begin_not_from_a_materials_block() {
+        // One thread: 100,000 materials (4 MB) ahead of 20,000 spheres. Judged from the file's
+        // start, the first 4,096 spheres looked ten times sparser than they are and the list
+        // grew by doubling past the room made (room for 1.6×).
+        let text = big_text_after_materials(20_000, 100_000);
+        let scene = sequential(&text).unwrap();
+        assert_eq!(scene.spheres.len(), 20_000);
+        let spare = scene.spheres.capacity() as f64 / 20_000.0;
+        assert!(
+            (1.0..1.25).contains(&spare),
+            "one thread: room for {spare}×"
+        );
+
+        // Four chunks, the first nearly all materials: the main parser reads fewer than 4,096
+        // spheres itself, then takes three runs whole. Room is made at the first run; before,
+        // none was, and each run's spheres were added by doubling (room for 1.3× or more).
+        let text = big_text_after_materials(68_000, 20_000);
+        let first_run = split_points(&text, 4)[0].0;
+        let read_by_main = text[..first_run].matches("Sphere").count();
+        assert!(
+            (1..SPHERES_BEFORE_RESERVE).contains(&read_by_main),
+            "{read_by_main}"
+        );
+        RUNS_TAKEN.with(|taken| taken.set(0));
+        let scene = parse_in_chunks(&text, &|_| {}, 0, 4).unwrap();
+        assert_eq!(RUNS_TAKEN.with(std::cell::Cell::get), 3);
+        assert_eq!(scene, sequential(&text).unwrap());
+        let spare = scene.spheres.capacity() as f64 / 68_000.0;
+        assert!(
+            (1.0..1.25).contains(&spare),
+            "four chunks: room for {spare}×"
+        );
     }
 
     #[test]
