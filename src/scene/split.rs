@@ -375,10 +375,11 @@ mod tests {
 
     #[test]
     fn room_for_the_spheres_is_judged_from_where_they_begin_not_from_a_materials_block() {
-        // One thread: 100,000 materials (4 MB) ahead of 20,000 spheres. Judged from the file's
-        // start, the first 4,096 spheres looked ten times sparser than they are and the list
+        // One thread: 100,000 materials (4.3 MB) ahead of 20,000 spheres. Judged from the file's
+        // start, the first 4,096 spheres looked about 25 times sparser than they are and the list
         // grew by doubling past the room made (room for 1.6×).
         let text = big_text_after_materials(20_000, 100_000);
+        assert!(text.contains("numMaterials 100003\n"));
         let scene = sequential(&text).unwrap();
         assert_eq!(scene.spheres.len(), 20_000);
         let spare = scene.spheres.capacity() as f64 / 20_000.0;
@@ -391,6 +392,7 @@ mod tests {
         // spheres itself, then takes three runs whole. Room is made at the first run; before,
         // none was, and each run's spheres were added by doubling (room for 1.3× or more).
         let text = big_text_after_materials(68_000, 20_000);
+        assert!(text.contains("numMaterials 20003\n"));
         let first_run = split_points(&text, 4)[0].0;
         let read_by_main = text[..first_run].matches("Sphere").count();
         assert!(
