@@ -241,3 +241,56 @@ fn the_shortcuts_overlay_fits_a_900_point_high_window_without_scrolling() {
     }
     assert!(overlay.bottom() <= 900.0, "{overlay:?}");
 }
+
+#[test]
+fn the_shortcuts_overlay_shows_every_row_whole_at_the_window_sizes_people_use() {
+    for (width, height) in [
+        (1280.0, 720.0),
+        (1024.0, 768.0),
+        (800.0, 600.0),
+        (640.0, 480.0),
+    ] {
+        let mut harness = viewer_sized(Some(scene_path("scene1_02.txt")), vec2(width, height), 1.0);
+        harness.key_press(egui::Key::F1);
+        harness.run_steps(10);
+        let size = format!("{width}×{height}");
+        let window = harness.get_by_role_and_label(Role::Window, "Shortcuts and gestures");
+        let overlay = window.rect();
+        assert!(
+            overlay.left() >= 0.0 && overlay.right() <= width,
+            "{size}: the overlay at {overlay:?}"
+        );
+        // Every key and description lies across the overlay, none under another.
+        let labels: Vec<(String, Rect)> = window
+            .query_all_by_role(Role::Label)
+            .map(|node| {
+                let rect = node.rect();
+                let node = node.accesskit_node();
+                (
+                    node.value().or_else(|| node.label()).unwrap_or_default(),
+                    rect,
+                )
+            })
+            .collect();
+        let rows = labels
+            .iter()
+            .filter(|(text, _)| text.contains("the camera"))
+            .count();
+        assert!(
+            rows >= 3,
+            "{size}: {rows} rows about the camera found in {labels:?}"
+        );
+        for (i, (text, rect)) in labels.iter().enumerate() {
+            assert!(
+                rect.left() >= overlay.left() && rect.right() <= overlay.right(),
+                "{size}: {text:?} at {rect:?}, the overlay {overlay:?}"
+            );
+            for (other, other_rect) in &labels[i + 1..] {
+                assert!(
+                    !rect.shrink(1.0).intersects(other_rect.shrink(1.0)),
+                    "{size}: {text:?} at {rect:?} under {other:?} at {other_rect:?}"
+                );
+            }
+        }
+    }
+}

@@ -23,8 +23,22 @@ pub enum UsageError {
     #[error("flag {0} is given twice")]
     Repeated(Flag),
     /// Too few values after a flag.
-    #[error("flag {0} needs {n} value(s): {synopsis}", n = .0.arity(), synopsis = .0.synopsis())]
-    MissingValue(Flag),
+    #[error(
+        "flag {flag} needs {} ({}); found {}",
+        values(*needed),
+        flag.synopsis(),
+        found(*given, next.as_deref())
+    )]
+    MissingValue {
+        /// The flag.
+        flag: Flag,
+        /// How many values it needs here.
+        needed: usize,
+        /// How many it was given before the next flag or the end.
+        given: usize,
+        /// The flag that came where a value belongs (`None`: the command ended).
+        next: Option<String>,
+    },
     /// A value that should be a number is not one.
     #[error("{flag}: expected {what}, found '{found}'")]
     BadNumber {
@@ -40,8 +54,8 @@ pub enum UsageError {
     DepthRangeTooWide(Flag),
     /// An image size outside the supported range.
     #[error(
-        "{flag}: {width_px}×{height_px} is out of range: each side 1..={MAX_SIDE_PX}, \
-         at most {MAX_PIXELS} pixels in all",
+        "{flag}: {width_px}×{height_px} is out of range: each side from 1 to {MAX_SIDE_PX} \
+         pixels, at most {MAX_PIXELS} pixels in all",
         flag = Flag::Size
     )]
     BadSize {
@@ -51,7 +65,7 @@ pub enum UsageError {
         height_px: u64,
     },
     /// An output whose extension names no format the flag writes.
-    #[error("{flag}: '{path}' has an unknown format; use one of {}", extensions_of(*flag))]
+    #[error("{flag}: {}", unknown_format(*flag, path))]
     UnknownFormat {
         /// The flag.
         flag: Flag,
@@ -109,6 +123,40 @@ impl UsageError {
     /// Whether the usage text should follow the message (the user may not know the flags).
     pub fn wants_usage(&self) -> bool {
         matches!(self, Self::UnknownFlag(_) | Self::StrayArgument(_))
+    }
+}
+
+/// "2 values", "a value".
+fn values(count: usize) -> String {
+    match count {
+        1 => "a value".to_owned(),
+        n => format!("{n} values"),
+    }
+}
+
+/// What came of a flag's values: "1, then '-output'", "none, then the end of the command".
+fn found(given: usize, next: Option<&str>) -> String {
+    let given = match given {
+        0 => "none".to_owned(),
+        n => n.to_string(),
+    };
+    match next {
+        Some(next) => format!("{given}, then '{next}'"),
+        None => format!("{given}, then the end of the command"),
+    }
+}
+
+/// Why `path` cannot be written by `flag`: its extension names no format (or it is `-`, which
+/// elsewhere means standard output).
+fn unknown_format(flag: Flag, path: &str) -> String {
+    let extensions = extensions_of(flag);
+    if path == "-" {
+        format!(
+            "'-': images are written to files, not to standard output; name a file ending in \
+             one of {extensions}"
+        )
+    } else {
+        format!("'{path}' has an unknown format; use one of {extensions}")
     }
 }
 

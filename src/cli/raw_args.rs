@@ -53,7 +53,14 @@ impl RawArgs {
                     .is_some_and(|next| Flag::named(&next.to_string_lossy()).is_some());
                 match arguments.next() {
                     Some(value) if !next_is_flag => flag_values.push(value),
-                    _ => return Err(UsageError::MissingValue(flag)),
+                    next => {
+                        return Err(UsageError::MissingValue {
+                            flag,
+                            needed: arity,
+                            given: flag_values.len(),
+                            next: next.map(|next| next.to_string_lossy().into_owned()),
+                        });
+                    }
                 }
             }
             if values.insert(flag, flag_values).is_some() {

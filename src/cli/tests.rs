@@ -112,13 +112,26 @@ fn mistakes_are_usage_errors() {
     let cases = [
         ("-inptu a.txt", "unknown flag '-inptu'"),
         ("a.txt", "unexpected argument 'a.txt'"),
-        ("-input", "-input needs 1 value"),
-        ("-input a.txt -size 200", "-size needs 2 value"),
+        (
+            "-input",
+            "-input needs a value (-input FILE); found none, then the end of the command",
+        ),
+        (
+            "-input a.txt -size 200",
+            "-size needs 2 values (-size W H); found 1, then the end",
+        ),
         (
             "-input a.txt -size 200 -output x.tga",
-            "-size needs 2 value",
+            "-size needs 2 values (-size W H); found 1, then '-output'",
         ),
-        ("-input a.txt -size 0 200 -output x.tga", "out of range"),
+        (
+            "-input a.txt -output -",
+            "'-': images are written to files, not to standard output; name a file ending in one of .tga, .png",
+        ),
+        (
+            "-input a.txt -size 0 200 -output x.tga",
+            "out of range: each side from 1 to 16384 pixels",
+        ),
         ("-input a.txt -size 20000 200 -output x.tga", "out of range"),
         (
             "-input a.txt -size 99999999999 200 -output x.tga",

@@ -91,11 +91,14 @@ pub(crate) fn help_ui(ctx: &egui::Context) -> bool {
     } else {
         (screen.width() - 40.0).min(560.0)
     };
+    // As wide as `width` and no wider: a window sized by its content grew past the screen's
+    // edge, anchored at the centre, and cut off the gestures' names on the left.
     egui::Window::new(HELP_TITLE)
         .open(&mut open)
         .collapsible(false)
         .resizable(false)
-        .default_width(width)
+        .min_width(width)
+        .max_width(width)
         .max_height(screen.height() - 40.0)
         .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
         .show(ctx, |ui| {
@@ -117,7 +120,9 @@ pub(crate) fn help_ui(ctx: &egui::Context) -> bool {
     open && !escape
 }
 
-/// One group of the overlay's rows as a striped two-column grid.
+/// One group of the overlay's rows as a striped two-column grid, each row's description wrapped
+/// to the width left beside the keys (a grid's labels do not wrap by themselves: a long one ran
+/// under the column beside it).
 fn shortcuts_grid(ui: &mut egui::Ui, name: &str, rows: &[(&str, &str)]) {
     egui::Grid::new(name)
         .num_columns(2)
@@ -125,7 +130,7 @@ fn shortcuts_grid(ui: &mut egui::Ui, name: &str, rows: &[(&str, &str)]) {
         .show(ui, |ui| {
             for (keys, what) in rows {
                 ui.label(RichText::new(*keys).strong());
-                ui.label(*what);
+                ui.add(egui::Label::new(*what).wrap());
                 ui.end_row();
             }
         });
