@@ -1,7 +1,8 @@
 //! The viewer's controls and probe at the window sizes people use, driven headlessly with
 //! egui_kittest: sliders as wide as the panel whose steps follow the value, every line of the
 //! probe readable (wrapped, and scrolled to when they do not fit), and the controls beside the
-//! images in an 800-point window and over them, as tall as the window, in smaller ones.
+//! images in an 800-point window and over them, as tall as the window, in smaller ones; the
+//! shortcuts overlay whole at those sizes; no-hit pixels on screen in a colour the map lacks.
 #![cfg(feature = "gui")]
 
 mod common;
@@ -293,4 +294,39 @@ fn the_shortcuts_overlay_shows_every_row_whole_at_the_window_sizes_people_use() 
             }
         }
     }
+}
+
+/// Pixels of `shot` inside `rect` (points, at one pixel a point) within 6 of `rgb` in each channel.
+fn pixels_near(shot: &image::RgbaImage, rect: Rect, rgb: [u8; 3]) -> usize {
+    let (x0, y0) = (rect.left().ceil() as u32, rect.top().ceil() as u32);
+    let (x1, y1) = (rect.right().floor() as u32, rect.bottom().floor() as u32);
+    (y0..y1.min(shot.height()))
+        .flat_map(|y| (x0..x1.min(shot.width())).map(move |x| (x, y)))
+        .filter(|&(x, y)| {
+            let pixel = shot.get_pixel(x, y).0;
+            (0..3).all(|c| pixel[c].abs_diff(rgb[c]) <= 6)
+        })
+        .count()
+}
+
+#[test]
+fn no_hit_pixels_on_screen_are_dark_blue_on_grey_and_light_grey_on_turbo() {
+    // scene1_02's spheres leave most of the image without a hit.
+    let mut harness = viewer_sized(Some(scene_path("scene1_02.txt")), vec2(1280.0, 720.0), 1.0);
+    let (frame, _) = harness.state().shown_frame().unwrap();
+    let no_hit = frame.t.iter().filter(|t| t.is_infinite()).count();
+    assert!(no_hit > 10_000, "{no_hit} no-hit pixels");
+    let (navy, light_grey) = ([24, 36, 96], [200, 200, 200]);
+    let depth = harness.get_by_label("depth image").rect();
+    let shot = harness.render().expect("the UI renders (wgpu)");
+    assert!(pixels_near(&shot, depth, navy) > 5_000, "grey: dark blue");
+    click(&mut harness, "turbo");
+    settle(&mut harness);
+    let depth = harness.get_by_label("depth image").rect();
+    let shot = harness.render().expect("the UI renders (wgpu)");
+    assert!(
+        pixels_near(&shot, depth, light_grey) > 5_000,
+        "turbo: light grey"
+    );
+    assert_eq!(pixels_near(&shot, depth, navy), 0, "turbo: no dark blue");
 }

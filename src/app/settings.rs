@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use crate::export::ExtraDepth;
-use crate::render::depth_map::{DepthColourMap, NO_HIT_MARK};
+use crate::render::depth_map::DepthColourMap;
 
 /// Image formats offered by the export panel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -76,8 +76,8 @@ pub struct Settings {
 pub struct DepthDisplay {
     /// Grey (the course's), turbo or viridis.
     pub colour_map: DepthColourMap,
-    /// Show no-hit pixels in [`NO_HIT_MARK`] on screen instead of black, so they stand apart
-    /// from far ones. Files keep black.
+    /// Show no-hit pixels in the map's mark ([`DepthColourMap::no_hit_mark`]) on screen instead
+    /// of black, so they stand apart from far ones. Files keep black.
     pub mark_no_hit: bool,
     /// "Auto range" ignores this percentage of the visible t at each end (0: min to max).
     pub auto_cut_percent: f64,
@@ -103,7 +103,7 @@ impl DepthDisplay {
     /// The on-screen colour of no-hit pixels.
     pub(crate) fn no_hit_rgb(&self) -> [u8; 3] {
         if self.mark_no_hit {
-            NO_HIT_MARK
+            self.colour_map.no_hit_mark()
         } else {
             DepthColourMap::FILE_NO_HIT
         }

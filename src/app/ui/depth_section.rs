@@ -25,7 +25,7 @@ pub(crate) fn depth_tools_ui(ui: &mut Ui, display: &mut DepthDisplay) -> Vec<Act
     });
     ui.checkbox(&mut display.mark_no_hit, "mark no-hit pixels")
         .on_hover_text(
-            "show pixels where no ray hits in dark blue instead of black (files keep black)",
+            "show pixels where no ray hits in a colour the map does not use (dark blue on grey, light grey on turbo and viridis) instead of black; files keep black",
         );
     ui.horizontal(|ui| {
         if ui
