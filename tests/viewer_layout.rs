@@ -286,6 +286,14 @@ fn the_shortcuts_overlay_shows_every_row_whole_at_the_window_sizes_people_use() 
                 rect.left() >= overlay.left() && rect.right() <= overlay.right(),
                 "{size}: {text:?} at {rect:?}, the overlay {overlay:?}"
             );
+            // Where the window is wide and high enough for two columns, nothing is scrolled:
+            // every row lies above the overlay's bottom too.
+            if width >= 1000.0 && height >= 560.0 {
+                assert!(
+                    rect.bottom() <= overlay.bottom(),
+                    "{size}: {text:?} at {rect:?}, the overlay {overlay:?}"
+                );
+            }
             for (other, other_rect) in &labels[i + 1..] {
                 assert!(
                     !rect.shrink(1.0).intersects(other_rect.shrink(1.0)),

@@ -146,15 +146,18 @@ fn found(given: usize, next: Option<&str>) -> String {
     }
 }
 
-/// Why `path` cannot be written by `flag`: its extension names no format (or it is `-`, which
-/// elsewhere means standard output).
+/// Why `path` cannot be used by `flag`: its extension names no format (or it is `-`, which
+/// elsewhere means standard input or output).
 fn unknown_format(flag: Flag, path: &str) -> String {
     let extensions = extensions_of(flag);
     if path == "-" {
-        format!(
-            "'-': images are written to files, not to standard output; name a file ending in \
-             one of {extensions}"
-        )
+        let (what, stream) = match flag {
+            Flag::CompareOutput | Flag::CompareDepth => {
+                ("images to compare are read from", "standard input")
+            }
+            _ => ("outputs are written to", "standard output"),
+        };
+        format!("'-': {what} files, not {stream}; name a file ending in one of {extensions}")
     } else {
         format!("'{path}' has an unknown format; use one of {extensions}")
     }

@@ -126,7 +126,11 @@ fn mistakes_are_usage_errors() {
         ),
         (
             "-input a.txt -output -",
-            "'-': images are written to files, not to standard output; name a file ending in one of .tga, .png",
+            "'-': outputs are written to files, not standard output; name a file ending in one of .tga, .png",
+        ),
+        (
+            "-input a.txt -compare_output -",
+            "'-': images to compare are read from files, not standard input; name a file ending in one of .tga, .png",
         ),
         (
             "-input a.txt -size 0 200 -output x.tga",

@@ -13,7 +13,7 @@
 //! turbo, viridis) applied to the same grey value (near = the map's bright/warm end). In colour
 //! maps, pixels with no hit are black, which neither map contains, so "nothing there" never looks
 //! like "far away". The course's grey image keeps no-hit black (SPEC); the viewer can mark no-hit
-//! pixels in [`NO_HIT_MARK`] on screen.
+//! pixels on screen in a colour far from the map's ([`DepthColourMap::no_hit_mark`]).
 
 /// The range of t mapped onto the grey ramp.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -28,7 +28,7 @@ pub enum ViewError {
     BadCenter,
     /// The image is empty or larger than [`MAX_SIDE_PX`] / [`MAX_PIXELS`].
     #[error(
-        "image size {width_px}×{height_px} is out of range: each side 1..={MAX_SIDE_PX} px, \
+        "image size {width_px}×{height_px} is out of range: each side from 1 to {MAX_SIDE_PX} px, \
          at most {MAX_PIXELS} px in all"
     )]
     BadImageSize {

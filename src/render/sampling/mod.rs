@@ -164,7 +164,7 @@ pub struct Sampling {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SamplingError {
     /// Zero or too many samples.
-    #[error("samples per pixel must be 1..={MAX_SAMPLES}, found {0}")]
+    #[error("samples per pixel must be from 1 to {MAX_SAMPLES}, found {0}")]
     SampleCount(u32),
     /// A grid sampler with a count that is not a square.
     #[error(
