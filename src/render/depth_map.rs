@@ -215,7 +215,7 @@ const TURBO_FAR_END: f64 = 0.1;
 
 /// The on-screen colour of no-hit pixels on the grey map when the viewer marks them (a dark blue
 /// that the grey ramp never produces).
-pub(crate) const NO_HIT_MARK: [u8; 3] = [24, 36, 96];
+const NO_HIT_MARK: [u8; 3] = [24, 36, 96];
 
 /// ... and on the colour maps (a light grey, which neither produces).
 const NO_HIT_MARK_ON_COLOURS: [u8; 3] = [200, 200, 200];

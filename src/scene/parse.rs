@@ -70,8 +70,8 @@ const MAX_QUOTED_CHARS: usize = 40;
 /// Spheres parsed between two progress reports.
 pub(super) const SPHERES_PER_REPORT: usize = 16_384;
 
-/// Spheres listed before the list makes room for the rest of the text ([`Parser::sphere`], or a
-/// run taken whole).
+/// Spheres listed before the list makes room for the rest of the text
+/// ([`Parser::reserve_once_past_threshold`]: after a sphere, or before a run taken whole).
 pub(super) const SPHERES_BEFORE_RESERVE: usize = 4_096;
 
 /// Fewest bytes a sphere statement takes (`Sphere{center 0 0 0 radius 0}` is 30): the room made
@@ -455,13 +455,23 @@ impl<'a> Parser<'a> {
         if self.spheres_from_byte.is_none() {
             self.spheres_from_byte = Some(self.lexer.bytes_consumed_and_left().0);
         }
-        if !self.reserved && self.spheres.len() >= SPHERES_BEFORE_RESERVE {
-            self.reserve_for_the_rest(0, 0);
-        }
+        self.reserve_once_past_threshold(0, 0);
         if self.spheres.len().is_multiple_of(SPHERES_PER_REPORT) {
             (self.progress)(self.lexer.share_consumed());
         }
         Ok(())
+    }
+
+    /// [`Self::reserve_for_the_rest`], once: when the spheres listed and `coming_spheres` reach
+    /// [`SPHERES_BEFORE_RESERVE`].
+    pub(super) fn reserve_once_past_threshold(
+        &mut self,
+        coming_spheres: usize,
+        coming_references: usize,
+    ) {
+        if !self.reserved && self.spheres.len() + coming_spheres >= SPHERES_BEFORE_RESERVE {
+            self.reserve_for_the_rest(coming_spheres, coming_references);
+        }
     }
 
     /// Room for `coming_spheres` and `coming_references` (a run about to be added, read up to where
@@ -471,7 +481,7 @@ impl<'a> Parser<'a> {
     /// doubling twenty times, each time copying them into fresh memory and leaving the old block
     /// behind (slower, and a higher peak). Room not filled is address space only (its pages are
     /// never touched).
-    pub(super) fn reserve_for_the_rest(&mut self, coming_spheres: usize, coming_references: usize) {
+    fn reserve_for_the_rest(&mut self, coming_spheres: usize, coming_references: usize) {
         self.reserved = true;
         let (consumed, left) = self.lexer.bytes_consumed_and_left();
         let span = consumed - self.spheres_from_byte.unwrap_or(0).min(consumed);

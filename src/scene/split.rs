@@ -19,7 +19,7 @@ use super::ahead::{Ahead, Run};
 use super::error::{Location, ParseError};
 use super::lexer::Token;
 use super::model::{Scene, Sphere};
-use super::parse::{Parser, SPHERES_BEFORE_RESERVE};
+use super::parse::Parser;
 
 #[cfg(test)]
 thread_local! {
@@ -136,9 +136,7 @@ impl<'a> Parser<'a> {
         if self.spheres_from_byte.is_none() {
             self.spheres_from_byte = Some(line_start);
         }
-        if !self.reserved && self.spheres.len() + added >= SPHERES_BEFORE_RESERVE {
-            self.reserve_for_the_rest(added, run.material_references.len());
-        }
+        self.reserve_once_past_threshold(added, run.material_references.len());
         self.spheres.extend(
             run.spheres
                 .into_iter()
@@ -259,7 +257,7 @@ fn parse_run<'a>(text: &'a str, cancelled: &AtomicBool) -> Run<'a> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::parse::Parser;
+    use super::super::parse::{Parser, SPHERES_BEFORE_RESERVE};
     use super::super::read::parse_scene;
     use super::*;
     use std::fmt::Write as _;
