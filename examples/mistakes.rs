@@ -16,7 +16,8 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use raytracer::compare::picture::{Row, difference_picture};
-use raytracer::compare::{Difference, Mistake, MistakeSet, Theirs, diagnose, render_variant};
+use raytracer::compare::{Difference, Mistake, MistakeSet, Theirs, diagnose};
+use raytracer::oracle::mistaken::render_variant;
 use raytracer::render::View;
 use raytracer::render::depth_map::DepthRange;
 use raytracer::scene::{Scene, load_scene};
@@ -93,7 +94,8 @@ fn best_case(mistake: Mistake, cases: Vec<Case>) -> Option<(Case, usize, usize)>
                     depth: Some(&theirs.1),
                 },
             );
-            (diagnosis.mistakes == set).then_some((case, colour, depth))
+            (diagnosis.mistakes() == set && diagnosis.stated().len() == set.len())
+                .then_some((case, colour, depth))
         })
         .max_by_key(|(_, colour, depth)| colour + depth)
 }

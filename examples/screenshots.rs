@@ -177,7 +177,8 @@ fn main() {
 /// The Compare section: a course scene rendered with rays through pixel corners, typed into the
 /// section, diagnosed, with the difference shown in place of the colour image and a pixel probed.
 fn compare(folder: &Path) {
-    use raytracer::compare::{Mistake, MistakeSet, render_variant};
+    use raytracer::compare::{Mistake, MistakeSet};
+    use raytracer::oracle::mistaken::render_variant;
     let scene_path = PathBuf::from("scenes/scene1_03.txt");
     let scene = raytracer::scene::load_scene(&scene_path).unwrap();
     let view = raytracer::render::View::of_camera(

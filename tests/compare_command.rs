@@ -11,7 +11,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use image::RgbImage;
-use raytracer::compare::{Mistake, MistakeSet, render_variant};
+use raytracer::compare::{Mistake, MistakeSet};
+use raytracer::oracle::mistaken::render_variant;
 use raytracer::render::View;
 use raytracer::render::depth_map::DepthRange;
 use raytracer::scene::load_scene;

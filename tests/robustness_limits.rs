@@ -173,7 +173,7 @@ fn comparing_images_stays_within_the_stated_bound_and_is_refused_when_it_cannot_
         raytracer::render::depth_map::DepthRange::new(-2.0, 2.0),
     );
     let mistakes = raytracer::compare::MistakeSet::of(&[raytracer::compare::Mistake::PixelCorners]);
-    let (colour, depth) = raytracer::compare::render_variant(&scene, &view, mistakes);
+    let (colour, depth) = raytracer::oracle::mistaken::render_variant(&scene, &view, mistakes);
     colour.save(folder.path().join("mine.png")).unwrap();
     depth.save(folder.path().join("mine_depth.png")).unwrap();
     let scene_arg = scene_file.to_str().unwrap();

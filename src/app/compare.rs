@@ -24,7 +24,7 @@ use super::background::{Poll, Task};
 use super::status::Status;
 use crate::compare::picture::{heat_map, heat_map_marked};
 use crate::compare::their_image::{decode_their_image, read_their_image};
-use crate::compare::{Difference, Theirs, diagnose, infer_depth_range};
+use crate::compare::{Deviation, Difference, Theirs, diagnose, infer_depth_range};
 use crate::render::depth_map::DepthRange;
 use crate::render::sampling::Sampling;
 use crate::render::{Quality, View, render_with};
@@ -109,12 +109,16 @@ pub struct ComparisonPixels {
     pub exact: RgbImage,
     /// How they differ.
     pub difference: Difference,
-    /// The mistakes that explain the difference (empty: none does, or none was looked for).
-    pub diagnosis: Vec<&'static str>,
-    /// Other sets that explain it as well (the diagnosis is then ambiguous).
+    /// The statements that explain the difference (empty: none does, or none was looked for).
+    pub statements: Vec<Deviation>,
+    /// Each statement as its word and values (`zoom 1.118`).
+    pub diagnosis: Vec<String>,
+    /// The alternatives of a near tie, each a `+`-joined list of statements (empty: no tie).
+    pub alternatives: Vec<String>,
+    /// Whether other models explain it as well (the diagnosis is then ambiguous).
     pub ambiguous: bool,
-    /// When nothing explains it all: the mistakes that explain part of it.
-    pub partial: Vec<&'static str>,
+    /// When nothing explains it all: the statements that explain part of it.
+    pub partial: Vec<Deviation>,
     /// Differing pixels no word named accounts for.
     pub unexplained_pixels: usize,
     /// A depth image's range, read back from it (`None`: a colour image, or no ramp to fit).
@@ -183,7 +187,7 @@ pub fn compare_file(
         ImageKind::Colour => None,
         ImageKind::Depth => infer_depth_range(scene, &view, &theirs),
     };
-    let unexplained = if diagnosis.put_forward().is_empty() {
+    let unexplained = if diagnosis.stated().is_empty() && diagnosis.partial().is_empty() {
         None
     } else {
         match kind {
@@ -197,19 +201,24 @@ pub fn compare_file(
         view,
         exact,
         difference,
+        statements: diagnosis.stated().to_vec(),
         diagnosis: diagnosis
-            .mistakes
-            .mistakes()
-            .into_iter()
-            .map(crate::compare::Mistake::word)
+            .stated()
+            .iter()
+            .map(Deviation::name_and_values)
             .collect(),
-        ambiguous: !diagnosis.alternatives.is_empty(),
-        partial: diagnosis
-            .partial
-            .mistakes()
-            .into_iter()
-            .map(crate::compare::Mistake::word)
+        alternatives: diagnosis
+            .alternatives()
+            .iter()
+            .map(|set| {
+                set.iter()
+                    .map(Deviation::name_and_values)
+                    .collect::<Vec<_>>()
+                    .join(" + ")
+            })
             .collect(),
+        ambiguous: !diagnosis.alternatives().is_empty(),
+        partial: diagnosis.partial().to_vec(),
         unexplained_pixels: diagnosis.unexplained_pixels(),
         unexplained,
         depth_range_inferred,
@@ -267,7 +276,9 @@ pub fn compare_quality(
         theirs,
         exact,
         difference,
+        statements: Vec::new(),
         diagnosis: Vec::new(),
+        alternatives: Vec::new(),
         ambiguous: false,
         partial: Vec::new(),
         unexplained_pixels: 0,

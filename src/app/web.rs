@@ -432,12 +432,16 @@ impl WebHandle {
         .flatten()
     }
 
-    /// The mistakes the comparison on screen names, one word each (empty when none is open or
-    /// none is named).
+    /// The statements the comparison on screen makes, each as the command line prints it after
+    /// `diagnosis: ` (empty when none is open or none is made).
     pub fn diagnosis(&self) -> Vec<String> {
         self.with_app(|app| {
             app.compare.current.as_ref().map_or_else(Vec::new, |c| {
-                c.pixels.diagnosis.iter().map(|&w| w.to_owned()).collect()
+                c.pixels
+                    .statements
+                    .iter()
+                    .map(|d| format!("{}: {}", d.name_and_values(), d.explanation()))
+                    .collect()
             })
         })
         .unwrap_or_default()

@@ -11,7 +11,7 @@ use image::RgbImage;
 use super::flags::Flag;
 use super::request::{CompareRequest, RenderRequest, TheirDepth};
 use crate::compare::picture::{Row, difference_picture};
-use crate::compare::{Diagnosis, Difference, Theirs, diagnose, infer_depth_range};
+use crate::compare::{Deviation, Diagnosis, Difference, Theirs, diagnose, infer_depth_range};
 use crate::render::depth_map::DepthRange;
 use crate::render::{Frame, View};
 use crate::scene::Scene;
@@ -126,25 +126,33 @@ impl CompareReport {
             };
         }
         let _ = writeln!(text, "match: {}", if self.matches() { "yes" } else { "no" });
-        let words = self.diagnosis.mistakes.mistakes();
-        if words.is_empty() {
+        let statement = |d: &Deviation| format!("{}: {}", d.name_and_values(), d.explanation());
+        let stated = self.diagnosis.stated();
+        if stated.is_empty() {
             let _ = writeln!(text, "diagnosis: none");
         }
-        for word in &words {
-            let _ = writeln!(text, "diagnosis: {word}");
+        for deviation in stated {
+            let _ = writeln!(text, "diagnosis: {}", statement(deviation));
         }
-        if !self.diagnosis.alternatives.is_empty() {
-            let sets: Vec<String> = self
-                .diagnosis
-                .alternatives
+        let alternatives = self.diagnosis.alternatives();
+        if !alternatives.is_empty() {
+            let sets: Vec<String> = alternatives
                 .iter()
-                .map(ToString::to_string)
+                .map(|set| {
+                    if set.is_empty() {
+                        "none".to_owned()
+                    } else {
+                        set.iter()
+                            .map(Deviation::name_and_values)
+                            .collect::<Vec<_>>()
+                            .join(" + ")
+                    }
+                })
                 .collect();
             let _ = writeln!(text, "diagnosis_ambiguous: {}", sets.join(" | "));
         }
-        let partial = self.diagnosis.partial.mistakes();
-        for word in &partial {
-            let _ = writeln!(text, "diagnosis_partial: {word}");
+        for deviation in self.diagnosis.partial() {
+            let _ = writeln!(text, "diagnosis_partial: {}", statement(deviation));
         }
         if !self.matches() {
             let _ = writeln!(

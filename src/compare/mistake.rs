@@ -118,9 +118,74 @@ impl Mistake {
         }
     }
 
+    /// What the mistake means and what to look for in the code, in one sentence.
+    pub fn advice(self) -> &'static str {
+        match self {
+            Self::PixelCorners => {
+                "rays pass through pixel corners x/W instead of centres (x + ½)/W: the picture \
+                 is shifted half a pixel down and left; add ½ to x and y"
+            }
+            Self::NoSquareRoot => {
+                "t = w − (r² − d²) instead of w − √(r² − d²): the depth is wrong where spheres \
+                 are hit; check the discriminant's square root"
+            }
+            Self::TminZero => {
+                "tmin is 0 instead of −∞: what lies behind the camera centre is lost or seen \
+                 from inside; the course's orthographic rays take every t"
+            }
+            Self::TminMinusOne => {
+                "tmin is −1 (as -FP_INFINITE gives, the constant 1 negated) instead of −∞: a \
+                 sphere whose near root lies more than 1 behind the camera centre is lost"
+            }
+            Self::FarRoot => {
+                "the larger root is taken: the back of each sphere is seen; take the smaller \
+                 root"
+            }
+            Self::Stretched => {
+                "a non-square image is stretched over the whole square screen instead of \
+                 cropped from its middle: use one pixel size, size/max(W, H), for both axes"
+            }
+            Self::FlippedVertically => {
+                "the picture is upside down: rows are written top row first while the file \
+                 says bottom row first (or the screen's up is reversed)"
+            }
+            Self::DepthReversed => {
+                "near is black and far is white: the grey is (t − DMIN)/(DMAX − DMIN) instead \
+                 of (DMAX − t)/(DMAX − DMIN)"
+            }
+            Self::DepthNoClamp => {
+                "depth outside the range wraps around ((v·255) mod 256) instead of clamping: \
+                 clamp v to 0 … 1 before making a byte"
+            }
+            Self::DepthOutsideBlack => {
+                "depth outside the range is drawn black instead of clamped: what is nearer than \
+                 DMIN should be white"
+            }
+            Self::Rounded => {
+                "8-bit values are rounded instead of truncated: the course writes (int)(v·255)"
+            }
+            Self::LastWins => {
+                "on an exact tie of t the later sphere wins instead of the earlier: replace \
+                 the hit only when t is strictly smaller"
+            }
+            Self::Mirrored => {
+                "the picture is mirrored left to right: the horizontal is up × direction \
+                 instead of direction × up"
+            }
+            Self::RawUp => {
+                "the camera's up is used as the screen's vertical as written, neither made \
+                 perpendicular to the direction nor unit: the picture is stretched or sheared"
+            }
+            Self::UnnormalizedDirection => {
+                "t is measured along the direction as written, not the unit direction (or the \
+                 depth range is scaled the same way): normalise the direction"
+            }
+        }
+    }
+
     /// Whether the mistake changes which sphere a pixel sees or its t (the rest change only how
     /// hits become bytes).
-    pub(crate) fn changes_hits(self) -> bool {
+    pub fn changes_hits(self) -> bool {
         matches!(
             self,
             Self::PixelCorners
@@ -129,6 +194,7 @@ impl Mistake {
                 | Self::TminMinusOne
                 | Self::FarRoot
                 | Self::Stretched
+                | Self::FlippedVertically
                 | Self::LastWins
                 | Self::Mirrored
                 | Self::RawUp
@@ -213,7 +279,7 @@ impl MistakeSet {
     }
 
     /// The part of the set that changes hits ([`Mistake::changes_hits`]).
-    pub(crate) fn hit_part(self) -> Self {
+    pub fn hit_part(self) -> Self {
         Self::of(
             &self
                 .mistakes()

@@ -2,23 +2,32 @@
 //! itself, which the command line's and the viewer's `compare` modules put in front of the user.
 //!
 //! * [`mistake`]: the known mistakes of a first ray caster, each a word.
-//! * [`variant`]: the variant renderer, the picture a ray caster with a set of mistakes makes.
+//! * [`model`]: a model of a student's ray caster, the course's as one point of it.
+//! * [`model_render`]: the images a model makes.
 //! * [`difference`]: how two images differ, and the course's rule for "the same picture".
-//! * [`diagnosis`]: which set of mistakes explains a difference, if any does.
+//! * [`fit`]: a model of their program fitted to their images.
+//! * [`describe`]: a model said as statements, and back.
+//! * [`deviation`]: the statements, with their values and what to check in code.
+//! * [`diagnosis`]: the answer: the statements the images need, and how far they explain them.
 //! * [`depth_range`]: the depth range a depth image was most likely made over.
 //! * [`picture`]: the difference picture (theirs, exact, heat map, legend).
 //! * [`their_image`]: reading the image a user compares.
 
 pub mod depth_range;
+pub mod describe;
+pub mod deviation;
 pub mod diagnosis;
 pub mod difference;
+pub mod fit;
 pub mod mistake;
+pub mod model;
+pub mod model_render;
 pub mod picture;
 pub mod their_image;
-pub mod variant;
 
 pub use depth_range::infer_depth_range;
-pub use diagnosis::{Diagnosis, Theirs, Unexplained, diagnose};
+pub use deviation::Deviation;
+pub use diagnosis::{Diagnosis, Verdict, diagnose};
 pub use difference::Difference;
+pub use fit::score::{Theirs, Unexplained};
 pub use mistake::{Mistake, MistakeSet};
-pub use variant::render_variant;

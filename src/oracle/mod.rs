@@ -8,10 +8,12 @@
 //! * [`high_precision`]: the double-double reference (≈ 106-bit arithmetic).
 //! * [`area`]: each pixel's area average on a dense grid of rays (the anti-aliasing oracle).
 //! * [`generate`]: seeded random scenes.
+//! * [`mistaken`]: the pictures of a ray caster with known mistakes (the diagnosis's tests).
 
 pub mod area;
 pub(crate) mod generate;
 pub mod high_precision;
+pub mod mistaken;
 pub mod ray_loop;
 
 pub use generate::{DENSE_CUBE_SIDE, dense_scene, random_scene};

@@ -159,14 +159,30 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
                 } else if pixels.ambiguous {
                     "none (several explanations fit equally)".to_owned()
                 } else if !pixels.partial.is_empty() {
-                    format!("in part: {}", pixels.partial.join(", "))
+                    let words: Vec<String> =
+                        pixels.partial.iter().map(|d| d.name_and_values()).collect();
+                    format!("in part: {}", words.join(", "))
                 } else {
-                    "none (no known mistake explains it)".to_owned()
+                    "none (no model of a ray caster explains it)".to_owned()
                 }
             } else {
                 pixels.diagnosis.join(", ")
             };
             ui.label(RichText::new(format!("diagnosis: {diagnosis}")).strong());
+            if !pixels.alternatives.is_empty() {
+                ui.label(format!("or: {}", pixels.alternatives.join(" | ")));
+            }
+            // Each statement with what it means and what to check in their code.
+            for deviation in pixels.statements.iter().chain(&pixels.partial) {
+                ui.label(
+                    RichText::new(format!(
+                        "{}: {}",
+                        deviation.name_and_values(),
+                        deviation.explanation()
+                    ))
+                    .small(),
+                );
+            }
             if !matches {
                 let marked = if pixels.unexplained.is_some() && pixels.unexplained_pixels > 0 {
                     " (cyan in the difference)"

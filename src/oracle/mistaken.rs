@@ -1,13 +1,16 @@
-//! The variant renderer: the picture a ray caster with a given [`MistakeSet`] makes. One ray per
-//! pixel in world space (camera-relative f64), against the spheres whose screen footprint can
-//! reach the pixel (binned into tiles), written independently of the fast disc renderer so that,
-//! with no mistake, it is a second opinion on it.
+//! The mistaken caster: the pictures a ray caster with a given [`MistakeSet`] makes, written
+//! as such a program does it (one world-space ray per pixel from its own camera vectors, camera
+//! relative f64, against the spheres whose screen footprint can reach the pixel, binned into
+//! tiles) and sharing no code with the diagnosis's model renderer
+//! (`crate::compare::model_render`) nor the fast disc renderer: the tests make their "student"
+//! images with it, so that a fit is never checked against itself; with no mistake it is a second
+//! opinion on the exact renderer.
 
 use glam::{DMat2, DVec2, DVec3};
 use image::{Rgb, RgbImage};
 use rayon::prelude::*;
 
-use super::mistake::{Mistake, MistakeSet};
+use crate::compare::mistake::{Mistake, MistakeSet};
 use crate::render::View;
 use crate::scene::Scene;
 

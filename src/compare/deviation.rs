@@ -1,0 +1,358 @@
+//! The statements of an answer: each way the fitted model of their program differs from the
+//! course's, with its fitted values, what it means and what to check in their code. The
+//! fifteen known mistakes are statements without values ([`Deviation::Word`]).
+
+use glam::{DMat2, DVec2};
+
+use super::mistake::Mistake;
+use super::model::Quantity;
+
+/// One way their program differs from the course's.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Deviation {
+    /// A known mistake, a named point of the model.
+    Word(Mistake),
+    /// Each ray starts elsewhere in its pixel: at `offset_px` from the pixel's lower-left
+    /// corner (the course's: ½ ½), in the program's own rows.
+    SampleOffset {
+        /// Where in the pixel, pixels.
+        offset_px: DVec2,
+    },
+    /// A non-square image shows a part of the camera's square that is not its centre: the
+    /// sample lies `offset_px` from the pixel's corner, a whole strip away.
+    CropNotCentred {
+        /// Where the program's pixel (0, 0) samples, in pixels from its corner.
+        offset_px: DVec2,
+    },
+    /// The screen's axes scaled (a zoom when both are the same).
+    Scaled {
+        /// Factor along x and along y.
+        factor: DVec2,
+    },
+    /// The screen's x taken from the pixel's row and y from its column.
+    SwappedAxes {
+        /// The axes in course pixel steps (columns: one pixel along x, along y).
+        relative: DMat2,
+    },
+    /// The screen's axes sheared or turned.
+    Axes {
+        /// The axes in course pixel steps (columns: one pixel along x, along y).
+        relative: DMat2,
+    },
+    /// t grows across the image: the ray origins slide along the direction.
+    Tilt {
+        /// World units of t per pixel along x and along y.
+        per_px: DVec2,
+    },
+    /// No depth test: spheres in file order, the first (or the last) sphere hit drawn.
+    NoDepthTest {
+        /// The last sphere hit wins (all are drawn in turn); else the first.
+        last_wins: bool,
+    },
+    /// Hits before `tmin` refused, and the far root not tried.
+    NearRootOnly {
+        /// The tmin.
+        tmin: f64,
+    },
+    /// The colour image's background is not the scene's.
+    Background {
+        /// Their background, bytes.
+        bytes: [u8; 3],
+        /// The scene's, bytes.
+        scene: [u8; 3],
+    },
+    /// The depth image is drawn over another range than the one asked for.
+    DepthRange {
+        /// t drawn white.
+        white_t: f64,
+        /// t drawn black.
+        black_t: f64,
+        /// The range asked for (white, black).
+        given: (f64, f64),
+        /// When the range runs from the nearest to the farthest hit in the image: those t
+        /// and their greys.
+        per_image: Option<PerImage>,
+    },
+    /// The depth image maps another quantity than t.
+    DepthQuantity {
+        /// What it maps.
+        quantity: Quantity,
+    },
+    /// Depth outside the range drawn in a colour.
+    DepthOutside {
+        /// The colour, bytes.
+        bytes: [u8; 3],
+    },
+    /// Where no ray hits, the depth image is not black.
+    DepthNoHit {
+        /// Its colour, bytes.
+        bytes: [u8; 3],
+    },
+}
+
+/// A depth ramp normalised per image: the nearest and farthest hit and their greys.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PerImage {
+    /// t of the nearest hit.
+    pub near_t: f64,
+    /// Its grey.
+    pub near_grey: f64,
+    /// t of the farthest hit.
+    pub far_t: f64,
+    /// Its grey.
+    pub far_grey: f64,
+}
+
+/// A number as the answer prints it: at most `decimals` decimals, no trailing zeros.
+pub fn number(value: f64, decimals: usize) -> String {
+    let text = format!("{value:.decimals$}");
+    let text = if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_owned()
+    } else {
+        text
+    };
+    if text == "-0" { "0".to_owned() } else { text }
+}
+
+fn bytes(b: [u8; 3]) -> String {
+    format!("{} {} {}", b[0], b[1], b[2])
+}
+
+fn quantity_name(quantity: Quantity) -> &'static str {
+    match quantity {
+        Quantity::T => "t",
+        Quantity::AbsT => "|t|",
+        Quantity::Coordinate(0) => "x",
+        Quantity::Coordinate(1) => "y",
+        Quantity::Coordinate(_) => "z",
+        Quantity::AbsCoordinate(0) => "|x|",
+        Quantity::AbsCoordinate(1) => "|y|",
+        Quantity::AbsCoordinate(_) => "|z|",
+    }
+}
+
+impl Deviation {
+    /// The statement's name: a known mistake's word, or the name of the part of the model.
+    pub fn word(&self) -> &'static str {
+        match self {
+            Self::Word(mistake) => mistake.word(),
+            Self::SampleOffset { .. } => "sample-offset",
+            Self::CropNotCentred { .. } => "crop-not-centred",
+            Self::Scaled { factor } if factor.x == factor.y => "zoom",
+            Self::Scaled { .. } => "axes-scaled",
+            Self::SwappedAxes { .. } => "swapped-axes",
+            Self::Axes { .. } => "axes",
+            Self::Tilt { .. } => "t-ramp",
+            Self::NoDepthTest { .. } => "no-depth-test",
+            Self::NearRootOnly { .. } => "near-root-only",
+            Self::Background { .. } => "background",
+            Self::DepthRange {
+                per_image: Some(_), ..
+            } => "depth-per-image",
+            Self::DepthRange { .. } => "depth-range",
+            Self::DepthQuantity { .. } => "depth-quantity",
+            Self::DepthOutside { .. } => "depth-outside",
+            Self::DepthNoHit { .. } => "depth-no-hit",
+        }
+    }
+
+    /// Whether it is about where rays start (not a known mistake).
+    pub fn is_geometric(&self) -> bool {
+        matches!(
+            self,
+            Self::SampleOffset { .. }
+                | Self::CropNotCentred { .. }
+                | Self::Scaled { .. }
+                | Self::SwappedAxes { .. }
+                | Self::Axes { .. }
+                | Self::Tilt { .. }
+        )
+    }
+
+    /// Whether it is about how the depth image is drawn from the hits.
+    pub fn is_about_depth(&self) -> bool {
+        matches!(
+            self,
+            Self::Word(
+                Mistake::DepthReversed
+                    | Mistake::DepthNoClamp
+                    | Mistake::DepthOutsideBlack
+                    | Mistake::UnnormalizedDirection
+            ) | Self::DepthRange { .. }
+                | Self::DepthQuantity { .. }
+                | Self::DepthOutside { .. }
+                | Self::DepthNoHit { .. }
+                | Self::Tilt { .. }
+        )
+    }
+
+    /// The fitted values, as printed after the word (empty for a known mistake).
+    pub fn values(&self) -> String {
+        let matrix = |m: &DMat2| {
+            let a = m.to_cols_array();
+            format!(
+                "{} {} {} {}",
+                number(a[0], 3),
+                number(a[2], 3),
+                number(a[1], 3),
+                number(a[3], 3)
+            )
+        };
+        match self {
+            Self::Word(_) => String::new(),
+            Self::SampleOffset { offset_px } | Self::CropNotCentred { offset_px } => {
+                format!("{} {}", number(offset_px.x, 3), number(offset_px.y, 3))
+            }
+            Self::Scaled { factor } if factor.x == factor.y => number(factor.x, 4),
+            Self::Scaled { factor } => format!("{} {}", number(factor.x, 4), number(factor.y, 4)),
+            Self::SwappedAxes { relative } | Self::Axes { relative } => matrix(relative),
+            Self::Tilt { per_px } => format!("{} {}", number(per_px.x, 6), number(per_px.y, 6)),
+            Self::NoDepthTest { last_wins } => {
+                (if *last_wins { "last" } else { "first" }).to_owned()
+            }
+            Self::NearRootOnly { tmin } => number(*tmin, 6),
+            Self::Background { bytes: b, .. }
+            | Self::DepthOutside { bytes: b }
+            | Self::DepthNoHit { bytes: b } => bytes(*b),
+            Self::DepthRange {
+                white_t, black_t, ..
+            } => format!("{} {}", number(*white_t, 4), number(*black_t, 4)),
+            Self::DepthQuantity { quantity } => quantity_name(*quantity).to_owned(),
+        }
+    }
+
+    /// The word and its values, as one token list (`zoom 1.118`).
+    pub fn name_and_values(&self) -> String {
+        let values = self.values();
+        if values.is_empty() {
+            self.word().to_owned()
+        } else {
+            format!("{} {values}", self.word())
+        }
+    }
+
+    /// What it means and what to check in their code, in one sentence.
+    pub fn explanation(&self) -> String {
+        match self {
+            Self::Word(mistake) => mistake.advice().to_owned(),
+            Self::SampleOffset { offset_px } => format!(
+                "each ray starts at ({}, {}) within its pixel instead of the centre (½, ½): \
+                 check the pixel-to-screen formula, (x + ½)/W",
+                number(offset_px.x, 3),
+                number(offset_px.y, 3)
+            ),
+            Self::CropNotCentred { offset_px } => format!(
+                "the image shows a strip of the camera's square that is not its middle (pixel \
+                 (0, 0) samples at ({}, {}) pixels): measure a non-square image's rows and \
+                 columns from the centre, with one pixel size, size/max(W, H)",
+                number(offset_px.x, 3),
+                number(offset_px.y, 3)
+            ),
+            Self::Scaled { factor } if factor.x == factor.y => format!(
+                "each pixel steps {}× the course's pixel size, so the picture is the right one \
+                 zoomed {} about its centre: are the horizontal and up vectors unit length, and \
+                 is the pixel size size/max(W, H)?",
+                number(factor.x, 4),
+                if factor.x > 1.0 { "out" } else { "in" }
+            ),
+            Self::Scaled { factor } => format!(
+                "the screen is {}× as wide and {}× as tall as it should be: are the horizontal \
+                 and up vectors unit length, and is one pixel size, size/max(W, H), used for \
+                 both axes?",
+                number(factor.x, 4),
+                number(factor.y, 4)
+            ),
+            Self::SwappedAxes { .. } => "x and y are swapped in the sampling: the column \
+                 decides the screen's v and the row its u; check the loops and which of x, y \
+                 goes with W and H"
+                .to_owned(),
+            Self::Axes { relative } => format!(
+                "the screen's axes are sheared or turned (one pixel along x moves ({}, {}), \
+                 along y ({}, {}) course pixels): is the up vector made perpendicular to the \
+                 direction before the horizontal is taken?",
+                number(relative.x_axis.x, 3),
+                number(relative.x_axis.y, 3),
+                number(relative.y_axis.x, 3),
+                number(relative.y_axis.y, 3)
+            ),
+            Self::Tilt { per_px } => format!(
+                "t grows by {} per pixel to the right and {} per pixel up: the ray origins \
+                 slide along the direction, so the horizontal or up vector is not \
+                 perpendicular to it",
+                number(per_px.x, 6),
+                number(per_px.y, 6)
+            ),
+            Self::NoDepthTest { last_wins: true } => "the spheres are drawn in file order and \
+                 the last one hit wins, nearer or not: keep the nearest hit (compare t before \
+                 replacing it)"
+                .to_owned(),
+            Self::NoDepthTest { last_wins: false } => "the first sphere in the file that the \
+                 ray hits is drawn, nearer or not: test every sphere and keep the nearest"
+                .to_owned(),
+            Self::NearRootOnly { tmin } => format!(
+                "hits before t = {} are refused and the far root is not tried, so a sphere \
+                 around the ray origins vanishes: the course's tmin is −∞",
+                number(*tmin, 6)
+            ),
+            Self::Background { bytes: b, scene } => {
+                if *b == [0; 3] {
+                    format!(
+                        "the background is black where the scene says {}: the image starts \
+                         black and the background colour is never used",
+                        bytes(*scene)
+                    )
+                } else {
+                    format!(
+                        "the background is {} where the scene says {}: check where the \
+                         background colour is read and written",
+                        bytes(*b),
+                        bytes(*scene)
+                    )
+                }
+            }
+            Self::DepthRange {
+                white_t,
+                black_t,
+                given,
+                per_image: Some(p),
+            } => format!(
+                "the depth ramp runs from t = {} (grey {}) to t = {} (grey {}), the nearest and \
+                 farthest hits in this image, white at t = {} and black at {}: you normalise \
+                 per image and -depth {} {} is ignored",
+                number(p.near_t, 4),
+                number(p.near_grey, 0),
+                number(p.far_t, 4),
+                number(p.far_grey, 0),
+                number(*white_t, 4),
+                number(*black_t, 4),
+                number(given.0, 4),
+                number(given.1, 4)
+            ),
+            Self::DepthRange {
+                white_t,
+                black_t,
+                given,
+                per_image: None,
+            } => format!(
+                "the depth image is drawn with white at t = {} and black at t = {}, not over \
+                 -depth {} {}: check how DMIN and DMAX are read and used",
+                number(*white_t, 4),
+                number(*black_t, 4),
+                number(given.0, 4),
+                number(given.1, 4)
+            ),
+            Self::DepthQuantity { quantity } => format!(
+                "the depth image maps {} of each hit, not its t along the ray",
+                quantity_name(*quantity)
+            ),
+            Self::DepthOutside { bytes: b } => format!(
+                "depth outside the range is drawn {} instead of clamped to white or black",
+                bytes(*b)
+            ),
+            Self::DepthNoHit { bytes: b } => format!(
+                "where no ray hits, the depth image is {} instead of black",
+                bytes(*b)
+            ),
+        }
+    }
+}

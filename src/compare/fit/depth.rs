@@ -1,0 +1,313 @@
+//! Fitting how their depth image was drawn from the hits: a straight line from a quantity of
+//! each hit (t, |t|, a coordinate of the hit point) to their grey levels, by least squares on the
+//! ramp's pixels (those neither black nor white), dropping what lies off the line by more than a
+//! few levels and fitting again; with t, a tilt across the image too (ray origins that slide
+//! along the direction). Then the colour of the pixels no ray hits, the rule for values outside
+//! the range, and the named points nearby: the range of the view (given, or as the user's
+//! program may have misread it: reversed, t not along the unit direction), and round numbers
+//! for the ends of the range.
+//!
+//! A grey level g of the course's depth image is `255·value` truncated, so the pixel's true
+//! value lies in `[g, g + 1)`: the fit takes `g + ½` (`g` where levels are rounded).
+
+use glam::DVec3;
+
+use super::score::Scorer;
+use crate::compare::model::{DepthMap, Model, Outside, Quantity, colour_bytes};
+use crate::compare::model_render::depth_quantities;
+use crate::render::depth_map::DepthRange;
+
+/// Fewest ramp pixels a line is fitted to.
+const MIN_RAMP_PIXELS: usize = 8;
+
+/// Levels a pixel may lie off the line fitted before, at each refit.
+const INLIER_LEVELS: [f64; 3] = [16.0, 4.0, 1.5];
+
+/// The steps the ends of a range are rounded to, coarsest first, as denominators.
+const STEPS_PER_UNIT: [f64; 9] = [1.0, 2.0, 4.0, 10.0, 20.0, 100.0, 1_000.0, 10_000.0, 1e6];
+
+/// How far an end of the range may be moved to round it, in grey levels of the range.
+const ROUNDING_LEVELS: f64 = 1.5;
+
+/// Least squares of `target ≈ Σ cᵢ·xᵢ` over `rows` of `N` regressors.
+fn least_squares<const N: usize>(rows: &[([f64; N], f64)]) -> Option<[f64; N]> {
+    let mut a = [[0.0; N]; N];
+    let mut b = [0.0; N];
+    for (x, target) in rows {
+        for i in 0..N {
+            b[i] += x[i] * target;
+            for j in 0..N {
+                a[i][j] += x[i] * x[j];
+            }
+        }
+    }
+    for col in 0..N {
+        let pivot = (col..N).max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))?;
+        if !(a[pivot][col].abs() > 1e-12) {
+            return None;
+        }
+        a.swap(col, pivot);
+        b.swap(col, pivot);
+        for row in col + 1..N {
+            let factor = a[row][col] / a[col][col];
+            for k in col..N {
+                a[row][k] -= factor * a[col][k];
+            }
+            b[row] -= factor * b[col];
+        }
+    }
+    let mut x = [0.0; N];
+    for row in (0..N).rev() {
+        let mut sum = b[row];
+        for k in row + 1..N {
+            sum -= a[row][k] * x[k];
+        }
+        x[row] = sum / a[row][row];
+    }
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
+/// The line (or plane) through `rows`, refitted without the rows off it; `None` when too few
+/// rows hold it or fewer than half.
+fn robust_fit<const N: usize>(rows: &[([f64; N], f64)]) -> Option<[f64; N]> {
+    if rows.len() < MIN_RAMP_PIXELS {
+        return None;
+    }
+    let mut fit = least_squares(rows)?;
+    let predict = |fit: &[f64; N], x: &[f64; N]| (0..N).map(|i| fit[i] * x[i]).sum::<f64>();
+    let mut held = rows.len();
+    for levels in INLIER_LEVELS {
+        let inliers: Vec<([f64; N], f64)> = rows
+            .iter()
+            .filter(|(x, target)| (predict(&fit, x) - target).abs() <= levels)
+            .copied()
+            .collect();
+        if inliers.len() < MIN_RAMP_PIXELS {
+            return None;
+        }
+        held = inliers.len();
+        fit = least_squares(&inliers)?;
+    }
+    (held >= rows.len() / 2).then_some(fit)
+}
+
+/// The quantities a depth image may map.
+const QUANTITIES: [Quantity; 8] = [
+    Quantity::T,
+    Quantity::AbsT,
+    Quantity::Coordinate(0),
+    Quantity::Coordinate(1),
+    Quantity::Coordinate(2),
+    Quantity::AbsCoordinate(0),
+    Quantity::AbsCoordinate(1),
+    Quantity::AbsCoordinate(2),
+];
+
+/// The model with the depth map (and, with t, the tilt) that draws their depth image best.
+pub fn fit_depth(scorer: &mut Scorer<'_>, model: &Model) -> Model {
+    let Some(theirs) = scorer.theirs.depth else {
+        return *model;
+    };
+    let view = *scorer.view;
+    let hits = scorer.hits(model);
+    let (width, height) = (hits.width_px, hits.height_px);
+    let half_level = if model.rounded { 0.0 } else { 0.5 };
+    // Their grey ramp: pixels neither black nor white, where the model hits.
+    let ramp: Vec<(usize, f64)> = theirs
+        .pixels()
+        .enumerate()
+        .filter_map(|(index, pixel)| {
+            let [r, g, b] = pixel.0;
+            (r == g && g == b && g != 0 && g != 255 && hits.t[index].is_finite())
+                .then_some((index, f64::from(g) + half_level))
+        })
+        .collect();
+    let mut candidates = vec![*model];
+    for quantity in QUANTITIES {
+        let mut with = *model;
+        with.depth.quantity = quantity;
+        let q = depth_quantities(&view, &hits, &with);
+        let rows: Vec<([f64; 2], f64)> = ramp
+            .iter()
+            .map(|&(index, level)| ([1.0, q[index]], level))
+            .collect();
+        if let Some([a, b]) = robust_fit(&rows) {
+            let mut fitted = with;
+            fitted.depth.at_zero = a / 255.0;
+            fitted.depth.per_unit = b / 255.0;
+            candidates.push(fitted);
+        }
+        if quantity == Quantity::T {
+            // A tilt: t + (ramp_x·x + ramp_y·y) from the image's centre.
+            let centre_x = 0.5 - 0.5 * f64::from(width);
+            let centre_y = 0.5 - 0.5 * f64::from(height);
+            let rows: Vec<([f64; 4], f64)> = ramp
+                .iter()
+                .map(|&(index, level)| {
+                    let (x, row) = ((index as u32 % width), (index as u32 / width));
+                    let y_up = height - 1 - row;
+                    (
+                        [
+                            1.0,
+                            q[index],
+                            f64::from(x) + centre_x,
+                            f64::from(y_up) + centre_y,
+                        ],
+                        level,
+                    )
+                })
+                .collect();
+            if let Some([a, b, cx, cy]) = robust_fit(&rows)
+                && b != 0.0
+            {
+                let mut fitted = with;
+                fitted.depth.at_zero = a / 255.0;
+                fitted.depth.per_unit = b / 255.0;
+                fitted.t_ramp = DVec3::new(
+                    model.t_ramp.x + cx / b,
+                    model.t_ramp.y + cy / b,
+                    model.t_ramp.z,
+                );
+                candidates.push(fitted);
+            }
+        }
+    }
+    let mut best = pick(scorer, &candidates, *model);
+    // The colour where nothing is hit, and values outside the range.
+    let no_hit_seen = most_common_where(theirs, &hits.t, |t| t == f64::INFINITY);
+    let background = colour_bytes(scorer.scene.background, best.rounded);
+    let mut more = Vec::new();
+    for no_hit in [[0; 3], no_hit_seen.unwrap_or([0; 3]), background] {
+        for outside in [
+            Outside::Clamp,
+            Outside::Wrap,
+            Outside::Black,
+            Outside::Colour(no_hit),
+        ] {
+            let mut with = best;
+            with.depth.no_hit = no_hit;
+            with.depth.outside = outside;
+            more.push(with);
+        }
+    }
+    best = pick(scorer, &more, best);
+    best = round_range(scorer, best);
+    snap_to_range(scorer, best)
+}
+
+/// The candidate whose images differ from theirs in the fewest pixels (the first on a tie).
+fn pick(scorer: &mut Scorer<'_>, candidates: &[Model], first: Model) -> Model {
+    let mut best = (scorer.score(&first), first);
+    for candidate in candidates {
+        let score = scorer.score(candidate);
+        if score < best.0 {
+            best = (score, *candidate);
+        }
+    }
+    best.1
+}
+
+/// The most common colour of `image` among pixels whose t satisfies `keep`.
+fn most_common_where(
+    image: &image::RgbImage,
+    t: &[f64],
+    keep: impl Fn(f64) -> bool,
+) -> Option<[u8; 3]> {
+    let mut counts: std::collections::HashMap<[u8; 3], usize> = std::collections::HashMap::new();
+    for (pixel, &t) in image.pixels().zip(t) {
+        if keep(t) {
+            *counts.entry(pixel.0).or_default() += 1;
+        }
+    }
+    counts
+        .into_iter()
+        .max_by_key(|&(colour, count)| (count, colour))
+        .map(|(colour, _)| colour)
+}
+
+/// The view's range, as given or as a program may misread it (reversed, t along the direction
+/// as written), where it draws their image as well as the fit.
+fn snap_to_range(scorer: &mut Scorer<'_>, fitted: Model) -> Model {
+    let view = *scorer.view;
+    let given = DepthMap::of_range(view.depth_range);
+    let mut candidates = Vec::new();
+    for reversed in [false, true] {
+        for scaled in [false, true] {
+            let mut map = given;
+            if scaled {
+                map.per_unit /= view.direction_world.length();
+            }
+            if reversed {
+                map.at_zero = 1.0 - map.at_zero;
+                map.per_unit = -map.per_unit;
+            }
+            for (outside, no_hit) in [
+                (fitted.depth.outside, fitted.depth.no_hit),
+                (Outside::Clamp, [0; 3]),
+                (Outside::Wrap, [0; 3]),
+                (Outside::Black, [0; 3]),
+                (Outside::Clamp, fitted.depth.no_hit),
+                (Outside::Wrap, fitted.depth.no_hit),
+                (Outside::Black, fitted.depth.no_hit),
+            ] {
+                let mut with = fitted;
+                with.depth = DepthMap {
+                    outside,
+                    no_hit,
+                    ..map
+                };
+                with.t_ramp = DVec3::ZERO;
+                candidates.push(with);
+                let mut tilted = with;
+                tilted.t_ramp = fitted.t_ramp;
+                candidates.push(tilted);
+            }
+        }
+    }
+    let fitted_score = scorer.score(&fitted);
+    // The named map that draws best (the first on a tie), where it draws as well as the fit.
+    let mut best: Option<(usize, Model)> = None;
+    for candidate in candidates {
+        let score = scorer.score(&candidate);
+        if best.as_ref().is_none_or(|(s, _)| score < *s) {
+            best = Some((score, candidate));
+        }
+    }
+    match best {
+        Some((score, candidate)) if score <= fitted_score => candidate,
+        _ => fitted,
+    }
+}
+
+/// The fitted range's ends rounded to the coarsest step that moves neither by more than the fit
+/// can tell and draws their image as well (within a pixel in 2,000 of the image).
+fn round_range(scorer: &mut Scorer<'_>, fitted: Model) -> Model {
+    if fitted.depth.quantity != Quantity::T
+        || fitted.depth == DepthMap::of_range(scorer.view.depth_range)
+    {
+        return fitted;
+    }
+    let (white, black) = fitted.depth.white_black_t();
+    if !(white.is_finite() && black.is_finite()) || white == black {
+        return fitted;
+    }
+    let fitted_score = scorer.score(&fitted);
+    let pixels = (scorer.view.width_px as usize) * (scorer.view.height_px as usize);
+    let allowed = fitted_score + (pixels / 2000).max(1);
+    let slack = ROUNDING_LEVELS * (white - black).abs() / 255.0;
+    let round = |value: f64, per_unit: f64| (value * per_unit).round() / per_unit;
+    for per_unit in STEPS_PER_UNIT {
+        let (w, b) = (round(white, per_unit), round(black, per_unit));
+        if w == b || (w - white).abs() > slack || (b - black).abs() > slack {
+            continue;
+        }
+        let mut with = fitted;
+        let map = DepthMap::of_range(DepthRange::new(w, b));
+        with.depth.at_zero = map.at_zero;
+        with.depth.per_unit = map.per_unit;
+        if scorer.score(&with) <= allowed {
+            return with;
+        }
+    }
+    fitted
+}

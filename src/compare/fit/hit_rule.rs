@@ -1,0 +1,94 @@
+//! Searching which hits their program draws: the depth test (nearest, or file order), ties, tmin
+//! and which roots it tries, the square root. These are discrete, so each choice is tried: one
+//! change at a time from the current rule, the best change kept, until none helps.
+
+use super::depth::fit_depth;
+use super::score::Scorer;
+use crate::compare::model::{HitRule, Model, Visible};
+
+/// The roots a program may take: (tmin, the far root tried when the near one is refused, only
+/// the far root).
+const ROOTS: [(f64, bool, bool); 7] = [
+    (f64::NEG_INFINITY, true, false),
+    (f64::NEG_INFINITY, true, true),
+    (0.0, true, false),
+    (0.0, true, true),
+    (0.0, false, false),
+    (-1.0, false, false),
+    (-1.0, false, true),
+];
+
+/// The rules one change away from `rule`.
+fn neighbours(rule: HitRule) -> Vec<HitRule> {
+    let mut rules = Vec::new();
+    for visible in [Visible::Nearest, Visible::FirstInFile, Visible::LastInFile] {
+        if visible != rule.visible {
+            rules.push(HitRule {
+                visible,
+                later_wins_ties: false,
+                ..rule
+            });
+        }
+    }
+    if rule.visible == Visible::Nearest {
+        rules.push(HitRule {
+            later_wins_ties: !rule.later_wins_ties,
+            ..rule
+        });
+    }
+    for (tmin, far_when_near_refused, far_only) in ROOTS {
+        let with = HitRule {
+            tmin,
+            far_when_near_refused,
+            far_only,
+            ..rule
+        };
+        if with != rule {
+            rules.push(with);
+        }
+    }
+    rules.push(HitRule {
+        square_root: !rule.square_root,
+        ..rule
+    });
+    rules
+}
+
+/// A model with `rule`, its depth map fitted again.
+fn with_rule(scorer: &mut Scorer<'_>, model: &Model, rule: HitRule) -> Model {
+    let mut with = *model;
+    with.hits = rule;
+    fit_depth(scorer, &with)
+}
+
+/// The model with the hit rule that explains their images best, reached one change at a time
+/// from `model`'s (at most `rounds` changes); every model scored is reported to `seen`.
+pub fn search_hit_rule(
+    scorer: &mut Scorer<'_>,
+    model: &Model,
+    rounds: usize,
+    seen: &mut Vec<(usize, Model)>,
+) -> Model {
+    let mut best = (scorer.score(model), *model);
+    for round in 0..rounds {
+        // Past the first round, only while pixels are left: the first also shows the rules
+        // that explain the images as well (a simpler answer may be among them).
+        if best.0 == 0 && round > 0 {
+            break;
+        }
+        let mut improved = None;
+        for rule in neighbours(best.1.hits) {
+            let candidate = with_rule(scorer, &best.1, rule);
+            let score = scorer.score(&candidate);
+            seen.push((score, candidate));
+            if score < improved.map_or(best.0, |(s, _)| s) {
+                improved = Some((score, candidate));
+            }
+        }
+        match improved {
+            Some(better) => best = better,
+            None => break,
+        }
+    }
+    best.1
+}
