@@ -55,12 +55,18 @@ fn main() -> ExitCode {
             match raytracer::cli::run::run(&request) {
                 Ok(report) => {
                     let mut text = String::new();
-                    if request.stats {
+                    let json = request.answer_as_json();
+                    if request.stats && !json {
                         text.push_str(&report.stats_lines());
                     }
                     let mut status = ExitCode::SUCCESS;
                     if let Some(compared) = &report.compare {
-                        text.push_str(&compared.lines());
+                        if json {
+                            let stats = request.stats.then(|| report.stats_lines());
+                            text.push_str(&compared.json(stats.as_deref()));
+                        } else {
+                            text.push_str(&compared.lines());
+                        }
                         if !compared.matches() {
                             status = ExitCode::from(3);
                         }

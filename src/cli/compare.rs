@@ -151,6 +151,10 @@ impl CompareReport {
                 .collect();
             let _ = writeln!(text, "diagnosis_ambiguous: {}", sets.join(" | "));
         }
+        for same in &self.diagnosis.same_pixels {
+            let names: Vec<String> = same.iter().map(Deviation::name_and_values).collect();
+            let _ = writeln!(text, "diagnosis_same_pixels: {}", names.join(" + "));
+        }
         for deviation in self.diagnosis.partial() {
             let _ = writeln!(text, "diagnosis_partial: {}", statement(deviation));
         }
@@ -161,6 +165,65 @@ impl CompareReport {
                 self.diagnosis.unexplained_pixels()
             );
         }
+        text
+    }
+}
+
+/// Version of the JSON form of the answer (docs/compare-json.md); raised when a field changes
+/// meaning or goes.
+pub const COMPARE_JSON_VERSION: u32 = 1;
+
+impl CompareReport {
+    /// The report as one JSON document (docs/compare-json.md), with the `-stats` lines when
+    /// given (as numbers where they are).
+    pub fn json(&self, stats: Option<&str>) -> String {
+        use serde_json::{Value, json};
+        let difference = |d: &Option<Difference>| {
+            d.as_ref().map_or(Value::Null, |d| {
+                json!({
+                    "pixels_differing": d.pixels_differing(),
+                    "max_difference": d.max_difference(),
+                })
+            })
+        };
+        let statements =
+            |list: &[Deviation]| list.iter().map(Deviation::to_json).collect::<Vec<Value>>();
+        let verdict = self.diagnosis.verdict_name();
+        let mut document = json!({
+            "format": "raytracer-compare",
+            "version": COMPARE_JSON_VERSION,
+            "match": self.matches(),
+            "colour": difference(&self.colour),
+            "depth": difference(&self.depth),
+            "depth_range_inferred": match self.depth_range_inferred {
+                None => Value::Null,
+                Some(None) => json!("none"),
+                Some(Some(range)) => json!([range.min_t, range.max_t]),
+            },
+            "verdict": verdict,
+            "statements": statements(self.diagnosis.stated()),
+            "partial": statements(self.diagnosis.partial()),
+            "alternatives": self.diagnosis.alternatives().iter().map(|a| statements(a)).collect::<Vec<_>>(),
+            "same_pixels": self.diagnosis.same_pixels.iter().map(|a| statements(a)).collect::<Vec<_>>(),
+            "pixels_differing_exact": self.diagnosis.differing_exact,
+            "unexplained_pixels": self.diagnosis.unexplained_pixels(),
+        });
+        if let Some(stats) = stats {
+            let mut object = serde_json::Map::new();
+            for line in stats.lines() {
+                if let Some((name, value)) = line.split_once(": ") {
+                    let value = value
+                        .parse::<f64>()
+                        .ok()
+                        .and_then(|v| serde_json::Number::from_f64(v).map(Value::Number))
+                        .unwrap_or_else(|| Value::String(value.to_owned()));
+                    object.insert(name.to_owned(), value);
+                }
+            }
+            document["stats"] = Value::Object(object);
+        }
+        let mut text = serde_json::to_string_pretty(&document).unwrap_or_default();
+        text.push('\n');
         text
     }
 }

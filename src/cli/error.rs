@@ -108,6 +108,12 @@ pub enum UsageError {
         Flag::Input.synopsis()
     )]
     MissingInput,
+    /// `-compare_format` with a format that does not exist.
+    #[error("{flag}: expected lines or json, found '{0}'", flag = Flag::CompareFormat)]
+    BadCompareFormat(String),
+    /// `-compare_format` without an image to compare.
+    #[error("{format} needs {output} or {depth}", format = Flag::CompareFormat, output = Flag::CompareOutput.synopsis(), depth = Flag::CompareDepth.synopsis())]
+    FormatWithoutComparison,
     /// `-diff` without an image to compare.
     #[error("{diff} needs {output} or {depth}", diff = Flag::Diff, output = Flag::CompareOutput.synopsis(), depth = Flag::CompareDepth.synopsis())]
     DiffWithoutComparison,

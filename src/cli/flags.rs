@@ -40,6 +40,8 @@ pub enum Flag {
     CompareDepth,
     /// The difference picture of a comparison.
     Diff,
+    /// How the comparison's answer is printed: lines or JSON.
+    CompareFormat,
     /// Timings and counts after rendering.
     Stats,
     /// The usage text.
@@ -78,6 +80,7 @@ pub(crate) const FLAGS: &[FlagSpec] = &[
     FlagSpec { flag: Flag::CompareOutput, name: "-compare_output", aliases: &[], values: &["FILE"], help: "compare a colour image (.tga/.png) with the exact one; name the mistakes" },
     FlagSpec { flag: Flag::CompareDepth, name: "-compare_depth", aliases: &[], values: &["DMIN", "DMAX", "FILE"], help: "compare a depth image made over DMIN … DMAX (inferred when left out) with the exact one" },
     FlagSpec { flag: Flag::Diff, name: "-diff", aliases: &[], values: &["FILE"], help: "write the comparison's picture: theirs, exact, heat map (.png/.tga)" },
+    FlagSpec { flag: Flag::CompareFormat, name: "-compare_format", aliases: &[], values: &["lines|json"], help: "print the comparison's answer as name: value lines (default) or one JSON document (docs/compare-json.md)" },
     FlagSpec { flag: Flag::Stats, name: "-stats", aliases: &[], values: &[], help: "print timings and counts after rendering" },
     FlagSpec { flag: Flag::Help, name: "-help", aliases: &["--help", "-h"], values: &[], help: "print this help" },
 ];
@@ -178,7 +181,7 @@ pub fn usage() -> String {
 mod tests {
     use super::*;
 
-    const ALL: [Flag; 18] = [
+    const ALL: [Flag; 19] = [
         Flag::Input,
         Flag::Size,
         Flag::Output,
@@ -195,6 +198,7 @@ mod tests {
         Flag::CompareOutput,
         Flag::CompareDepth,
         Flag::Diff,
+        Flag::CompareFormat,
         Flag::Stats,
         Flag::Help,
     ];

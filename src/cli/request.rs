@@ -60,6 +60,15 @@ pub struct CompareRequest {
     pub(crate) depth: Option<TheirDepth>,
     /// The difference picture's destination.
     pub(crate) diff: Option<PathBuf>,
+    /// The answer as one JSON document instead of `name: value` lines.
+    pub(crate) json: bool,
+}
+
+impl RenderRequest {
+    /// Whether the comparison's answer is printed as JSON (`-compare_format json`).
+    pub fn answer_as_json(&self) -> bool {
+        self.compare.as_ref().is_some_and(|c| c.json)
+    }
 }
 
 /// A headless render: what to read, how large, what to write.
@@ -198,9 +207,20 @@ impl RawArgs {
         let colour = self.output_path(Flag::CompareOutput, 0)?;
         let depth = self.their_depth()?;
         let diff = self.output_path(Flag::Diff, 0)?;
+        let json = if self.has(Flag::CompareFormat) {
+            match self.text(Flag::CompareFormat, 0)? {
+                "json" => true,
+                "lines" => false,
+                other => return Err(UsageError::BadCompareFormat(other.to_owned())),
+            }
+        } else {
+            false
+        };
         if colour.is_none() && depth.is_none() {
             return if diff.is_some() {
                 Err(UsageError::DiffWithoutComparison)
+            } else if self.has(Flag::CompareFormat) {
+                Err(UsageError::FormatWithoutComparison)
             } else {
                 Ok(None)
             };
@@ -214,6 +234,7 @@ impl RawArgs {
             colour,
             depth,
             diff,
+            json,
         }))
     }
 
@@ -443,6 +464,9 @@ impl RenderRequest {
             }
             if let Some(path) = &compare.diff {
                 push(Flag::Diff, vec![path.clone().into()]);
+            }
+            if compare.json {
+                push(Flag::CompareFormat, vec!["json".into()]);
             }
         }
         if self.stats {

@@ -41,6 +41,9 @@ pub fn infer_depth_range(scene: &Scene, view: &View, theirs: &RgbImage) -> Optio
         return None;
     }
     let (white_t, black_t) = depth.white_black_t();
+    // Ends as printed: the fit's own rounding, without the last bits of the division.
+    let clean = |t: f64| (t * 1e9).round() / 1e9;
+    let (white_t, black_t) = (clean(white_t), clean(black_t));
     (white_t.is_finite() && black_t.is_finite() && white_t != black_t)
         .then(|| DepthRange::new(white_t.min(black_t), white_t.max(black_t)))
 }

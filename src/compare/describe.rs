@@ -14,6 +14,19 @@ use crate::scene::Scene;
 /// Relative difference under which two fitted values are the same point.
 const SAME: f64 = 1e-6;
 
+/// Relative size under which a fitted matrix entry, or the difference of two fitted scales or
+/// offsets (in pixels), is taken for zero: a fit stops anywhere in the range of values that draw
+/// the same pixels, and a thousandth of a pixel across the image is not a claim to make.
+const FITTED: f64 = 1e-3;
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= FITTED * a.abs().max(b.abs()).max(1.0)
+}
+
+fn close2(a: DVec2, b: DVec2) -> bool {
+    close(a.x, b.x) && close(a.y, b.y)
+}
+
 fn same(a: f64, b: f64) -> bool {
     (a - b).abs() <= SAME * a.abs().max(b.abs()).max(1.0)
 }
@@ -42,8 +55,8 @@ impl Placement {
             .to_cols_array()
             .iter()
             .fold(0.0f64, |m, v| m.max(v.abs()));
-        let diagonal =
-            relative.x_axis.y.abs() <= SAME * largest && relative.y_axis.x.abs() <= SAME * largest;
+        let diagonal = relative.x_axis.y.abs() <= FITTED * largest
+            && relative.y_axis.x.abs() <= FITTED * largest;
         let own = map
             .sample_offset_px(view.width_px, view.height_px)
             .unwrap_or(DVec2::splat(0.5));
@@ -126,7 +139,7 @@ pub fn describe(scene: &Scene, view: &View, model: &Model) -> Vec<Deviation> {
         let uniform = choices
             .iter()
             .copied()
-            .find(|&c| same(ratio(c).x, ratio(c).y));
+            .find(|&c| close(ratio(c).x, ratio(c).y));
         match (exact, uniform) {
             (Some(choice), _) => words = union(words, choice),
             (None, Some(choice)) => {
@@ -140,21 +153,23 @@ pub fn describe(scene: &Scene, view: &View, model: &Model) -> Vec<Deviation> {
     } else {
         let m = placement.relative;
         let largest = m.to_cols_array().iter().fold(0.0f64, |a, v| a.max(v.abs()));
-        if m.x_axis.x.abs() <= SAME * largest && m.y_axis.y.abs() <= SAME * largest {
+        if m.x_axis.x.abs() <= FITTED * largest && m.y_axis.y.abs() <= FITTED * largest {
             more.push(Deviation::SwappedAxes { relative: m });
         } else {
             more.push(Deviation::Axes { relative: m });
         }
     }
     let offset = placement.offset_px;
-    if same2(offset, DVec2::ZERO) {
+    if close2(offset, DVec2::ZERO) {
         words = words.with(Mistake::PixelCorners);
-    } else if !same2(offset, DVec2::splat(0.5)) {
+    } else if !close2(offset, DVec2::splat(0.5)) {
         let strip = 0.5 * (f64::from(view.width_px) - f64::from(view.height_px)).abs();
         let off = (offset - DVec2::splat(0.5)).abs();
         let is_strip = view.width_px != view.height_px
-            && ((off.x < 0.5 && (off.y - strip).abs() < 0.5 && view.width_px > view.height_px)
-                || (off.y < 0.5 && (off.x - strip).abs() < 0.5 && view.height_px > view.width_px));
+            && ((off.x <= 0.5 && (off.y - strip).abs() <= 0.75 && view.width_px > view.height_px)
+                || (off.y <= 0.5
+                    && (off.x - strip).abs() <= 0.75
+                    && view.height_px > view.width_px));
         if is_strip {
             more.push(Deviation::CropNotCentred { offset_px: offset });
         } else {
@@ -172,6 +187,9 @@ pub fn describe(scene: &Scene, view: &View, model: &Model) -> Vec<Deviation> {
     );
     if tilt != DVec2::ZERO && !same2(model.t_ramp.truncate(), expected_ramp.truncate()) {
         more.push(Deviation::Tilt { per_px: tilt });
+    }
+    if let Some(drawn_px) = model.drawn_px {
+        more.push(Deviation::OnlyBlock { drawn_px });
     }
     // Which hits are drawn.
     let rule = model.hits;
@@ -323,6 +341,7 @@ pub fn rebuild(view: &View, deviations: &[Deviation]) -> Model {
                     Visible::FirstInFile
                 };
             }
+            Deviation::OnlyBlock { drawn_px } => model.drawn_px = Some(drawn_px),
             Deviation::NearRootOnly { tmin } => {
                 model.hits.tmin = tmin;
                 model.hits.far_when_near_refused = false;

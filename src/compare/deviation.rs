@@ -49,6 +49,12 @@ pub enum Deviation {
         /// The last sphere hit wins (all are drawn in turn); else the first.
         last_wins: bool,
     },
+    /// Only a block of the image is drawn, from its lower-left corner; the rest keeps the
+    /// background.
+    OnlyBlock {
+        /// Columns and rows drawn.
+        drawn_px: (u32, u32),
+    },
     /// Hits before `tmin` refused, and the far root not tried.
     NearRootOnly {
         /// The tmin.
@@ -144,6 +150,7 @@ impl Deviation {
             Self::Axes { .. } => "axes",
             Self::Tilt { .. } => "t-ramp",
             Self::NoDepthTest { .. } => "no-depth-test",
+            Self::OnlyBlock { .. } => "only-block",
             Self::NearRootOnly { .. } => "near-root-only",
             Self::Background { .. } => "background",
             Self::DepthRange {
@@ -156,11 +163,37 @@ impl Deviation {
         }
     }
 
+    /// The part of the model the statement is about, whatever its values (`scaled` for a zoom
+    /// and for axes scaled apart).
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Self::Scaled { .. } => "scaled",
+            Self::DepthRange { .. } => "depth-range",
+            other => other.word(),
+        }
+    }
+
+    /// Whether it is about where rays start, a known mistake or a fitted value.
+    pub fn is_about_geometry(&self) -> bool {
+        self.is_geometric()
+            || matches!(
+                self,
+                Self::Word(
+                    Mistake::PixelCorners
+                        | Mistake::Stretched
+                        | Mistake::FlippedVertically
+                        | Mistake::Mirrored
+                        | Mistake::RawUp
+                )
+            )
+    }
+
     /// Whether it is about where rays start (not a known mistake).
     pub fn is_geometric(&self) -> bool {
         matches!(
             self,
-            Self::SampleOffset { .. }
+            Self::OnlyBlock { .. }
+                | Self::SampleOffset { .. }
                 | Self::CropNotCentred { .. }
                 | Self::Scaled { .. }
                 | Self::SwappedAxes { .. }
@@ -211,6 +244,7 @@ impl Deviation {
                 (if *last_wins { "last" } else { "first" }).to_owned()
             }
             Self::NearRootOnly { tmin } => number(*tmin, 6),
+            Self::OnlyBlock { drawn_px } => format!("{} {}", drawn_px.0, drawn_px.1),
             Self::Background { bytes: b, .. }
             | Self::DepthOutside { bytes: b }
             | Self::DepthNoHit { bytes: b } => bytes(*b),
@@ -219,6 +253,49 @@ impl Deviation {
             } => format!("{} {}", number(*white_t, 4), number(*black_t, 4)),
             Self::DepthQuantity { quantity } => quantity_name(*quantity).to_owned(),
         }
+    }
+
+    /// The statement as JSON: its name, whether it is a known mistake, its values (numbers,
+    /// or the quantity's name), and the sentence (docs/compare-json.md).
+    pub fn to_json(&self) -> serde_json::Value {
+        let pair = |v: DVec2| vec![v.x.into(), v.y.into()];
+        let matrix = |m: &DMat2| {
+            vec![
+                m.x_axis.x.into(),
+                m.y_axis.x.into(),
+                m.x_axis.y.into(),
+                m.y_axis.y.into(),
+            ]
+        };
+        let bytes = |b: &[u8; 3]| b.iter().map(|&v| u64::from(v).into()).collect();
+        let values: Vec<serde_json::Value> = match self {
+            Self::Word(_) => Vec::new(),
+            Self::SampleOffset { offset_px } | Self::CropNotCentred { offset_px } => {
+                pair(*offset_px)
+            }
+            Self::Scaled { factor } if factor.x == factor.y => vec![factor.x.into()],
+            Self::Scaled { factor } => pair(*factor),
+            Self::SwappedAxes { relative } | Self::Axes { relative } => matrix(relative),
+            Self::Tilt { per_px } => pair(*per_px),
+            Self::NoDepthTest { last_wins } => {
+                vec![(if *last_wins { "last" } else { "first" }).into()]
+            }
+            Self::NearRootOnly { tmin } => vec![(*tmin).into()],
+            Self::OnlyBlock { drawn_px } => vec![drawn_px.0.into(), drawn_px.1.into()],
+            Self::Background { bytes: b, .. }
+            | Self::DepthOutside { bytes: b }
+            | Self::DepthNoHit { bytes: b } => bytes(b),
+            Self::DepthRange {
+                white_t, black_t, ..
+            } => vec![(*white_t).into(), (*black_t).into()],
+            Self::DepthQuantity { quantity } => vec![quantity_name(*quantity).into()],
+        };
+        serde_json::json!({
+            "name": self.word(),
+            "known_mistake": matches!(self, Self::Word(_)),
+            "values": values,
+            "text": self.explanation(),
+        })
     }
 
     /// The word and its values, as one token list (`zoom 1.118`).
@@ -235,9 +312,16 @@ impl Deviation {
     pub fn explanation(&self) -> String {
         match self {
             Self::Word(mistake) => mistake.advice().to_owned(),
-            Self::SampleOffset { offset_px } => format!(
+            Self::SampleOffset { offset_px } if offset_px.abs().max_element() <= 1.5 => format!(
                 "each ray starts at ({}, {}) within its pixel instead of the centre (½, ½): \
                  check the pixel-to-screen formula, (x + ½)/W",
+                number(offset_px.x, 3),
+                number(offset_px.y, 3)
+            ),
+            Self::SampleOffset { offset_px } => format!(
+                "the picture is shifted: pixel (0, 0) samples the screen at ({}, {}) of its own \
+                 pixels instead of (½, ½), so the image's centre is not the screen's: check \
+                 how x and y are centred (x − W/2, y − H/2)",
                 number(offset_px.x, 3),
                 number(offset_px.y, 3)
             ),
@@ -289,6 +373,11 @@ impl Deviation {
             Self::NoDepthTest { last_wins: false } => "the first sphere in the file that the \
                  ray hits is drawn, nearer or not: test every sphere and keep the nearest"
                 .to_owned(),
+            Self::OnlyBlock { drawn_px } => format!(
+                "only the lower-left {}×{} pixels are drawn and the rest keeps the background: \
+                 the pixel loops run to min(W, H), or with W and H swapped",
+                drawn_px.0, drawn_px.1
+            ),
             Self::NearRootOnly { tmin } => format!(
                 "hits before t = {} are refused and the far root is not tried, so a sphere \
                  around the ray origins vanishes: the course's tmin is −∞",

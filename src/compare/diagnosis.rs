@@ -11,6 +11,8 @@
 //! as *partial* when they explain more than half of the differing pixels and each explains at
 //! least a tenth on its own; the pixels they leave are counted as unexplained.
 
+use glam::DVec2;
+
 use super::describe::{describe, rebuild};
 use super::deviation::{Deviation, PerImage};
 use super::fit::fit;
@@ -29,6 +31,10 @@ const LEFT_SHARE_OF_ALL: f64 = 0.01;
 /// Share of the exact render's differing pixels each statement must explain on its own (the
 /// pixels that differ again when it is left out); one pixel at least.
 const NEEDED_SHARE: f64 = 0.01;
+
+/// Share of all compared pixels a fitted value (not a known mistake) must explain on its own,
+/// besides [`NEEDED_SHARE`] of the differing ones (or half of those, when they are fewer).
+const FITTED_SHARE_OF_ALL: f64 = 0.001;
 
 /// Another model whose pixels left are within this share of the differing pixels is a rival.
 const NEAR_SHARE: f64 = 0.01;
@@ -79,6 +85,17 @@ pub struct Diagnosis {
 }
 
 impl Diagnosis {
+    /// The verdict's name, as the JSON form gives it.
+    pub fn verdict_name(&self) -> &'static str {
+        match self.verdict {
+            Verdict::Same => "same",
+            Verdict::Explained => "explained",
+            Verdict::Ambiguous(_) => "ambiguous",
+            Verdict::Partial => "partial",
+            Verdict::Unexplained => "unexplained",
+        }
+    }
+
     /// The known mistakes named in full (none when the verdict is not [`Verdict::Explained`] or
     /// [`Verdict::Ambiguous`]).
     pub fn mistakes(&self) -> MistakeSet {
@@ -144,22 +161,59 @@ fn needed(
 ) -> (Vec<Deviation>, usize) {
     let view = *scorer.view;
     let needed_px = (NEEDED_SHARE * differing_exact as f64).max(1.0);
+    // A fitted value must also explain a share of the image itself: any value can be tuned to
+    // catch a handful of pixels.
+    let fitted_px = needed_px.max(
+        (FITTED_SHARE_OF_ALL * scorer.compared_pixels() as f64).min(0.5 * differing_exact as f64),
+    );
     let mut left = scorer.score(&rebuild(&view, &statements));
     loop {
-        let cheapest = (0..statements.len())
-            .map(|i| {
-                let mut without = statements.clone();
-                without.remove(i);
-                (scorer.score(&rebuild(&view, &without)), i)
-            })
-            .min();
-        match cheapest {
-            Some((without, i)) if without <= left || ((without - left) as f64) < needed_px => {
-                statements.remove(i);
-                left = without;
+        // Each statement left out, or a fitted value replaced by the known mistake nearest it;
+        // with the pixels it must explain to stay.
+        let mut simpler: Vec<(usize, f64, Vec<Deviation>)> = Vec::new();
+        for (i, statement) in statements.iter().enumerate() {
+            let threshold = if matches!(statement, Deviation::Word(_)) {
+                needed_px
+            } else {
+                fitted_px
+            };
+            let mut without = statements.clone();
+            without.remove(i);
+            if let Some(named) = nearest_word(statement) {
+                let mut replaced = without.clone();
+                replaced.insert(i, named);
+                simpler.push((0, threshold, replaced));
             }
-            _ => return (statements, left),
+            simpler.push((1, threshold, without));
         }
+        let cheapest = simpler
+            .into_iter()
+            .map(|(order, threshold, candidate)| {
+                let score = scorer.score(&rebuild(&view, &candidate));
+                (score, order, threshold, candidate)
+            })
+            .filter(|(score, _, threshold, _)| {
+                *score <= left || ((*score - left) as f64) < *threshold
+            })
+            .min_by_key(|(score, order, _, _)| (*score, *order));
+        match cheapest {
+            Some((score, _, _, candidate)) => {
+                statements = candidate;
+                left = score;
+            }
+            None => return (statements, left),
+        }
+    }
+}
+
+/// The known mistake a fitted statement comes nearest to, where it has one: a sample offset
+/// near a pixel's corner is `pixel-corners`.
+fn nearest_word(statement: &Deviation) -> Option<Deviation> {
+    match statement {
+        Deviation::SampleOffset { offset_px } if offset_px.abs().max_element() < 0.25 => {
+            Some(Deviation::Word(Mistake::PixelCorners))
+        }
+        _ => None,
     }
 }
 
@@ -179,9 +233,21 @@ fn rounded(scorer: &mut Scorer<'_>, mut statements: Vec<Deviation>, left: usize)
                 Deviation::CropNotCentred { offset_px } => Deviation::CropNotCentred {
                     offset_px: offset_px.map(|v| round(v, decimals)),
                 },
-                Deviation::Scaled { factor } => Deviation::Scaled {
-                    factor: factor.map(|v| round(v, decimals)),
-                },
+                Deviation::Scaled { factor } => {
+                    // The same factor on both axes first (a zoom), then each its own.
+                    let mean = 0.5 * (factor.x + factor.y);
+                    let mut with = statements.clone();
+                    with[i] = Deviation::Scaled {
+                        factor: DVec2::splat(round(mean, decimals + 1)),
+                    };
+                    if factor.x != factor.y && scorer.score(&rebuild(&view, &with)) <= left {
+                        statements = with;
+                        break;
+                    }
+                    Deviation::Scaled {
+                        factor: factor.map(|v| round(v, decimals)),
+                    }
+                }
                 Deviation::Tilt { per_px } => Deviation::Tilt {
                     per_px: per_px.map(|v| round(v, decimals + 2)),
                 },
@@ -231,6 +297,14 @@ fn per_image(scorer: &mut Scorer<'_>, statements: &mut [Deviation], model: &Mode
             }
         }
     }
+}
+
+/// How far the pixel map `statements` describe lies from the course's (its axes, in course
+/// pixel steps).
+fn off_course(view: &View, statements: &[Deviation]) -> f64 {
+    let model = rebuild(view, statements);
+    let relative = model.pixels.relative_axes(Model::step_world(view)) - glam::DMat2::IDENTITY;
+    relative.x_axis.length() + relative.y_axis.length()
 }
 
 /// How many statements are fitted values, then how many are known mistakes: of two models
@@ -290,7 +364,10 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
         (*left > fewest + needed_px, complexity(statements), *left)
     });
     let (statements, left) = options.remove(0);
-    let mut statements = rounded(&mut scorer, statements, left);
+    let statements = rounded(&mut scorer, statements, left);
+    // Said again from the model they make: a value rounded onto a named point is its word.
+    let mut statements = describe(scene, view, &rebuild(view, &statements));
+    let left = scorer.score(&rebuild(view, &statements));
     let model = rebuild(view, &statements);
     per_image(&mut scorer, &mut statements, &model);
     answer.differing_left = left;
@@ -307,6 +384,36 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
         let mut alternatives = vec![statements.clone()];
         for (rival, rival_left) in options {
             let holds_ours = statements.iter().all(|s| rival.contains(s));
+            // The same statements with other values are the same answer: values are given as
+            // far as the images tell them.
+            let names = |list: &[Deviation]| {
+                let mut names: Vec<&str> = list
+                    .iter()
+                    .map(|d| match d {
+                        Deviation::Word(m) => m.word(),
+                        other => other.kind(),
+                    })
+                    .collect();
+                names.sort_unstable();
+                names
+            };
+            if names(&rival) == names(&statements) {
+                continue;
+            }
+            // Of two maps that differ only in where rays start, the one nearer the course's is
+            // said: a symmetric scene looks the same turned, and the least change is the answer.
+            let only_geometry = rival
+                .iter()
+                .chain(&statements)
+                .filter(|s| !(rival.contains(s) && statements.contains(s)))
+                .all(Deviation::is_about_geometry);
+            let fitted_geometry = rival.iter().any(Deviation::is_geometric);
+            if only_geometry
+                && fitted_geometry
+                && off_course(view, &rival) >= off_course(view, &statements)
+            {
+                continue;
+            }
             if rival_left > left + near
                 || rival.is_empty()
                 || holds_ours

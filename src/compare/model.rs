@@ -250,6 +250,9 @@ pub struct Model {
     pub rounded: bool,
     /// How the depth image is drawn.
     pub depth: DepthMap,
+    /// Only the pixels with `x < .0` and `y_up < .1` are traced (loops that run to the wrong
+    /// bound); the rest keep the background (`None`: every pixel).
+    pub drawn_px: Option<(u32, u32)>,
 }
 
 impl Model {
@@ -262,6 +265,7 @@ impl Model {
             background: None,
             rounded: false,
             depth: DepthMap::of_range(view.depth_range),
+            drawn_px: None,
         }
     }
 

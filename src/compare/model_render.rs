@@ -198,6 +198,12 @@ pub fn render_hits(scene: &Scene, view: &View, model: &Model) -> Hits {
         .for_each(|(row, (t_row, sphere_row))| {
             let y_up = height - 1 - row as u32;
             for x in 0..width {
+                if model
+                    .drawn_px
+                    .is_some_and(|(columns, rows)| x >= columns || y_up >= rows)
+                {
+                    continue;
+                }
                 let pixel = DVec2::new(f64::from(x), f64::from(y_up));
                 let screen = model.pixels.screen_of(pixel);
                 let shift = ramp_at(model, width, height, pixel.x, pixel.y);

@@ -156,3 +156,38 @@ pub fn of_depth(scene: &Scene, image: &RgbImage, no_hit: [u8; 3]) -> Labels {
         spheres_of_class,
     }
 }
+
+/// Grey levels from which a pixel the model draws counts as clearly not black.
+const CLEAR_GREY: u8 = 16;
+
+/// `labels` of a depth image with its black pixels (other than `Unknown` ones already known)
+/// taken for the background where `drawn`, the model's depth image so far, is clearly grey.
+pub fn with_black_where_grey(labels: &Labels, theirs: &RgbImage, drawn: &RgbImage) -> Labels {
+    let mut relabelled = labels.clone();
+    for ((label, theirs), drawn) in relabelled
+        .per_pixel
+        .iter_mut()
+        .zip(theirs.pixels())
+        .zip(drawn.pixels())
+    {
+        if *label == Label::Unknown
+            && theirs.0 == [0; 3]
+            && drawn.0.iter().all(|&g| g >= CLEAR_GREY)
+        {
+            *label = Label::Background;
+        }
+    }
+    relabelled
+}
+
+/// The most common colour of `image`.
+pub fn most_common(image: &RgbImage) -> Option<[u8; 3]> {
+    let mut counts: HashMap<[u8; 3], usize> = HashMap::new();
+    for pixel in image.pixels() {
+        *counts.entry(pixel.0).or_default() += 1;
+    }
+    counts
+        .into_iter()
+        .max_by_key(|&(colour, count)| (count, colour))
+        .map(|(colour, _)| colour)
+}

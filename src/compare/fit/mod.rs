@@ -24,7 +24,7 @@ use self::depth::fit_depth;
 use self::geometry::{Affine, Problem};
 use self::hit_rule::search_hit_rule;
 use self::labels::Labels;
-use self::score::Scorer;
+use self::score::{Scorer, Theirs};
 use super::mistake::{Mistake, MistakeSet};
 use super::model::{Model, colour_bytes};
 use super::model_render::discs;
@@ -58,7 +58,7 @@ pub struct Fitted {
 }
 
 /// The geometric named points: the course's and the mistakes that move where rays start.
-fn named_geometry(view: &crate::render::View) -> Vec<(MistakeSet, Model)> {
+fn named_geometry(view: &crate::render::View) -> Vec<(usize, Model)> {
     let words = [
         Mistake::PixelCorners,
         Mistake::Stretched,
@@ -66,7 +66,7 @@ fn named_geometry(view: &crate::render::View) -> Vec<(MistakeSet, Model)> {
         Mistake::Mirrored,
         Mistake::RawUp,
     ];
-    (0u32..1 << words.len())
+    let mut named: Vec<(usize, Model)> = (0u32..1 << words.len())
         .map(|bits| {
             let set = MistakeSet::of(
                 &words
@@ -76,9 +76,84 @@ fn named_geometry(view: &crate::render::View) -> Vec<(MistakeSet, Model)> {
                     .map(|(_, m)| *m)
                     .collect::<Vec<_>>(),
             );
-            (set, Model::of_mistakes(view, set))
+            (set.len(), Model::of_mistakes(view, set))
         })
-        .collect()
+        .collect();
+    // A non-square image drawn only in its min(W, H) square, the whole camera square there.
+    if view.width_px != view.height_px {
+        for (complexity, offset) in [(2, 0.5), (3, 0.0)] {
+            let mut model = Model::course(view);
+            model.pixels = block_square(view, view.width_px.min(view.height_px), offset);
+            named.push((complexity, model));
+        }
+    }
+    // Rays through the far corner of each pixel, (x + 1)/W.
+    let mut far_corner = Model::course(view);
+    far_corner.pixels = crate::compare::model::PixelMap::of_relative(
+        glam::DMat2::IDENTITY,
+        DVec2::ONE,
+        view.width_px,
+        view.height_px,
+        Model::step_world(view),
+    );
+    named.push((1, far_corner));
+    // A non-square image's strips of the camera square: its side, from the square's edge.
+    let (w, h) = (view.width_px, view.height_px);
+    if w != h {
+        let strip = 0.5 * (f64::from(w) - f64::from(h)).abs();
+        for corner in [0.0, 0.5] {
+            for sign in [-1.0, 1.0] {
+                let offset = if w > h {
+                    DVec2::new(corner, corner + sign * strip)
+                } else {
+                    DVec2::new(corner + sign * strip, corner)
+                };
+                let mut model = Model::course(view);
+                model.pixels = crate::compare::model::PixelMap::of_relative(
+                    glam::DMat2::IDENTITY,
+                    offset,
+                    w,
+                    h,
+                    Model::step_world(view),
+                );
+                named.push((if corner == 0.0 { 2 } else { 1 }, model));
+            }
+        }
+    }
+    named
+}
+
+/// The map that shows the whole camera square in the lower-left `side`² block, each ray at
+/// `offset` in its pixel.
+fn block_square(
+    view: &crate::render::View,
+    side: u32,
+    offset: f64,
+) -> crate::compare::model::PixelMap {
+    let pixel = view.size_world / f64::from(side);
+    crate::compare::model::PixelMap {
+        axes_world: glam::DMat2::from_diagonal(DVec2::splat(pixel)),
+        origin_world: DVec2::splat((offset - 0.5 * f64::from(side)) * pixel),
+    }
+}
+
+/// The block `(columns, rows)` of a non-square image that is all its program drew, when the
+/// rest of their image (colour, else depth) is one flat colour.
+fn only_block(view: &crate::render::View, theirs: Theirs<'_>) -> Option<(u32, u32)> {
+    let (width, height) = (view.width_px, view.height_px);
+    let image = theirs.colour.or(theirs.depth)?;
+    if width == height {
+        return None;
+    }
+    let side = width.min(height);
+    let mut outside = image
+        .enumerate_pixels()
+        .filter(|(x, row, _)| *x >= side || height - 1 - *row >= side)
+        .map(|(_, _, pixel)| pixel.0);
+    let first = outside.next()?;
+    outside
+        .all(|colour| colour == first)
+        .then_some((side, side))
 }
 
 /// The starts of the geometric fit: the course's map, mirrored, upside down, turned, with axes
@@ -104,6 +179,28 @@ fn starts(width_px: u32, height_px: u32) -> Vec<Affine> {
             shift_px: DVec2::ZERO,
         });
         let strip = 0.5 * (w - h).abs();
+        // W and H swapped in the normalisers: each axis over the other's length, the long axis
+        // from the middle of its side or from either end, the short from either end.
+        let k = longer / w.min(h);
+        for long in [-1.0, 0.0, 1.0] {
+            for short in [-1.0, 1.0] {
+                let (relative, shift_px) = if w > h {
+                    (
+                        DVec2::new(k, 1.0),
+                        DVec2::new(long * k * strip, short * strip),
+                    )
+                } else {
+                    (
+                        DVec2::new(1.0, k),
+                        DVec2::new(short * strip, long * k * strip),
+                    )
+                };
+                starts.push(Affine {
+                    relative: glam::DMat2::from_diagonal(relative),
+                    shift_px,
+                });
+            }
+        }
         for sign in [-1.0, 1.0] {
             let shift_px = if w > h {
                 DVec2::new(0.0, sign * strip)
@@ -167,7 +264,7 @@ fn fit_geometry(
         anchors.push(fitted);
     }
     // The named points near a start or a fit.
-    for (set, point) in &named {
+    for (complexity, point) in &named {
         let near = anchors.iter().any(|anchor| {
             corners.iter().all(|&c| {
                 (point.pixels.screen_of(c) - anchor.pixels.screen_of(c)).length() <= 3.0 * step
@@ -177,7 +274,7 @@ fn fit_geometry(
             let mut candidate = *model;
             candidate.pixels = point.pixels;
             candidate.t_ramp = point.t_ramp;
-            results.push((problem.disagreeing(&candidate), set.len(), candidate));
+            results.push((problem.disagreeing(&candidate), *complexity, candidate));
         }
     }
     // Fewest disagreeing, then named (the fewest words), then the map nearest the course's (a
@@ -262,8 +359,14 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
     }
     let step = Model::step_world(&view);
     let discs = discs(scene, &view);
+    let depth_no_hit = scorer
+        .theirs
+        .depth
+        .and_then(labels::most_common)
+        .filter(|&c| c != [255; 3])
+        .unwrap_or([0; 3]);
     // What their image says of the silhouettes, and their background.
-    let (labels, seen_background): (Labels, Option<[u8; 3]>) = match scorer.theirs.colour {
+    let (mut labels, seen_background): (Labels, Option<[u8; 3]>) = match scorer.theirs.colour {
         Some(colour) => {
             let scene_background = colour_bytes(scene.background, false);
             let seen = labels::background_candidate(scene, colour).map(|(c, _)| c);
@@ -277,39 +380,85 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
             )
         }
         None => match scorer.theirs.depth {
-            Some(depth) => (labels::of_depth(scene, depth, [0; 3]), None),
+            // What no ray hits is most of a depth image, in its most common colour (black,
+            // or the background where a program fills with it), unless that is white.
+            Some(depth) => (labels::of_depth(scene, depth, depth_no_hit), None),
             None => return fitted,
         },
     };
-    let problem = Problem {
+    // A non-square image whose part beyond the min(W, H) square is one flat colour may have
+    // been drawn only there: that part says nothing of the map.
+    let block = only_block(&view, scorer.theirs);
+    let mut from = starts(view.width_px, view.height_px);
+    if let Some((columns, rows)) = block {
+        for (index, label) in labels.per_pixel.iter_mut().enumerate() {
+            let (x, row) = (index as u32 % view.width_px, index as u32 / view.width_px);
+            if x >= columns || view.height_px - 1 - row >= rows {
+                *label = labels::Label::Unknown;
+            }
+        }
+        // The whole camera square in the block.
+        from.push(Affine::of_map(
+            &block_square(&view, columns.min(rows), 0.5),
+            view.width_px,
+            view.height_px,
+            step,
+        ));
+    }
+    let mut problem = Problem {
         discs: &discs,
         sample: Problem::sample_of(&labels),
         labels: &labels,
         step,
     };
+    let relabelled;
     let mut model = course;
     model.background = seen_background;
+    model.drawn_px = block;
+    if scorer.theirs.colour.is_none() {
+        model.depth.no_hit = depth_no_hit;
+    }
     let mut seen = Vec::new();
     let mut ties = Vec::new();
-    model = fit_geometry(
-        &problem,
-        &model,
-        &starts(view.width_px, view.height_px),
-        &view,
-        &mut ties,
-    );
+    model = fit_geometry(&problem, &model, &from, &view, &mut ties);
     model = fit_colour(scorer, &model, seen_background, &mut seen);
     model = fit_depth(scorer, &model);
     let searched = search_hit_rule(scorer, &model, RULE_ROUNDS, &mut seen);
     if searched.hits != model.hits {
         // The silhouettes again under the rule found, from where they were.
-        let here = Affine::of_map(&searched.pixels, view.width_px, view.height_px, step);
+        let mut from = starts(view.width_px, view.height_px);
+        from.insert(
+            0,
+            Affine::of_map(&searched.pixels, view.width_px, view.height_px, step),
+        );
         ties.clear();
-        model = fit_geometry(&problem, &searched, &[here], &view, &mut ties);
+        model = fit_geometry(&problem, &searched, &from, &view, &mut ties);
         model = fit_depth(scorer, &model);
         model = search_hit_rule(scorer, &model, RULE_ROUNDS, &mut seen);
     } else {
         model = searched;
+    }
+    if let (None, Some(depth)) = (scorer.theirs.colour, scorer.theirs.depth) {
+        // A depth image alone: black pixels where the model fitted so far draws a clear grey
+        // are empty too (a smaller sphere), so the map is fitted again with them.
+        let hits = scorer.hits(&model);
+        let drawn = crate::compare::model_render::depth_image(&view, &hits, &model);
+        relabelled = labels::with_black_where_grey(&labels, depth, &drawn);
+        problem = Problem {
+            discs: &discs,
+            sample: Problem::sample_of(&relabelled),
+            labels: &relabelled,
+            step,
+        };
+        let mut from = starts(view.width_px, view.height_px);
+        from.insert(
+            0,
+            Affine::of_map(&model.pixels, view.width_px, view.height_px, step),
+        );
+        ties.clear();
+        model = fit_geometry(&problem, &model, &from, &view, &mut ties);
+        model = fit_depth(scorer, &model);
+        model = search_hit_rule(scorer, &model, RULE_ROUNDS, &mut seen);
     }
     model = fit_colour(scorer, &model, seen_background, &mut seen);
     model = fit_depth(scorer, &model);

@@ -30,7 +30,7 @@ pub struct Theirs<'a> {
 }
 
 /// The part of a model that decides the hits, as bits (to key the renders).
-type HitKey = [u64; 14];
+type HitKey = [u64; 15];
 
 fn hit_key(model: &Model) -> HitKey {
     let axes = model.pixels.axes_world.to_cols_array();
@@ -54,6 +54,9 @@ fn hit_key(model: &Model) -> HitKey {
         u64::from(rule.later_wins_ties),
         u64::from(rule.far_when_near_refused) | u64::from(rule.far_only) << 1,
         u64::from(rule.square_root),
+        model
+            .drawn_px
+            .map_or(u64::MAX, |(x, y)| u64::from(x) << 32 | u64::from(y)),
     ]
 }
 
