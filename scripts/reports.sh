@@ -3,14 +3,14 @@
 # shows), then refreshes the README's tables copied from them.
 #   bash scripts/reports.sh            every report (long: about an hour on two cores)
 #   bash scripts/reports.sh NAME…      only these, e.g. `accuracy tradeoff screenshot`
-# Names: accuracy performance tradeoff mistakes diagnosis compare-diff memory scaling thread-wake profile
+# Names: accuracy performance tradeoff mistakes diagnosis diagnosis-speed compare-diff memory scaling thread-wake profile
 # command-vs-cpp dense-speedup window-frame-times window-frame-times-wgpu setup-times web
 # windows windows-viewer screenshot readme-screenshots window-sizes fuzz.
 # Each runs the command docs/README.md names for it; a failure stops the script.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-all=(accuracy performance tradeoff mistakes diagnosis compare-diff memory scaling thread-wake profile command-vs-cpp
+all=(accuracy performance tradeoff mistakes diagnosis diagnosis-speed compare-diff memory scaling thread-wake profile command-vs-cpp
      dense-speedup window-frame-times window-frame-times-wgpu setup-times web
      windows windows-viewer screenshot readme-screenshots window-sizes fuzz)
 wanted=("$@")
@@ -23,6 +23,7 @@ report() {
     tradeoff) cargo run --release --example tradeoff ;;
     mistakes) cargo run --release --example mistakes ;;
     diagnosis) cargo build --release && cargo run --release --example diagnosis_report ;;
+    diagnosis-speed) cargo build --release && cargo run --release --example diagnosis_speed ;;
     compare-diff) bash scripts/compare-example.sh ;;
     memory) bash scripts/memory.sh ;;
     scaling) bash scripts/scaling.sh ;;

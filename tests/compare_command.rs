@@ -5,10 +5,11 @@
 
 #[path = "common/command.rs"]
 mod command;
+#[path = "common/compare_run.rs"]
+mod compare_run;
 
 use command::stderr;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use compare_run::{SCENE, compare, diagnosis, path, run, stdout, value, write_mistaken};
 
 use image::RgbImage;
 use raytracer::compare::{Mistake, MistakeSet};
@@ -16,75 +17,6 @@ use raytracer::oracle::mistaken::render_variant;
 use raytracer::render::View;
 use raytracer::render::depth_map::DepthRange;
 use raytracer::scene::load_scene;
-
-fn path(relative: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join(relative)
-}
-
-fn run(folder: &Path, arguments: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_raytracer"))
-        .current_dir(folder)
-        .args(arguments)
-        .output()
-        .unwrap()
-}
-
-fn stdout(output: &Output) -> String {
-    String::from_utf8_lossy(&output.stdout).into_owned()
-}
-
-/// The `diagnosis:` words of a run, in order.
-fn diagnosis(output: &Output) -> Vec<String> {
-    stdout(output)
-        .lines()
-        .filter_map(|line| line.strip_prefix("diagnosis: "))
-        .map(str::to_owned)
-        .collect()
-}
-
-/// The value of the line `name: value`.
-fn value(output: &Output, name: &str) -> String {
-    let prefix = format!("{name}: ");
-    stdout(output)
-        .lines()
-        .find_map(|line| line.strip_prefix(&prefix))
-        .unwrap_or_else(|| panic!("no {name} in {}", stdout(output)))
-        .to_owned()
-}
-
-const SCENE: &str = "tests/compare/every-mistake.txt";
-
-/// Writes the images of `mistakes` on the every-mistake scene at 120×80, depth 6 … 10, as
-/// `colour.EXT` and `depth.EXT`.
-fn write_mistaken(folder: &Path, mistakes: MistakeSet, extension: &str) {
-    let scene = load_scene(&path(SCENE)).unwrap();
-    let view = View::of_camera(&scene.camera, 120, 80, DepthRange::new(6.0, 10.0));
-    let (colour, depth) = render_variant(&scene, &view, mistakes);
-    colour
-        .save(folder.join(format!("colour.{extension}")))
-        .unwrap();
-    depth
-        .save(folder.join(format!("depth.{extension}")))
-        .unwrap();
-}
-
-fn compare(folder: &Path, extension: &str, more: &[&str]) -> Output {
-    let scene = path(SCENE);
-    let colour = format!("colour.{extension}");
-    let depth = format!("depth.{extension}");
-    let mut arguments = vec![
-        "-input",
-        scene.to_str().unwrap(),
-        "-compare_output",
-        &colour,
-        "-compare_depth",
-        "6",
-        "10",
-        &depth,
-    ];
-    arguments.extend_from_slice(more);
-    run(folder, &arguments)
-}
 
 #[test]
 fn each_mistake_and_each_pair_is_named_with_exit_three() {

@@ -102,7 +102,7 @@ fn their_colour_image_is_diagnosed_flipped_and_probed() {
 
     let comparison = harness.state().comparison().expect("a comparison").clone();
     assert!(matches!(comparison.source, CompareSource::File(_)));
-    assert_eq!(comparison.diagnosis, ["pixel-corners", "mirrored"]);
+    assert_eq!(comparison.diagnosis(), ["pixel-corners", "mirrored"]);
     assert!(label_shown(&harness, "diagnosis: pixel-corners, mirrored"));
     assert!(label_shown(&harness, "match: no"));
     // The view is held at the file's camera and their size, so the two line up.
@@ -178,7 +178,7 @@ fn the_exact_image_matches_and_names_nothing() {
     compare_image(&mut harness, &colour);
     let comparison = harness.state().comparison().expect("a comparison");
     assert_eq!(comparison.difference.pixels_differing(), 0);
-    assert!(comparison.diagnosis.is_empty());
+    assert!(comparison.statements.is_empty());
     assert!(label_shown(&harness, "match: yes"));
     assert!(label_shown(&harness, "diagnosis: none needed"));
 }
@@ -272,8 +272,13 @@ fn a_mistake_beside_an_unknown_one_is_shown_in_part_with_the_unexplained_pixels(
     settle(&mut harness);
     compare_image(&mut harness, &path.display().to_string());
     let comparison = harness.state().comparison().expect("a comparison");
-    assert!(comparison.diagnosis.is_empty());
-    assert_eq!(comparison.partial, ["flipped-vertically"]);
+    assert!(comparison.statements.is_empty());
+    let partial: Vec<&str> = comparison
+        .partial
+        .iter()
+        .map(raytracer::compare::Deviation::word)
+        .collect();
+    assert_eq!(partial, ["flipped-vertically"]);
     assert!(label_shown(
         &harness,
         "diagnosis: in part: flipped-vertically"

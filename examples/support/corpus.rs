@@ -1,8 +1,9 @@
 //! The diagnosis corpus (`tests/corpus/`): the output images of public C++ solutions of the
-//! assignment and, per program, the mistakes its code makes (`tests/corpus/programs.tsv`). Each
-//! image is compared by the `raytracer` binary, as a student would compare it, and what the
-//! diagnosis named is judged against the program's mistakes. Shared by `tests/corpus.rs` (the
-//! rules) and `examples/diagnosis_report.rs` (`docs/diagnosis.md`).
+//! assignment and, per program, what its code does differently (`tests/corpus/programs.tsv`).
+//! Each image is compared by the `raytracer` binary, as a student would compare it, and the
+//! answer's statements are judged against the program's behaviours (`support/judge.rs`). Shared
+//! by `tests/corpus.rs` (the rules) and `examples/diagnosis_report.rs` (`docs/diagnosis.md`);
+//! the including file also includes `support/judge.rs` as `judge`.
 
 #![allow(dead_code)]
 
@@ -14,17 +15,17 @@ pub(crate) struct Program {
     pub(crate) name: String,
     pub(crate) repository: String,
     pub(crate) commit: String,
-    /// Mistakes that show on the corpus's command lines.
+    /// Behaviours that show on the corpus's command lines (`name` or `name=value`).
     pub(crate) visible: Vec<String>,
-    /// Mistakes in the code that change no pixel on them.
+    /// Behaviours in the code that change no pixel on them, or a few.
     pub(crate) latent: Vec<String>,
     pub(crate) independence: String,
 }
 
 impl Program {
-    /// Whether `word` is one of the program's mistakes.
-    pub(crate) fn makes(&self, word: &str) -> bool {
-        self.visible.iter().chain(&self.latent).any(|m| m == word)
+    /// Every behaviour, visible or latent.
+    pub(crate) fn truth(&self) -> Vec<String> {
+        self.visible.iter().chain(&self.latent).cloned().collect()
     }
 }
 
@@ -76,26 +77,69 @@ pub(crate) const IMAGES: [Image; 16] = [
     depth("depth1_02_203x61.png", "scene1_02", "8", "12"),
 ];
 
-/// What the comparison of one image printed.
+/// What the comparison of one image answered (its `-compare_format json` document).
 #[derive(Debug, Default)]
 pub(crate) struct Outcome {
-    /// `diagnosis:` words (not `none`).
-    pub(crate) named: Vec<String>,
-    /// `diagnosis_partial:` words.
+    /// The statements made in full, as names.
+    pub(crate) stated: Vec<String>,
+    /// The statements made in part, as names.
     pub(crate) partial: Vec<String>,
-    /// A `diagnosis_ambiguous:` line.
-    pub(crate) ambiguous: Option<String>,
-    /// `unexplained_pixels:`, when printed.
-    pub(crate) unexplained: Option<u64>,
-    /// `match: yes`.
+    /// The alternatives of a near tie, each a list of names.
+    pub(crate) alternatives: Vec<Vec<String>>,
+    /// Every statement with its values, as printed (`zoom 1.118`; partial ones marked).
+    pub(crate) said: Vec<String>,
+    /// `unexplained_pixels`.
+    pub(crate) unexplained: u64,
+    /// Pixels compared.
+    pub(crate) pixels: u64,
+    /// `match`.
     pub(crate) matched: bool,
+    /// `verdict`.
+    pub(crate) verdict: String,
 }
 
 impl Outcome {
-    /// Every word the comparison put forward, in full or in part.
-    pub(crate) fn words(&self) -> impl Iterator<Item = &String> {
-        self.named.iter().chain(&self.partial)
+    /// The judge's verdict against `truth`.
+    pub(crate) fn judged(&self, truth: &[String]) -> crate::judge::Verdict {
+        crate::judge::judge(
+            self.matched,
+            &[self.stated.clone(), self.partial.clone()].concat(),
+            &self.alternatives,
+            self.unexplained,
+            self.pixels,
+            truth,
+        )
     }
+}
+
+/// The names and the printed form of a JSON list of statements.
+fn statements(list: &serde_json::Value) -> Vec<(String, String)> {
+    list.as_array()
+        .into_iter()
+        .flatten()
+        .map(|statement| {
+            let name = statement["name"].as_str().unwrap_or("?").to_owned();
+            let values: Vec<String> = statement["values"]
+                .as_array()
+                .into_iter()
+                .flatten()
+                .map(|v| match v {
+                    serde_json::Value::Number(n) => {
+                        let x = n.as_f64().unwrap_or(f64::NAN);
+                        let text = format!("{x:.4}");
+                        text.trim_end_matches('0').trim_end_matches('.').to_owned()
+                    }
+                    other => other.as_str().unwrap_or("?").to_owned(),
+                })
+                .collect();
+            let printed = if values.is_empty() {
+                name.clone()
+            } else {
+                format!("{name} {}", values.join(" "))
+            };
+            (name, printed)
+        })
+        .collect()
 }
 
 pub(crate) fn root() -> PathBuf {
@@ -107,7 +151,7 @@ pub(crate) fn programs() -> Vec<Program> {
     let table =
         std::fs::read_to_string(root().join("tests/corpus/programs.tsv")).expect("programs.tsv");
     let list = |cell: &str| {
-        cell.split(',')
+        cell.split(';')
             .filter(|w| !w.is_empty())
             .map(str::to_owned)
             .collect()
@@ -142,6 +186,11 @@ fn files_of(program: &Program, image: &Image) -> (PathBuf, PathBuf) {
     )
 }
 
+/// Whether `program` wrote `image` (one program aborts on the non-square command line).
+pub(crate) fn has(program: &Program, image: &Image) -> bool {
+    files_of(program, image).0.exists()
+}
+
 /// Compares `program`'s `image` with the `raytracer` binary at `binary`.
 pub(crate) fn compare(binary: &Path, program: &Program, image: &Image) -> Outcome {
     let (file, scene) = files_of(program, image);
@@ -151,6 +200,7 @@ pub(crate) fn compare(binary: &Path, program: &Program, image: &Image) -> Outcom
         None => command.arg("-compare_output").arg(&file),
         Some((min, max)) => command.args(["-compare_depth", min, max]).arg(&file),
     };
+    command.args(["-compare_format", "json"]);
     let output = command.output().expect("runs raytracer");
     let status = output.status.code();
     assert!(
@@ -160,23 +210,44 @@ pub(crate) fn compare(binary: &Path, program: &Program, image: &Image) -> Outcom
         image.file,
         String::from_utf8_lossy(&output.stderr)
     );
-    let mut outcome = Outcome::default();
-    for line in String::from_utf8_lossy(&output.stdout).lines() {
-        if let Some(word) = line.strip_prefix("diagnosis: ") {
-            if word != "none" {
-                outcome.named.push(word.to_owned());
-            }
-        } else if let Some(word) = line.strip_prefix("diagnosis_partial: ") {
-            outcome.partial.push(word.to_owned());
-        } else if let Some(sets) = line.strip_prefix("diagnosis_ambiguous: ") {
-            outcome.ambiguous = Some(sets.to_owned());
-        } else if let Some(count) = line.strip_prefix("unexplained_pixels: ") {
-            outcome.unexplained = count.parse().ok();
-        } else if line == "match: yes" {
-            outcome.matched = true;
-        }
+    let answer: serde_json::Value =
+        serde_json::from_slice(&output.stdout).expect("the answer is JSON");
+    let (width, height) = image::image_dimensions(&file).expect("their image");
+    let stated = statements(&answer["statements"]);
+    let partial = statements(&answer["partial"]);
+    let alternatives: Vec<Vec<(String, String)>> = answer["alternatives"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .map(statements)
+        .collect();
+    let mut said: Vec<String> = stated.iter().map(|s| s.1.clone()).collect();
+    said.extend(partial.iter().map(|s| format!("{} (in part)", s.1)));
+    if !alternatives.is_empty() {
+        let sets: Vec<String> = alternatives
+            .iter()
+            .map(|set| {
+                set.iter()
+                    .map(|s| s.1.clone())
+                    .collect::<Vec<_>>()
+                    .join(" + ")
+            })
+            .collect();
+        said.push(format!("one of: {}", sets.join(" \\| ")));
     }
-    outcome
+    Outcome {
+        stated: stated.into_iter().map(|s| s.0).collect(),
+        partial: partial.into_iter().map(|s| s.0).collect(),
+        alternatives: alternatives
+            .into_iter()
+            .map(|set| set.into_iter().map(|s| s.0).collect())
+            .collect(),
+        said,
+        unexplained: answer["unexplained_pixels"].as_u64().unwrap_or(0),
+        pixels: u64::from(width) * u64::from(height),
+        matched: answer["match"].as_bool().unwrap_or(false),
+        verdict: answer["verdict"].as_str().unwrap_or("?").to_owned(),
+    }
 }
 
 /// The depth range the binary reads back from a depth image given without one

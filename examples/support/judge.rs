@@ -21,9 +21,16 @@ pub(crate) const JUSTIFIED_BY: &[(&str, &[&str])] = &[
         ],
     ),
     ("crop-not-centred", &["crop-strip", "swapped-normalisers"]),
+    // The width used for both axes of a tall image is a zoom by H/W.
     (
         "zoom",
-        &["zoom", "raw-up", "square-block", "swapped-normalisers"],
+        &[
+            "zoom",
+            "raw-up",
+            "square-block",
+            "swapped-normalisers",
+            "crop-strip",
+        ],
     ),
     (
         "axes-scaled",
@@ -33,11 +40,23 @@ pub(crate) const JUSTIFIED_BY: &[(&str, &[&str])] = &[
             "stretched",
             "swapped-normalisers",
             "square-block",
+            "crop-strip",
         ],
     ),
     ("stretched", &["stretched"]),
     ("swapped-axes", &["swapped-axes", "transposed-write"]),
-    ("axes", &["raw-up", "axes", "zoom", "swapped-axes"]),
+    // A whole matrix: a mirror or a flip among the rest.
+    (
+        "axes",
+        &[
+            "raw-up",
+            "axes",
+            "zoom",
+            "swapped-axes",
+            "mirrored",
+            "flipped-vertically",
+        ],
+    ),
     ("mirrored", &["mirrored"]),
     ("flipped-vertically", &["flipped-vertically"]),
     ("raw-up", &["raw-up"]),
@@ -110,16 +129,21 @@ pub(crate) enum Verdict {
     Wrong,
 }
 
-/// The verdict of an answer that made `statements` (names, in full, in part or among the
-/// alternatives) and left `unexplained` of `pixels`.
+/// The verdict of an answer that made `statements` (names, in full or in part), offered
+/// `alternatives` (a near tie: one of them must be right) and left `unexplained` of `pixels`.
 pub(crate) fn judge(
     matched: bool,
     statements: &[String],
+    alternatives: &[Vec<String>],
     unexplained: u64,
     pixels: u64,
     truth: &[String],
 ) -> Verdict {
-    if statements.iter().any(|s| !justified(s, truth)) {
+    let alternative_right = alternatives.is_empty()
+        || alternatives
+            .iter()
+            .any(|set| set.iter().all(|s| justified(s, truth)));
+    if statements.iter().any(|s| !justified(s, truth)) || !alternative_right {
         Verdict::Wrong
     } else if matched {
         Verdict::Match

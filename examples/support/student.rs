@@ -150,8 +150,8 @@ impl Program {
         }
         if self.tmin != course.tmin || self.far_when_refused != course.far_when_refused {
             truth.push(match (self.tmin, self.far_when_refused) {
-                (t, true) if t == 0.0 => "tmin-zero".to_owned(),
-                (t, false) if t == -1.0 => "tmin-minus-one".to_owned(),
+                (0.0, true) => "tmin-zero".to_owned(),
+                (-1.0, false) => "tmin-minus-one".to_owned(),
                 (t, _) => format!("near-root-only={t}"),
             });
         }
@@ -165,7 +165,7 @@ impl Program {
             DepthRule::Range => {}
             DepthRule::Reversed => truth.push("depth-reversed".to_owned()),
             DepthRule::PerImage { near, far } => {
-                truth.push(format!("depth-per-image={near},{far}"))
+                truth.push(format!("depth-per-image={near},{far}"));
             }
             DepthRule::AbsZ => truth.push("depth-quantity=|z|".to_owned()),
             DepthRule::IntegerRange => truth.push("depth-range".to_owned()),

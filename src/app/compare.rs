@@ -8,15 +8,14 @@
 //!   open the view is held at the file's camera and the image's size, so the live render and their
 //!   image line up pixel for pixel; the compared image shows the render, theirs (the A/B flip, `B`)
 //!   or the difference (`Shift+B`), and the probe gives both values at the hovered pixel.
-//! * **Against the exact render**: the current view at the chosen quality (anti-aliasing)
-//!   against the exact one-sample render, and for anti-aliasing against a high-sample
-//!   reference: the mean error, the share of pixels off by more than 8 levels, the frame time.
+//! * **Against the exact render**: the view at the chosen quality against the exact render (and
+//!   a high-sample one): mean error, share of pixels off by over 8 levels, frame time.
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use web_time::Instant;
 
-use egui::{Color32, ColorImage, TextureHandle, TextureOptions};
+use egui::{ColorImage, TextureHandle, TextureOptions};
 use image::RgbImage;
 
 use super::ViewerApp;
@@ -111,21 +110,26 @@ pub struct ComparisonPixels {
     pub difference: Difference,
     /// The statements that explain the difference (empty: none does, or none was looked for).
     pub statements: Vec<Deviation>,
-    /// Each statement as its word and values (`zoom 1.118`).
-    pub diagnosis: Vec<String>,
     /// The alternatives of a near tie, each a `+`-joined list of statements (empty: no tie).
     pub alternatives: Vec<String>,
-    /// Whether other models explain it as well (the diagnosis is then ambiguous).
-    pub ambiguous: bool,
     /// When nothing explains it all: the statements that explain part of it.
     pub partial: Vec<Deviation>,
     /// Differing pixels no word named accounts for.
     pub unexplained_pixels: usize,
     /// A depth image's range, read back from it (`None`: a colour image, or no ramp to fit).
     pub depth_range_inferred: Option<DepthRange>,
-    /// Where they are, when a word was named in full or in part (one flag per pixel, row by row
-    /// from the top): drawn cyan over the heat map.
+    /// Where they are, one flag per pixel from the top row (cyan over the heat map).
     pub unexplained: Option<Vec<bool>>,
+}
+
+impl ComparisonPixels {
+    /// Each statement as its word and values (`zoom 1.118`).
+    pub fn diagnosis(&self) -> Vec<String> {
+        self.statements
+            .iter()
+            .map(Deviation::name_and_values)
+            .collect()
+    }
 }
 
 /// A comparison on screen.
@@ -202,11 +206,6 @@ pub fn compare_file(
         exact,
         difference,
         statements: diagnosis.stated().to_vec(),
-        diagnosis: diagnosis
-            .stated()
-            .iter()
-            .map(Deviation::name_and_values)
-            .collect(),
         alternatives: diagnosis
             .alternatives()
             .iter()
@@ -217,7 +216,6 @@ pub fn compare_file(
                     .join(" + ")
             })
             .collect(),
-        ambiguous: !diagnosis.alternatives().is_empty(),
         partial: diagnosis.partial().to_vec(),
         unexplained_pixels: diagnosis.unexplained_pixels(),
         unexplained,
@@ -277,9 +275,7 @@ pub fn compare_quality(
         exact,
         difference,
         statements: Vec::new(),
-        diagnosis: Vec::new(),
         alternatives: Vec::new(),
-        ambiguous: false,
         partial: Vec::new(),
         unexplained_pixels: 0,
         unexplained: None,
@@ -289,13 +285,9 @@ pub fn compare_quality(
 
 /// An RGB image as an egui image.
 fn to_colour_image(image: &RgbImage) -> ColorImage {
-    let size = [image.width() as usize, image.height() as usize];
-    ColorImage::new(
-        size,
-        image
-            .pixels()
-            .map(|p| Color32::from_rgb(p.0[0], p.0[1], p.0[2]))
-            .collect(),
+    ColorImage::from_rgb(
+        [image.width() as usize, image.height() as usize],
+        image.as_raw(),
     )
 }
 

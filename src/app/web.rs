@@ -440,7 +440,7 @@ impl WebHandle {
                 c.pixels
                     .statements
                     .iter()
-                    .map(|d| format!("{}: {}", d.name_and_values(), d.explanation()))
+                    .map(crate::compare::Deviation::said)
                     .collect()
             })
         })

@@ -126,13 +126,12 @@ impl CompareReport {
             };
         }
         let _ = writeln!(text, "match: {}", if self.matches() { "yes" } else { "no" });
-        let statement = |d: &Deviation| format!("{}: {}", d.name_and_values(), d.explanation());
         let stated = self.diagnosis.stated();
         if stated.is_empty() {
             let _ = writeln!(text, "diagnosis: none");
         }
         for deviation in stated {
-            let _ = writeln!(text, "diagnosis: {}", statement(deviation));
+            let _ = writeln!(text, "diagnosis: {}", deviation.said());
         }
         let alternatives = self.diagnosis.alternatives();
         if !alternatives.is_empty() {
@@ -156,7 +155,7 @@ impl CompareReport {
             let _ = writeln!(text, "diagnosis_same_pixels: {}", names.join(" + "));
         }
         for deviation in self.diagnosis.partial() {
-            let _ = writeln!(text, "diagnosis_partial: {}", statement(deviation));
+            let _ = writeln!(text, "diagnosis_partial: {}", deviation.said());
         }
         if !self.matches() {
             let _ = writeln!(
@@ -302,9 +301,13 @@ pub(crate) fn compare(
         request.height_px,
         DepthRange::new(0.0, 1.0),
     );
-    let depth_range_inferred = theirs
+    // Without a range, the depth image alone is read for one first; with one, the answer's own
+    // map is what is read back (below).
+    let range_given = matches!(compare.depth, Some(TheirDepth { range: Some(_), .. }));
+    let mut depth_range_inferred = theirs
         .depth
         .as_ref()
+        .filter(|_| !range_given)
         .map(|depth| infer_depth_range(scene, &view, depth));
     let range = match &compare.depth {
         None => view.depth_range,
@@ -320,10 +323,66 @@ pub(crate) fn compare(
                 })?
         }
     };
-    let view = View {
+    let given = Theirs {
+        colour: theirs.colour.as_ref(),
+        depth: theirs.depth.as_ref(),
+    };
+    let mut view = View {
         depth_range: range,
         ..view
     };
+    let mut diagnosis = diagnose(scene, &view, given);
+    if let Some(TheirDepth { range: None, .. }) = &compare.depth {
+        // Read back with both images, the range their program used may differ from the one the
+        // depth image alone suggested: the answer's own is the one reported and compared under.
+        let fitted = diagnosis
+            .stated()
+            .iter()
+            .find_map(|statement| match statement {
+                Deviation::DepthRange {
+                    white_t,
+                    black_t,
+                    per_image: None,
+                    ..
+                } => Some(DepthRange::new(
+                    white_t.min(*black_t),
+                    white_t.max(*black_t),
+                )),
+                _ => None,
+            });
+        if let Some(fitted) = fitted {
+            // Kept where the exact images under it differ from theirs in fewer pixels.
+            let refitted = diagnose(
+                scene,
+                &View {
+                    depth_range: fitted,
+                    ..view
+                },
+                given,
+            );
+            if refitted.differing_exact < diagnosis.differing_exact {
+                depth_range_inferred = Some(Some(fitted));
+                view.depth_range = fitted;
+                diagnosis = refitted;
+            }
+        }
+    }
+    if range_given && theirs.depth.is_some() {
+        // The range their depth image was drawn over, as the answer reads it: the one asked
+        // for, unless the answer says another (or a quantity other than t: none to read).
+        let model = &diagnosis.model;
+        depth_range_inferred = Some(
+            if model.depth.quantity == crate::compare::model::Quantity::T {
+                let (white, black) = model.depth.white_black_t();
+                let clean = |t: f64| (t * 1e9).round() / 1e9;
+                (white.is_finite() && black.is_finite() && white != black)
+                    .then(|| DepthRange::new(clean(white.min(black)), clean(white.max(black))))
+            } else {
+                None
+            },
+        );
+    }
+    let range = view.depth_range;
     let exact_colour = theirs.colour.as_ref().map(|_| exact.colour_image());
     let exact_depth = theirs.depth.as_ref().map(|_| exact.depth_image(range));
     let difference = |a: &Option<RgbImage>, b: &Option<RgbImage>| match (a, b) {
@@ -332,14 +391,6 @@ pub(crate) fn compare(
     };
     let colour = difference(&theirs.colour, &exact_colour);
     let depth = difference(&theirs.depth, &exact_depth);
-    let diagnosis = diagnose(
-        scene,
-        &view,
-        Theirs {
-            colour: theirs.colour.as_ref(),
-            depth: theirs.depth.as_ref(),
-        },
-    );
     let picture = compare.diff.as_ref().map(|_| {
         let mut rows = Vec::new();
         for (kind, theirs, exact, difference, unexplained) in [

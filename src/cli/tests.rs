@@ -213,6 +213,7 @@ fn requests_with_every_setting() -> Vec<RenderRequest> {
                 path: "theirs/depth.png".into(),
             }),
             diff: Some("out/diff.png".into()),
+            json: false,
         }),
         colour_output: Some("out/colour.png".into()),
         depth_output: Some(DepthOutput {
@@ -262,6 +263,7 @@ fn requests_with_every_setting() -> Vec<RenderRequest> {
                     path: "mine.tga".into(),
                 }),
                 diff: None,
+                json: false,
             }),
             ..full.clone()
         },

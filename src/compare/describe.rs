@@ -186,7 +186,7 @@ pub fn describe(scene: &Scene, view: &View, model: &Model) -> Vec<Deviation> {
         model.t_ramp.y - expected_ramp.y,
     );
     if tilt != DVec2::ZERO && !same2(model.t_ramp.truncate(), expected_ramp.truncate()) {
-        more.push(Deviation::Tilt { per_px: tilt });
+        more.push(Deviation::Tilt { per_unit: tilt });
     }
     if let Some(drawn_px) = model.drawn_px {
         more.push(Deviation::OnlyBlock { drawn_px });
@@ -206,7 +206,7 @@ pub fn describe(scene: &Scene, view: &View, model: &Model) -> Vec<Deviation> {
     }
     match (rule.tmin, rule.far_when_near_refused || rule.far_only) {
         (tmin, _) if tmin == f64::NEG_INFINITY => {}
-        (tmin, true) if tmin == 0.0 => words = words.with(Mistake::TminZero),
+        (0.0, true) => words = words.with(Mistake::TminZero),
         (tmin, _) if tmin == -1.0 && (!rule.far_when_near_refused || rule.far_only) => {
             words = words.with(Mistake::TminMinusOne);
         }
@@ -296,7 +296,6 @@ pub fn rebuild(view: &View, deviations: &[Deviation]) -> Model {
     );
     let mut model = Model::of_mistakes(view, words);
     let mut placement = Placement::of(&model.pixels, view);
-    let rows = placement.relative.y_axis.y.signum();
     for deviation in deviations {
         match *deviation {
             Deviation::SwappedAxes { relative } | Deviation::Axes { relative } => {
@@ -322,17 +321,14 @@ pub fn rebuild(view: &View, deviations: &[Deviation]) -> Model {
             *deviation
         {
             placement.offset_px = offset_px;
-            if words.contains(Mistake::RawUp) {
-                model.t_ramp.z = model.t_ramp.y * rows * (offset_px.y - 0.5);
-            }
         }
     }
     model.pixels = placement.map(view);
     for deviation in deviations {
         match *deviation {
-            Deviation::Tilt { per_px } => {
-                model.t_ramp.x += per_px.x;
-                model.t_ramp.y += per_px.y;
+            Deviation::Tilt { per_unit } => {
+                model.t_ramp.x += per_unit.x;
+                model.t_ramp.y += per_unit.y;
             }
             Deviation::NoDepthTest { last_wins } => {
                 model.hits.visible = if last_wins {

@@ -39,10 +39,10 @@ pub enum Deviation {
         /// The axes in course pixel steps (columns: one pixel along x, along y).
         relative: DMat2,
     },
-    /// t grows across the image: the ray origins slide along the direction.
+    /// t grows across the screen: the ray origins slide along the direction.
     Tilt {
-        /// World units of t per pixel along x and along y.
-        per_px: DVec2,
+        /// t per world unit across the screen (u) and up it (v).
+        per_unit: DVec2,
     },
     /// No depth test: spheres in file order, the first (or the last) sphere hit drawn.
     NoDepthTest {
@@ -173,6 +173,23 @@ impl Deviation {
         }
     }
 
+    /// How many numbers the statement fits (a known mistake counts one): what it claims.
+    pub fn numbers_fitted(&self) -> usize {
+        match self {
+            Self::Scaled { factor } if factor.x == factor.y => 1,
+            // A whole matrix: four numbers, and the least likely of programs.
+            Self::SwappedAxes { .. } | Self::Axes { .. } => 5,
+            Self::SampleOffset { .. }
+            | Self::CropNotCentred { .. }
+            | Self::Scaled { .. }
+            | Self::Tilt { .. }
+            | Self::OnlyBlock { .. }
+            | Self::DepthRange { .. } => 2,
+            Self::Background { .. } | Self::DepthOutside { .. } | Self::DepthNoHit { .. } => 3,
+            _ => 1,
+        }
+    }
+
     /// Whether it is about where rays start, a known mistake or a fitted value.
     pub fn is_about_geometry(&self) -> bool {
         self.is_geometric()
@@ -239,7 +256,9 @@ impl Deviation {
             Self::Scaled { factor } if factor.x == factor.y => number(factor.x, 4),
             Self::Scaled { factor } => format!("{} {}", number(factor.x, 4), number(factor.y, 4)),
             Self::SwappedAxes { relative } | Self::Axes { relative } => matrix(relative),
-            Self::Tilt { per_px } => format!("{} {}", number(per_px.x, 6), number(per_px.y, 6)),
+            Self::Tilt { per_unit } => {
+                format!("{} {}", number(per_unit.x, 4), number(per_unit.y, 4))
+            }
             Self::NoDepthTest { last_wins } => {
                 (if *last_wins { "last" } else { "first" }).to_owned()
             }
@@ -276,7 +295,7 @@ impl Deviation {
             Self::Scaled { factor } if factor.x == factor.y => vec![factor.x.into()],
             Self::Scaled { factor } => pair(*factor),
             Self::SwappedAxes { relative } | Self::Axes { relative } => matrix(relative),
-            Self::Tilt { per_px } => pair(*per_px),
+            Self::Tilt { per_unit } => pair(*per_unit),
             Self::NoDepthTest { last_wins } => {
                 vec![(if *last_wins { "last" } else { "first" }).into()]
             }
@@ -296,6 +315,12 @@ impl Deviation {
             "values": values,
             "text": self.explanation(),
         })
+    }
+
+    /// The statement as the command line prints it after `diagnosis: `: its name, values and
+    /// what it means (`zoom 1.118: each pixel steps …`).
+    pub fn said(&self) -> String {
+        format!("{}: {}", self.name_and_values(), self.explanation())
     }
 
     /// The word and its values, as one token list (`zoom 1.118`).
@@ -359,12 +384,12 @@ impl Deviation {
                 number(relative.y_axis.x, 3),
                 number(relative.y_axis.y, 3)
             ),
-            Self::Tilt { per_px } => format!(
-                "t grows by {} per pixel to the right and {} per pixel up: the ray origins \
-                 slide along the direction, so the horizontal or up vector is not \
+            Self::Tilt { per_unit } => format!(
+                "t grows by {} per unit of the screen to the right and {} per unit up: the ray \
+                 origins slide along the direction, so the horizontal or up vector is not \
                  perpendicular to it",
-                number(per_px.x, 6),
-                number(per_px.y, 6)
+                number(per_unit.x, 4),
+                number(per_unit.y, 4)
             ),
             Self::NoDepthTest { last_wins: true } => "the spheres are drawn in file order and \
                  the last one hit wins, nearer or not: keep the nearest hit (compare t before \

@@ -11,14 +11,13 @@
 //! as *partial* when they explain more than half of the differing pixels and each explains at
 //! least a tenth on its own; the pixels they leave are counted as unexplained.
 
-use glam::DVec2;
-
 use super::describe::{describe, rebuild};
-use super::deviation::{Deviation, PerImage};
+use super::deviation::Deviation;
 use super::fit::fit;
 use super::fit::score::{Scorer, Theirs, Unexplained};
 use super::mistake::{Mistake, MistakeSet};
-use super::model::{Model, Quantity};
+use super::model::Model;
+use super::needed::{NEEDED_SHARE, needed, per_image, rounded};
 use crate::render::View;
 use crate::scene::Scene;
 
@@ -27,14 +26,6 @@ const LEFT_SHARE_OF_DIFFERING: f64 = 0.1;
 
 /// Share of all compared pixels the statements may leave unexplained.
 const LEFT_SHARE_OF_ALL: f64 = 0.01;
-
-/// Share of the exact render's differing pixels each statement must explain on its own (the
-/// pixels that differ again when it is left out); one pixel at least.
-const NEEDED_SHARE: f64 = 0.01;
-
-/// Share of all compared pixels a fitted value (not a known mistake) must explain on its own,
-/// besides [`NEEDED_SHARE`] of the differing ones (or half of those, when they are fewer).
-const FITTED_SHARE_OF_ALL: f64 = 0.001;
 
 /// Another model whose pixels left are within this share of the differing pixels is a rival.
 const NEAR_SHARE: f64 = 0.01;
@@ -152,153 +143,6 @@ pub fn words_of(statements: &[Deviation]) -> MistakeSet {
     )
 }
 
-/// `statements` without those the images do not need (the cheapest to leave out first), and the
-/// pixels the rest leave.
-fn needed(
-    scorer: &mut Scorer<'_>,
-    mut statements: Vec<Deviation>,
-    differing_exact: usize,
-) -> (Vec<Deviation>, usize) {
-    let view = *scorer.view;
-    let needed_px = (NEEDED_SHARE * differing_exact as f64).max(1.0);
-    // A fitted value must also explain a share of the image itself: any value can be tuned to
-    // catch a handful of pixels.
-    let fitted_px = needed_px.max(
-        (FITTED_SHARE_OF_ALL * scorer.compared_pixels() as f64).min(0.5 * differing_exact as f64),
-    );
-    let mut left = scorer.score(&rebuild(&view, &statements));
-    loop {
-        // Each statement left out, or a fitted value replaced by the known mistake nearest it;
-        // with the pixels it must explain to stay.
-        let mut simpler: Vec<(usize, f64, Vec<Deviation>)> = Vec::new();
-        for (i, statement) in statements.iter().enumerate() {
-            let threshold = if matches!(statement, Deviation::Word(_)) {
-                needed_px
-            } else {
-                fitted_px
-            };
-            let mut without = statements.clone();
-            without.remove(i);
-            if let Some(named) = nearest_word(statement) {
-                let mut replaced = without.clone();
-                replaced.insert(i, named);
-                simpler.push((0, threshold, replaced));
-            }
-            simpler.push((1, threshold, without));
-        }
-        let cheapest = simpler
-            .into_iter()
-            .map(|(order, threshold, candidate)| {
-                let score = scorer.score(&rebuild(&view, &candidate));
-                (score, order, threshold, candidate)
-            })
-            .filter(|(score, _, threshold, _)| {
-                *score <= left || ((*score - left) as f64) < *threshold
-            })
-            .min_by_key(|(score, order, _, _)| (*score, *order));
-        match cheapest {
-            Some((score, _, _, candidate)) => {
-                statements = candidate;
-                left = score;
-            }
-            None => return (statements, left),
-        }
-    }
-}
-
-/// The known mistake a fitted statement comes nearest to, where it has one: a sample offset
-/// near a pixel's corner is `pixel-corners`.
-fn nearest_word(statement: &Deviation) -> Option<Deviation> {
-    match statement {
-        Deviation::SampleOffset { offset_px } if offset_px.abs().max_element() < 0.25 => {
-            Some(Deviation::Word(Mistake::PixelCorners))
-        }
-        _ => None,
-    }
-}
-
-/// The statements' values rounded as far as the pixels left allow.
-fn rounded(scorer: &mut Scorer<'_>, mut statements: Vec<Deviation>, left: usize) -> Vec<Deviation> {
-    let view = *scorer.view;
-    let round = |v: f64, decimals: i32| {
-        let scale = 10f64.powi(decimals);
-        (v * scale).round() / scale
-    };
-    for i in 0..statements.len() {
-        for decimals in 1..=6 {
-            let candidate = match statements[i] {
-                Deviation::SampleOffset { offset_px } => Deviation::SampleOffset {
-                    offset_px: offset_px.map(|v| round(v, decimals)),
-                },
-                Deviation::CropNotCentred { offset_px } => Deviation::CropNotCentred {
-                    offset_px: offset_px.map(|v| round(v, decimals)),
-                },
-                Deviation::Scaled { factor } => {
-                    // The same factor on both axes first (a zoom), then each its own.
-                    let mean = 0.5 * (factor.x + factor.y);
-                    let mut with = statements.clone();
-                    with[i] = Deviation::Scaled {
-                        factor: DVec2::splat(round(mean, decimals + 1)),
-                    };
-                    if factor.x != factor.y && scorer.score(&rebuild(&view, &with)) <= left {
-                        statements = with;
-                        break;
-                    }
-                    Deviation::Scaled {
-                        factor: factor.map(|v| round(v, decimals)),
-                    }
-                }
-                Deviation::Tilt { per_px } => Deviation::Tilt {
-                    per_px: per_px.map(|v| round(v, decimals + 2)),
-                },
-                _ => break,
-            };
-            let mut with = statements.clone();
-            with[i] = candidate;
-            if scorer.score(&rebuild(&view, &with)) <= left {
-                statements = with;
-                break;
-            }
-        }
-    }
-    statements
-}
-
-/// A `depth-range` statement whose ends are the nearest and farthest hits of the image at round
-/// greys (multiples of a tenth of white) is said as normalised per image.
-fn per_image(scorer: &mut Scorer<'_>, statements: &mut [Deviation], model: &Model) {
-    if model.depth.quantity != Quantity::T {
-        return;
-    }
-    let hits = scorer.hits(model);
-    let (near_t, far_t) = hits
-        .t
-        .iter()
-        .filter(|t| t.is_finite())
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &t| {
-            (lo.min(t), hi.max(t))
-        });
-    if !(near_t < far_t) {
-        return;
-    }
-    let grey = |t: f64| 255.0 * model.depth.value(t);
-    let round_grey = |g: f64| (g / 25.5 - (g / 25.5).round()).abs() * 25.5 <= 1.0;
-    for statement in statements.iter_mut() {
-        if let Deviation::DepthRange { per_image, .. } = statement {
-            let (near_grey, far_grey) = (grey(near_t), grey(far_t));
-            if round_grey(near_grey) && round_grey(far_grey) && (near_grey - far_grey).abs() > 25.0
-            {
-                *per_image = Some(PerImage {
-                    near_t,
-                    near_grey: (near_grey / 25.5).round() * 25.5,
-                    far_t,
-                    far_grey: (far_grey / 25.5).round() * 25.5,
-                });
-            }
-        }
-    }
-}
-
 /// How far the pixel map `statements` describe lies from the course's (its axes, in course
 /// pixel steps).
 fn off_course(view: &View, statements: &[Deviation]) -> f64 {
@@ -307,11 +151,27 @@ fn off_course(view: &View, statements: &[Deviation]) -> f64 {
     relative.x_axis.length() + relative.y_axis.length()
 }
 
-/// How many statements are fitted values, then how many are known mistakes: of two models
-/// that explain the images equally well, the one with the lower count is said.
+/// Whether the pixel maps `a` and `b` describe put every corner of the image within a pixel
+/// of each other: the same picture, said with other numbers.
+fn same_map(view: &View, a: &[Deviation], b: &[Deviation]) -> bool {
+    let (a, b) = (rebuild(view, a), rebuild(view, b));
+    let step = Model::step_world(view);
+    let (w, h) = (f64::from(view.width_px), f64::from(view.height_px));
+    [(0.0, 0.0), (w, 0.0), (0.0, h), (w, h)]
+        .iter()
+        .all(|&(x, y)| {
+            let corner = glam::DVec2::new(x, y);
+            (a.pixels.screen_of(corner) - b.pixels.screen_of(corner)).length() <= step
+        })
+}
+
+/// How much the statements claim — the numbers they fit, a known mistake counting one — then
+/// how many are fitted values: of two models that explain the images equally well, the one
+/// that claims less is said.
 fn complexity(statements: &[Deviation]) -> (usize, usize) {
     let words = words_of(statements).len();
-    (statements.len() - words, words)
+    let numbers: usize = statements.iter().map(Deviation::numbers_fitted).sum();
+    (numbers, statements.len() - words)
 }
 
 /// Says why `theirs` differs from the exact picture of `scene` through `view` (its depth range
@@ -364,6 +224,32 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
         (*left > fewest + needed_px, complexity(statements), *left)
     });
     let (statements, left) = options.remove(0);
+    // Where rays start as each model seen has it, with the rest of the answer: a symmetric
+    // scene's other maps are rivals of the answer itself.
+    let rest: Vec<Deviation> = statements
+        .iter()
+        .copied()
+        .filter(|s| !s.is_about_geometry())
+        .collect();
+    let mut tried: Vec<Vec<Deviation>> = Vec::new();
+    for (_, model) in seen.iter().take(MAX_RIVALS) {
+        let geometry: Vec<Deviation> = describe(scene, view, model)
+            .into_iter()
+            .filter(Deviation::is_about_geometry)
+            .collect();
+        if tried.contains(&geometry) {
+            continue;
+        }
+        tried.push(geometry.clone());
+        let option = needed(
+            &mut scorer,
+            [geometry, rest.clone()].concat(),
+            differing_exact,
+        );
+        if option.0 != statements && !options.iter().any(|(s, _)| *s == option.0) {
+            options.push(option);
+        }
+    }
     let statements = rounded(&mut scorer, statements, left);
     // Said again from the model they make: a value rounded onto a named point is its word.
     let mut statements = describe(scene, view, &rebuild(view, &statements));
@@ -382,35 +268,41 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
         // is said beside it; any other makes the answer ambiguous.
         let all_words = |s: &[Deviation]| words_of(s).len() == s.len();
         let mut alternatives = vec![statements.clone()];
+        let names = |list: &[Deviation]| {
+            let mut names: Vec<&str> = list
+                .iter()
+                .map(|d| match d {
+                    Deviation::Word(m) => m.word(),
+                    other => other.kind(),
+                })
+                .collect();
+            names.sort_unstable();
+            names
+        };
         for (rival, rival_left) in options {
             let holds_ours = statements.iter().all(|s| rival.contains(s));
             // The same statements with other values are the same answer: values are given as
             // far as the images tell them.
-            let names = |list: &[Deviation]| {
-                let mut names: Vec<&str> = list
-                    .iter()
-                    .map(|d| match d {
-                        Deviation::Word(m) => m.word(),
-                        other => other.kind(),
-                    })
-                    .collect();
-                names.sort_unstable();
-                names
-            };
             if names(&rival) == names(&statements) {
                 continue;
             }
-            // Of two maps that differ only in where rays start, the one nearer the course's is
-            // said: a symmetric scene looks the same turned, and the least change is the answer.
-            let only_geometry = rival
-                .iter()
-                .chain(&statements)
-                .filter(|s| !(rival.contains(s) && statements.contains(s)))
-                .all(Deviation::is_about_geometry);
+            // Of two maps that differ only in where rays start (the other statements the same,
+            // whatever their values), the one nearer the course's is said: a symmetric scene
+            // looks the same turned, and the least change is the answer. Nor is the same map
+            // said with more numbers an alternative.
+            let rest_names = |list: &[Deviation]| {
+                let rest: Vec<Deviation> = list
+                    .iter()
+                    .copied()
+                    .filter(|s| !s.is_about_geometry())
+                    .collect();
+                names(&rest)
+            };
             let fitted_geometry = rival.iter().any(Deviation::is_geometric);
-            if only_geometry
+            if rest_names(&rival) == rest_names(&statements)
                 && fitted_geometry
-                && off_course(view, &rival) >= off_course(view, &statements)
+                && (off_course(view, &rival) > 1.01 * off_course(view, &statements) + 1e-3
+                    || same_map(view, &rival, &statements))
             {
                 continue;
             }
@@ -429,7 +321,7 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
                 if rival_left == left && !rival.iter().any(Deviation::is_geometric) {
                     answer.same_pixels.push(rival);
                 }
-            } else {
+            } else if !alternatives.iter().any(|a| names(a) == names(&rival)) {
                 alternatives.push(rival);
             }
         }

@@ -22,6 +22,7 @@ pub mod fit;
 pub mod mistake;
 pub mod model;
 pub mod model_render;
+pub mod needed;
 pub mod picture;
 pub mod their_image;
 

@@ -1,7 +1,7 @@
 //! A model of a student's ray caster: the parameters in which real programs of the assignment
 //! differ from the course's, each with the course's value as one point. The diagnosis fits a
-//! model to their images ([`super::fit`]) and says how it differs from the course's
-//! ([`super::deviation`]); the fifteen words of [`super::mistake`] are named points of it
+//! model to their images (the `fit` module) and says how it differs from the course's (the
+//! `deviation` module); the fifteen words of [`super::mistake`] are named points of it
 //! ([`Model::of_mistakes`]).
 //!
 //! Spaces: a pixel is `(x, y_up)`, column from the left and row from the bottom, as integers;
@@ -239,7 +239,7 @@ impl DepthMap {
 pub struct Model {
     /// Where each pixel's ray starts.
     pub pixels: PixelMap,
-    /// Added to every t: world units per pixel along x and y_up, counted from the image's
+    /// Added to every t: t per world unit along the screen's u and v, counted from the camera
     /// centre (a ray origin that slides along the direction), and a constant.
     pub t_ramp: DVec3,
     /// Which roots count and which hit is drawn.
@@ -287,40 +287,33 @@ impl Model {
                 longer / f64::from(height.max(1)),
             ));
         }
-        // The program's own pixel step along its rows, before `raw-up` scales it.
-        let step_y = step * relative.y_axis.y;
         let mut ramp_along = 0.0;
+        let mut raw_up_length = 1.0;
         if mistakes.contains(Mistake::RawUp) {
             // The screen's vertical is `up` as written: its part across the direction scales v,
             // its part along the direction moves each row's ray origin along the rays.
             let direction = view.direction_world.normalize();
             ramp_along = view.up_world.dot(direction);
-            relative.y_axis *= (view.up_world - ramp_along * direction).length();
+            raw_up_length = (view.up_world - ramp_along * direction).length();
+            relative.y_axis *= raw_up_length;
         }
         if mistakes.contains(Mistake::Mirrored) {
             relative.x_axis = -relative.x_axis;
         }
-        let program_offset = if mistakes.contains(Mistake::PixelCorners) {
+        let mut offset = if mistakes.contains(Mistake::PixelCorners) {
             DVec2::ZERO
         } else {
             DVec2::splat(0.5)
         };
-        let mut offset = program_offset;
-        let mut rows = 1.0;
         if mistakes.contains(Mistake::FlippedVertically) {
             // Rows written top first: row y_up shows the program's row H − 1 − y_up.
             relative.y_axis = -relative.y_axis;
             offset.y = 1.0 - offset.y;
-            rows = -1.0;
         }
         model.pixels = PixelMap::of_relative(relative, offset, width, height, step);
-        // t from an origin moved by v_raw·(up·d) along the direction, v_raw counted in the
-        // program's own rows: −(up·d)·step_y·(row + offset − H/2).
-        model.t_ramp = DVec3::new(
-            0.0,
-            -ramp_along * step_y * rows,
-            -ramp_along * step_y * (program_offset.y - 0.5),
-        );
+        // t from an origin moved by v_raw·(up·d) along the direction, where the screen's true v
+        // is v_raw·|up across the direction|.
+        model.t_ramp = DVec3::new(0.0, -ramp_along / raw_up_length, 0.0);
         model.hits = HitRule {
             visible: Visible::Nearest,
             later_wins_ties: mistakes.contains(Mistake::LastWins),

@@ -91,11 +91,10 @@ pub struct Hits {
     pub sphere: Vec<u32>,
 }
 
-/// The t shift of the model's ramp at pixel `(x, y_up)`.
-pub fn ramp_at(model: &Model, width_px: u32, height_px: u32, x: f64, y_up: f64) -> f64 {
-    model.t_ramp.x * (x + 0.5 - 0.5 * f64::from(width_px))
-        + model.t_ramp.y * (y_up + 0.5 - 0.5 * f64::from(height_px))
-        + model.t_ramp.z
+/// The t shift of the model's tilt at screen point `screen` (the ray origin moved along the
+/// direction in proportion to its place on the screen).
+pub fn ramp_at(model: &Model, screen: DVec2) -> f64 {
+    model.t_ramp.x * screen.x + model.t_ramp.y * screen.y + model.t_ramp.z
 }
 
 /// The pixels `[x0, x1, y0, y1]` (inclusive, y up) whose screen points may lie in `disc`, or an
@@ -206,7 +205,7 @@ pub fn render_hits(scene: &Scene, view: &View, model: &Model) -> Hits {
                 }
                 let pixel = DVec2::new(f64::from(x), f64::from(y_up));
                 let screen = model.pixels.screen_of(pixel);
-                let shift = ramp_at(model, width, height, pixel.x, pixel.y);
+                let shift = ramp_at(model, screen);
                 if let Some((hit_t, index)) =
                     hit_at(model, &discs, tiles.at(x, y_up), screen, shift)
                 {
@@ -257,7 +256,7 @@ pub fn depth_quantities(view: &View, hits: &Hits, model: &Model) -> Vec<f64> {
                 let (x, row) = (index as u32 % width, index as u32 / width);
                 let pixel = DVec2::new(f64::from(x), f64::from(height - 1 - row));
                 let screen = model.pixels.screen_of(pixel);
-                let t_plane = t - ramp_at(model, width, height, pixel.x, pixel.y);
+                let t_plane = t - ramp_at(model, screen);
                 let hit = view.center_world
                     + screen.x * frame.horizontal
                     + screen.y * frame.screen_up

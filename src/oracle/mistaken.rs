@@ -2,7 +2,7 @@
 //! as such a program does it (one world-space ray per pixel from its own camera vectors, camera
 //! relative f64, against the spheres whose screen footprint can reach the pixel, binned into
 //! tiles) and sharing no code with the diagnosis's model renderer
-//! (`crate::compare::model_render`) nor the fast disc renderer: the tests make their "student"
+//! (the comparison's `model_render`) nor the fast disc renderer: the tests make their "student"
 //! images with it, so that a fit is never checked against itself; with no mistake it is a second
 //! opinion on the exact renderer.
 

@@ -100,7 +100,7 @@ pub fn load_bound_bytes(file_bytes: u64) -> u64 {
     BASELINE_BYTES + file_bytes + 2 * (file_bytes / 30) * 40
 }
 
-/// Renders the comparison's search keeps at once (`compare::diagnosis::MAX_CACHED_HITS`), and
+/// Renders the comparison's search keeps at once (`compare::fit::score::MAX_CACHED_HITS`), and
 /// the one being made.
 pub const COMPARE_HITS_HELD: u64 = 7;
 

@@ -9,6 +9,7 @@ use crate::app::compare::{
     CompareShow, CompareSource, CompareState, ImageKind, OFF_LEVELS, REFERENCE_SAMPLES,
 };
 use crate::app::dialogs::DialogKind;
+use crate::compare::deviation::Deviation;
 use crate::render::Quality;
 
 /// The button that sets the depth range to the one read back from their depth image.
@@ -153,20 +154,23 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
                     }
                 });
             }
-            let diagnosis = if pixels.diagnosis.is_empty() {
+            let diagnosis = if pixels.statements.is_empty() {
                 if matches {
                     "none needed".to_owned()
-                } else if pixels.ambiguous {
+                } else if !pixels.alternatives.is_empty() {
                     "none (several explanations fit equally)".to_owned()
                 } else if !pixels.partial.is_empty() {
-                    let words: Vec<String> =
-                        pixels.partial.iter().map(|d| d.name_and_values()).collect();
+                    let words: Vec<String> = pixels
+                        .partial
+                        .iter()
+                        .map(Deviation::name_and_values)
+                        .collect();
                     format!("in part: {}", words.join(", "))
                 } else {
                     "none (no model of a ray caster explains it)".to_owned()
                 }
             } else {
-                pixels.diagnosis.join(", ")
+                pixels.diagnosis().join(", ")
             };
             ui.label(RichText::new(format!("diagnosis: {diagnosis}")).strong());
             if !pixels.alternatives.is_empty() {

@@ -14,7 +14,7 @@ use glam::DVec3;
 
 use super::score::Scorer;
 use crate::compare::model::{DepthMap, Model, Outside, Quantity, colour_bytes};
-use crate::compare::model_render::depth_quantities;
+use crate::compare::model_render::{Hits, depth_quantities};
 use crate::render::depth_map::DepthRange;
 
 /// Fewest ramp pixels a line is fitted to.
@@ -25,6 +25,9 @@ const INLIER_LEVELS: [f64; 3] = [16.0, 4.0, 1.5];
 
 /// The steps the ends of a range are rounded to, coarsest first, as denominators.
 const STEPS_PER_UNIT: [f64; 9] = [1.0, 2.0, 4.0, 10.0, 20.0, 100.0, 1_000.0, 10_000.0, 1e6];
+
+/// Grey levels a tilt must move t by across the image to be fitted.
+const MIN_TILT_LEVELS: f64 = 4.0;
 
 /// How far an end of the range may be moved to round it, in grey levels of the range.
 const ROUNDING_LEVELS: f64 = 1.5;
@@ -43,15 +46,17 @@ fn least_squares<const N: usize>(rows: &[([f64; N], f64)]) -> Option<[f64; N]> {
     }
     for col in 0..N {
         let pivot = (col..N).max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))?;
-        if !(a[pivot][col].abs() > 1e-12) {
+        // Also false for NaN: no solution.
+        if a[pivot][col].abs().partial_cmp(&1e-12) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
         a.swap(col, pivot);
         b.swap(col, pivot);
         for row in col + 1..N {
             let factor = a[row][col] / a[col][col];
-            for k in col..N {
-                a[row][k] -= factor * a[col][k];
+            let pivot_row = a[col];
+            for (value, above) in a[row].iter_mut().zip(pivot_row).skip(col) {
+                *value -= factor * above;
             }
             b[row] -= factor * b[col];
         }
@@ -110,7 +115,6 @@ pub fn fit_depth(scorer: &mut Scorer<'_>, model: &Model) -> Model {
     };
     let view = *scorer.view;
     let hits = scorer.hits(model);
-    let (width, height) = (hits.width_px, hits.height_px);
     let half_level = if model.rounded { 0.0 } else { 0.5 };
     // Their grey ramp: pixels neither black nor white, where the model hits.
     let ramp: Vec<(usize, f64)> = theirs
@@ -123,6 +127,7 @@ pub fn fit_depth(scorer: &mut Scorer<'_>, model: &Model) -> Model {
         })
         .collect();
     let mut candidates = vec![*model];
+    let mut tilted = None;
     for quantity in QUANTITIES {
         let mut with = *model;
         with.depth.quantity = quantity;
@@ -138,41 +143,19 @@ pub fn fit_depth(scorer: &mut Scorer<'_>, model: &Model) -> Model {
             candidates.push(fitted);
         }
         if quantity == Quantity::T {
-            // A tilt: t + (ramp_x·x + ramp_y·y) from the image's centre.
-            let centre_x = 0.5 - 0.5 * f64::from(width);
-            let centre_y = 0.5 - 0.5 * f64::from(height);
-            let rows: Vec<([f64; 4], f64)> = ramp
-                .iter()
-                .map(|&(index, level)| {
-                    let (x, row) = ((index as u32 % width), (index as u32 / width));
-                    let y_up = height - 1 - row;
-                    (
-                        [
-                            1.0,
-                            q[index],
-                            f64::from(x) + centre_x,
-                            f64::from(y_up) + centre_y,
-                        ],
-                        level,
-                    )
-                })
-                .collect();
-            if let Some([a, b, cx, cy]) = robust_fit(&rows)
-                && b != 0.0
-            {
-                let mut fitted = with;
-                fitted.depth.at_zero = a / 255.0;
-                fitted.depth.per_unit = b / 255.0;
-                fitted.t_ramp = DVec3::new(
-                    model.t_ramp.x + cx / b,
-                    model.t_ramp.y + cy / b,
-                    model.t_ramp.z,
-                );
-                candidates.push(fitted);
-            }
+            tilted = tilted_fit(&hits, model, &with, &q, &ramp);
         }
     }
     let mut best = pick(scorer, &candidates, *model);
+    // A tilt only where it draws clearly more pixels right: two more numbers fit some of the
+    // noise of the grey levels.
+    if let Some(tilted) = tilted {
+        let pixels = (view.width_px as usize) * (view.height_px as usize);
+        let margin = (pixels / 1000).max(10);
+        if scorer.score(&tilted) + margin < scorer.score(&best) {
+            best = tilted;
+        }
+    }
     // The colour where nothing is hit, and values outside the range.
     let no_hit_seen = most_common_where(theirs, &hits.t, |t| t == f64::INFINITY);
     let background = colour_bytes(scorer.scene.background, best.rounded);
@@ -193,6 +176,102 @@ pub fn fit_depth(scorer: &mut Scorer<'_>, model: &Model) -> Model {
     best = pick(scorer, &more, best);
     best = round_range(scorer, best);
     snap_to_range(scorer, best)
+}
+
+/// The depth map of `with` fitted to t plus a tilt, `t + ramp_u·u + ramp_v·v` at each pixel's
+/// screen point, where the tilt moves the grey by a few levels across the image (less is the
+/// noise of the levels themselves).
+fn tilted_fit(
+    hits: &Hits,
+    model: &Model,
+    with: &Model,
+    q: &[f64],
+    ramp: &[(usize, f64)],
+) -> Option<Model> {
+    let (width, height) = (hits.width_px, hits.height_px);
+    let screen = |index: usize| {
+        let (x, row) = ((index as u32 % width), (index as u32 / width));
+        let pixel = glam::DVec2::new(f64::from(x), f64::from(height - 1 - row));
+        model.pixels.screen_of(pixel)
+    };
+    let rows: Vec<([f64; 4], f64)> = ramp
+        .iter()
+        .map(|&(index, level)| {
+            let s = screen(index);
+            ([1.0, q[index], s.x, s.y], level)
+        })
+        .collect();
+    let spread = |axis: usize| {
+        let values = ramp.iter().map(|&(index, _)| screen(index)[axis]);
+        let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        });
+        (hi - lo).max(0.0)
+    };
+    let [a, b, cx, cy] = robust_fit(&rows)?;
+    if b == 0.0 || cx.abs() * spread(0) + cy.abs() * spread(1) < MIN_TILT_LEVELS {
+        return None;
+    }
+    let mut fitted = *with;
+    fitted.depth.at_zero = a / 255.0;
+    fitted.depth.per_unit = b / 255.0;
+    fitted.t_ramp = DVec3::new(
+        model.t_ramp.x + cx / b,
+        model.t_ramp.y + cy / b,
+        model.t_ramp.z,
+    );
+    Some(fitted)
+}
+
+/// The model with the depth map of `model`, or of the range asked for, or a line fitted to t,
+/// whichever draws their depth image best: the few candidates a search over hit rules can
+/// afford for each rule it tries ([`fit_depth`] fits the rule it keeps in full).
+pub fn fit_depth_quickly(scorer: &mut Scorer<'_>, model: &Model) -> Model {
+    let Some(theirs) = scorer.theirs.depth else {
+        return *model;
+    };
+    let hits = scorer.hits(model);
+    let half_level = if model.rounded { 0.0 } else { 0.5 };
+    let ramp: Vec<(usize, f64)> = theirs
+        .pixels()
+        .enumerate()
+        .filter_map(|(index, pixel)| {
+            let [r, g, b] = pixel.0;
+            (r == g && g == b && g != 0 && g != 255 && hits.t[index].is_finite())
+                .then_some((index, f64::from(g) + half_level))
+        })
+        .collect();
+    let rows: Vec<([f64; 2], f64)> = ramp
+        .iter()
+        .map(|&(index, level)| ([1.0, hits.t[index]], level))
+        .collect();
+    let mut candidates = Vec::new();
+    let given = DepthMap::of_range(scorer.view.depth_range);
+    let line = robust_fit(&rows);
+    // The model's rules for outside and no hit, and the course's.
+    for (outside, no_hit) in [
+        (model.depth.outside, model.depth.no_hit),
+        (Outside::Clamp, [0; 3]),
+    ] {
+        let mut with_given = *model;
+        with_given.depth = DepthMap {
+            outside,
+            no_hit,
+            ..given
+        };
+        candidates.push(with_given);
+        if let Some([a, b]) = line {
+            let mut fitted = with_given;
+            fitted.depth.at_zero = a / 255.0;
+            fitted.depth.per_unit = b / 255.0;
+            candidates.push(fitted);
+        }
+        // A rule can move the hits so that the tilt fitted before no longer fits.
+        let mut with_t = with_given;
+        with_t.depth.quantity = Quantity::T;
+        candidates.extend(tilted_fit(&hits, model, &with_t, &hits.t, &ramp));
+    }
+    pick(scorer, &candidates, *model)
 }
 
 /// The candidate whose images differ from theirs in the fewest pixels (the first on a tie).
@@ -279,8 +358,25 @@ fn snap_to_range(scorer: &mut Scorer<'_>, fitted: Model) -> Model {
     }
 }
 
-/// The fitted range's ends rounded to the coarsest step that moves neither by more than the fit
-/// can tell and draws their image as well (within a pixel in 2,000 of the image).
+/// Pixels where `model`'s depth image differs from theirs by any level.
+fn levels_off(scorer: &mut Scorer<'_>, model: &Model) -> usize {
+    let Some(theirs) = scorer.theirs.depth else {
+        return 0;
+    };
+    let view = *scorer.view;
+    let hits = scorer.hits(model);
+    let drawn = crate::compare::model_render::depth_image(&view, &hits, model);
+    drawn
+        .pixels()
+        .zip(theirs.pixels())
+        .filter(|(a, b)| a != b)
+        .count()
+}
+
+/// The fitted range's ends rounded: of the steps that move neither end by more than the fit can
+/// tell, the coarsest of those that draw their image best, and only where that is as well as
+/// the fit's own ends (a range off by a tenth of a level still moves a few pixels across a
+/// level, and the course's match allows few).
 fn round_range(scorer: &mut Scorer<'_>, fitted: Model) -> Model {
     if fitted.depth.quantity != Quantity::T
         || fitted.depth == DepthMap::of_range(scorer.view.depth_range)
@@ -291,11 +387,12 @@ fn round_range(scorer: &mut Scorer<'_>, fitted: Model) -> Model {
     if !(white.is_finite() && black.is_finite()) || white == black {
         return fitted;
     }
-    let fitted_score = scorer.score(&fitted);
-    let pixels = (scorer.view.width_px as usize) * (scorer.view.height_px as usize);
-    let allowed = fitted_score + (pixels / 2000).max(1);
+    // Every step's rounding scored; the coarsest of those that draw best, the fit's own ends
+    // where none draws as well. The score lets a level go; between equals, the grey levels
+    // themselves must agree as the course's match asks (all but 0.1% of the pixels).
     let slack = ROUNDING_LEVELS * (white - black).abs() / 255.0;
     let round = |value: f64, per_unit: f64| (value * per_unit).round() / per_unit;
+    let mut scored = vec![(scorer.score(&fitted), levels_off(scorer, &fitted), fitted)];
     for per_unit in STEPS_PER_UNIT {
         let (w, b) = (round(white, per_unit), round(black, per_unit));
         if w == b || (w - white).abs() > slack || (b - black).abs() > slack {
@@ -305,9 +402,24 @@ fn round_range(scorer: &mut Scorer<'_>, fitted: Model) -> Model {
         let map = DepthMap::of_range(DepthRange::new(w, b));
         with.depth.at_zero = map.at_zero;
         with.depth.per_unit = map.per_unit;
-        if scorer.score(&with) <= allowed {
-            return with;
-        }
+        scored.push((scorer.score(&with), levels_off(scorer, &with), with));
+    }
+    let best_score = scored.iter().map(|s| s.0).min().unwrap_or(0);
+    let fewest_off = scored
+        .iter()
+        .filter(|s| s.0 == best_score)
+        .map(|s| s.1)
+        .min()
+        .unwrap_or(0);
+    let pixels = (scorer.view.width_px as usize) * (scorer.view.height_px as usize);
+    let allowed_off = fewest_off + pixels / 1000;
+    // The rounded ends from the coarsest step; the fit's own last.
+    let rounded = scored[1..]
+        .iter()
+        .chain(&scored[..1])
+        .find(|s| s.0 == best_score && s.1 <= allowed_off);
+    if let Some(&(_, _, chosen)) = rounded {
+        return chosen;
     }
     fitted
 }

@@ -24,6 +24,9 @@ const ALL_PIXELS_UP_TO: u64 = 90_000;
 /// Pixels per chunk of the sums (fixed, so that the order of addition never changes).
 const SUM_CHUNK: usize = 4096;
 
+/// Times the polish halves its steps.
+const POLISH_HALVINGS: usize = 5;
+
 /// Largest axis entry (in course steps) and translation (in image sides) a fit may reach.
 const MAX_RELATIVE_AXIS: f64 = 8.0;
 
@@ -77,12 +80,14 @@ impl Affine {
         }
     }
 
-    fn to_array(self) -> [f64; 6] {
+    /// The six numbers: `M` by columns, then `β`.
+    pub fn to_array(self) -> [f64; 6] {
         let m = self.relative.to_cols_array();
         [m[0], m[1], m[2], m[3], self.shift_px.x, self.shift_px.y]
     }
 
-    fn of_array(a: [f64; 6]) -> Self {
+    /// The parameters of six numbers ([`Self::to_array`]).
+    pub fn of_array(a: [f64; 6]) -> Self {
         Self {
             relative: DMat2::from_cols_array(&[a[0], a[1], a[2], a[3]]),
             shift_px: DVec2::new(a[4], a[5]),
@@ -162,10 +167,9 @@ impl Problem<'_> {
         if label == Label::Unknown {
             return None;
         }
-        let (width, height) = (self.labels.width_px, self.labels.height_px);
         let pixel = DVec2::new(f64::from(x), f64::from(y_up));
         let screen = model.pixels.screen_of(pixel);
-        let shift = ramp_at(model, width, height, pixel.x, pixel.y);
+        let shift = ramp_at(model, screen);
         let candidates = tiles.at(x, y_up);
         let drawn = hit_at(model, self.discs, candidates, screen, shift);
         if self.labels.agrees(label, drawn.map(|h| h.1)) {
@@ -255,6 +259,66 @@ impl Problem<'_> {
         })
     }
 
+    /// How many sampled pixels disagree with `model` under `affine`.
+    fn disagreeing_sampled(&self, model: &Model, affine: &Affine) -> usize {
+        let (width, height) = (self.labels.width_px, self.labels.height_px);
+        let mut model = *model;
+        model.pixels = affine.pixel_map(width, height, self.step);
+        let tiles = Tiles::of(&model, self.discs, width, height);
+        self.sample
+            .par_chunks(SUM_CHUNK)
+            .map(|chunk| {
+                chunk
+                    .iter()
+                    .filter(|&&(x, y_up)| {
+                        let pixel = DVec2::new(f64::from(x), f64::from(y_up));
+                        let screen = model.pixels.screen_of(pixel);
+                        let shift = ramp_at(&model, screen);
+                        let drawn = hit_at(&model, self.discs, tiles.at(x, y_up), screen, shift);
+                        !self
+                            .labels
+                            .agrees(self.labels.at(x, y_up), drawn.map(|h| h.1))
+                    })
+                    .count()
+            })
+            .sum()
+    }
+
+    /// The parameters near `start` that draw the fewest sampled pixels wrong, by a pattern search
+    /// (each number moved up and down by a step that halves when no move helps): the least
+    /// squares stop where their stand-in for the count does, a hair off it.
+    pub fn polish(&self, model: &Model, start: Affine) -> Affine {
+        let (width, height) = (self.labels.width_px, self.labels.height_px);
+        let mut best = (self.disagreeing_sampled(model, &start), start.to_array());
+        // Steps: a hundredth of the axes, half a pixel of the shift, then halving.
+        let mut steps = [0.01, 0.01, 0.01, 0.01, 0.5, 0.5];
+        for _ in 0..POLISH_HALVINGS {
+            let mut moved = true;
+            while moved && best.0 > 0 {
+                moved = false;
+                for i in 0..6 {
+                    for sign in [-1.0, 1.0] {
+                        let mut values = best.1;
+                        values[i] += sign * steps[i];
+                        let candidate = Affine::of_array(values);
+                        if !candidate.within_bounds(width, height) {
+                            continue;
+                        }
+                        let count = self.disagreeing_sampled(model, &candidate);
+                        if count < best.0 {
+                            best = (count, values);
+                            moved = true;
+                        }
+                    }
+                }
+            }
+            for step in &mut steps {
+                *step *= 0.5;
+            }
+        }
+        Affine::of_array(best.1)
+    }
+
     /// How many labelled pixels of the whole image disagree with `model` (its pixel map as is).
     pub fn disagreeing(&self, model: &Model) -> usize {
         let (width, height) = (self.labels.width_px, self.labels.height_px);
@@ -267,7 +331,7 @@ impl Problem<'_> {
                         let label = self.labels.at(x, y_up);
                         let pixel = DVec2::new(f64::from(x), f64::from(y_up));
                         let screen = model.pixels.screen_of(pixel);
-                        let shift = ramp_at(model, width, height, pixel.x, pixel.y);
+                        let shift = ramp_at(model, screen);
                         let drawn = hit_at(model, self.discs, tiles.at(x, y_up), screen, shift);
                         !self.labels.agrees(label, drawn.map(|h| h.1))
                     })

@@ -2,7 +2,7 @@
 //! and which roots it tries, the square root. These are discrete, so each choice is tried: one
 //! change at a time from the current rule, the best change kept, until none helps.
 
-use super::depth::fit_depth;
+use super::depth::fit_depth_quickly;
 use super::score::Scorer;
 use crate::compare::model::{HitRule, Model, Visible};
 
@@ -54,11 +54,14 @@ fn neighbours(rule: HitRule) -> Vec<HitRule> {
     rules
 }
 
-/// A model with `rule`, its depth map fitted again.
+/// How many of a round's rules get their depth map fitted in full.
+const FULLY_FITTED: usize = 2;
+
+/// A model with `rule`, its depth map fitted again (quickly).
 fn with_rule(scorer: &mut Scorer<'_>, model: &Model, rule: HitRule) -> Model {
     let mut with = *model;
     with.hits = rule;
-    fit_depth(scorer, &with)
+    fit_depth_quickly(scorer, &with)
 }
 
 /// The model with the hit rule that explains their images best, reached one change at a time
@@ -76,13 +79,23 @@ pub fn search_hit_rule(
         if best.0 == 0 && round > 0 {
             break;
         }
-        let mut improved = None;
+        let mut tried: Vec<(usize, Model)> = Vec::new();
         for rule in neighbours(best.1.hits) {
             let candidate = with_rule(scorer, &best.1, rule);
             let score = scorer.score(&candidate);
             seen.push((score, candidate));
+            tried.push((score, candidate));
+        }
+        // The depth map in full for the best few: a rule can need its own tilt or range before
+        // it shows what it explains.
+        tried.sort_by_key(|&(score, _)| score);
+        let mut improved: Option<(usize, Model)> = None;
+        for (_, candidate) in tried.into_iter().take(FULLY_FITTED) {
+            let fitted = super::depth::fit_depth(scorer, &candidate);
+            let score = scorer.score(&fitted);
+            seen.push((score, fitted));
             if score < improved.map_or(best.0, |(s, _)| s) {
-                improved = Some((score, candidate));
+                improved = Some((score, fitted));
             }
         }
         match improved {

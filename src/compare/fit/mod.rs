@@ -17,6 +17,7 @@ pub mod geometry;
 pub mod hit_rule;
 pub mod labels;
 pub mod score;
+pub mod starts;
 
 use glam::DVec2;
 
@@ -24,9 +25,9 @@ use self::depth::fit_depth;
 use self::geometry::{Affine, Problem};
 use self::hit_rule::search_hit_rule;
 use self::labels::Labels;
-use self::score::{Scorer, Theirs};
-use super::mistake::{Mistake, MistakeSet};
-use super::model::{Model, colour_bytes};
+use self::score::Scorer;
+use self::starts::{block_square, named_geometry, only_block, starts};
+use super::model::{Model, Visible, colour_bytes};
 use super::model_render::discs;
 
 /// Levenberg–Marquardt steps from each start before the best few are carried on.
@@ -36,7 +37,11 @@ const FIRST_STEPS: usize = 6;
 const MORE_STEPS: usize = 40;
 
 /// Starts carried on after the first steps.
-const STARTS_KEPT: usize = 3;
+const STARTS_KEPT: usize = 5;
+
+/// The place in the geometric results' order of a fitted map (named points come first on a tie,
+/// then fits, then the starts themselves).
+const FITTED: usize = usize::MAX - 1;
 
 /// Rival maps kept from one geometric fit, at most.
 const MAX_TIES: usize = 8;
@@ -55,165 +60,6 @@ pub struct Fitted {
     pub differing_exact: usize,
     /// Other models scored on the way, with their pixels left (for near ties).
     pub seen: Vec<(usize, Model)>,
-}
-
-/// The geometric named points: the course's and the mistakes that move where rays start.
-fn named_geometry(view: &crate::render::View) -> Vec<(usize, Model)> {
-    let words = [
-        Mistake::PixelCorners,
-        Mistake::Stretched,
-        Mistake::FlippedVertically,
-        Mistake::Mirrored,
-        Mistake::RawUp,
-    ];
-    let mut named: Vec<(usize, Model)> = (0u32..1 << words.len())
-        .map(|bits| {
-            let set = MistakeSet::of(
-                &words
-                    .iter()
-                    .enumerate()
-                    .filter(|(i, _)| bits & (1 << i) != 0)
-                    .map(|(_, m)| *m)
-                    .collect::<Vec<_>>(),
-            );
-            (set.len(), Model::of_mistakes(view, set))
-        })
-        .collect();
-    // A non-square image drawn only in its min(W, H) square, the whole camera square there.
-    if view.width_px != view.height_px {
-        for (complexity, offset) in [(2, 0.5), (3, 0.0)] {
-            let mut model = Model::course(view);
-            model.pixels = block_square(view, view.width_px.min(view.height_px), offset);
-            named.push((complexity, model));
-        }
-    }
-    // Rays through the far corner of each pixel, (x + 1)/W.
-    let mut far_corner = Model::course(view);
-    far_corner.pixels = crate::compare::model::PixelMap::of_relative(
-        glam::DMat2::IDENTITY,
-        DVec2::ONE,
-        view.width_px,
-        view.height_px,
-        Model::step_world(view),
-    );
-    named.push((1, far_corner));
-    // A non-square image's strips of the camera square: its side, from the square's edge.
-    let (w, h) = (view.width_px, view.height_px);
-    if w != h {
-        let strip = 0.5 * (f64::from(w) - f64::from(h)).abs();
-        for corner in [0.0, 0.5] {
-            for sign in [-1.0, 1.0] {
-                let offset = if w > h {
-                    DVec2::new(corner, corner + sign * strip)
-                } else {
-                    DVec2::new(corner + sign * strip, corner)
-                };
-                let mut model = Model::course(view);
-                model.pixels = crate::compare::model::PixelMap::of_relative(
-                    glam::DMat2::IDENTITY,
-                    offset,
-                    w,
-                    h,
-                    Model::step_world(view),
-                );
-                named.push((if corner == 0.0 { 2 } else { 1 }, model));
-            }
-        }
-    }
-    named
-}
-
-/// The map that shows the whole camera square in the lower-left `side`² block, each ray at
-/// `offset` in its pixel.
-fn block_square(
-    view: &crate::render::View,
-    side: u32,
-    offset: f64,
-) -> crate::compare::model::PixelMap {
-    let pixel = view.size_world / f64::from(side);
-    crate::compare::model::PixelMap {
-        axes_world: glam::DMat2::from_diagonal(DVec2::splat(pixel)),
-        origin_world: DVec2::splat((offset - 0.5 * f64::from(side)) * pixel),
-    }
-}
-
-/// The block `(columns, rows)` of a non-square image that is all its program drew, when the
-/// rest of their image (colour, else depth) is one flat colour.
-fn only_block(view: &crate::render::View, theirs: Theirs<'_>) -> Option<(u32, u32)> {
-    let (width, height) = (view.width_px, view.height_px);
-    let image = theirs.colour.or(theirs.depth)?;
-    if width == height {
-        return None;
-    }
-    let side = width.min(height);
-    let mut outside = image
-        .enumerate_pixels()
-        .filter(|(x, row, _)| *x >= side || height - 1 - *row >= side)
-        .map(|(_, _, pixel)| pixel.0);
-    let first = outside.next()?;
-    outside
-        .all(|colour| colour == first)
-        .then_some((side, side))
-}
-
-/// The starts of the geometric fit: the course's map, mirrored, upside down, turned, with axes
-/// swapped; for a non-square image also stretched and the square's strips.
-fn starts(width_px: u32, height_px: u32) -> Vec<Affine> {
-    let mut starts = Vec::new();
-    let signs = [(1.0, 1.0), (-1.0, 1.0), (1.0, -1.0), (-1.0, -1.0)];
-    for (sx, sy) in signs {
-        starts.push(Affine {
-            relative: glam::DMat2::from_diagonal(DVec2::new(sx, sy)),
-            shift_px: DVec2::ZERO,
-        });
-        starts.push(Affine {
-            relative: glam::DMat2::from_cols(DVec2::new(0.0, sy), DVec2::new(sx, 0.0)),
-            shift_px: DVec2::ZERO,
-        });
-    }
-    if width_px != height_px {
-        let (w, h) = (f64::from(width_px), f64::from(height_px));
-        let longer = w.max(h);
-        starts.push(Affine {
-            relative: glam::DMat2::from_diagonal(DVec2::new(longer / w, longer / h)),
-            shift_px: DVec2::ZERO,
-        });
-        let strip = 0.5 * (w - h).abs();
-        // W and H swapped in the normalisers: each axis over the other's length, the long axis
-        // from the middle of its side or from either end, the short from either end.
-        let k = longer / w.min(h);
-        for long in [-1.0, 0.0, 1.0] {
-            for short in [-1.0, 1.0] {
-                let (relative, shift_px) = if w > h {
-                    (
-                        DVec2::new(k, 1.0),
-                        DVec2::new(long * k * strip, short * strip),
-                    )
-                } else {
-                    (
-                        DVec2::new(1.0, k),
-                        DVec2::new(short * strip, long * k * strip),
-                    )
-                };
-                starts.push(Affine {
-                    relative: glam::DMat2::from_diagonal(relative),
-                    shift_px,
-                });
-            }
-        }
-        for sign in [-1.0, 1.0] {
-            let shift_px = if w > h {
-                DVec2::new(0.0, sign * strip)
-            } else {
-                DVec2::new(sign * strip, 0.0)
-            };
-            starts.push(Affine {
-                relative: glam::DMat2::IDENTITY,
-                shift_px,
-            });
-        }
-    }
-    starts
 }
 
 /// The pixel map (and, for named points, the tilt) that fits the labels best under `model`'s
@@ -260,8 +106,18 @@ fn fit_geometry(
     for (_, affine) in first.into_iter().take(STARTS_KEPT) {
         let (affine, _) = problem.fit(model, affine, MORE_STEPS);
         let fitted = with(&affine);
-        results.push((problem.disagreeing(&fitted), usize::MAX, fitted));
+        results.push((problem.disagreeing(&fitted), FITTED, fitted));
         anchors.push(fitted);
+    }
+    // The best fit polished (the least squares stop a hair off the fewest pixels wrong).
+    if let Some(best_fit) = results
+        .iter_mut()
+        .filter(|r| r.1 == FITTED)
+        .min_by_key(|r| r.0)
+    {
+        let affine = Affine::of_map(&best_fit.2.pixels, width, height, step);
+        let polished = with(&problem.polish(model, affine));
+        *best_fit = (problem.disagreeing(&polished), FITTED, polished);
     }
     // The named points near a start or a fit.
     for (complexity, point) in &named {
@@ -289,7 +145,7 @@ fn fit_geometry(
             .then(off_course(&a.2).total_cmp(&off_course(&b.2)))
     });
     // The best, but a named point within the tolerance of it before a fitted map.
-    if let Some(first_named) = results.iter().position(|r| r.1 != usize::MAX)
+    if let Some(first_named) = results.iter().position(|r| r.1 < FITTED)
         && results[first_named].0 <= results[0].0 + tolerance
     {
         let named = results.remove(first_named);
@@ -301,15 +157,64 @@ fn fit_geometry(
     // Other maps that draw the labels as well (within the tolerance) are rivals: a symmetric
     // scene, or a fitted map beside a named point.
     for (disagreeing, _, other) in results.iter().skip(1) {
+        // Maps that move no pixel centre by a thousandth of a pixel are the same map.
+        let same_map = |a: &Model, b: &Model| {
+            corners
+                .iter()
+                .all(|&c| (a.pixels.screen_of(c) - b.pixels.screen_of(c)).length() <= 1e-3 * step)
+        };
         if *disagreeing <= best + tolerance
             && ties.len() < MAX_TIES
-            && other.pixels != chosen.pixels
-            && !ties.iter().any(|t: &Model| t.pixels == other.pixels)
+            && !same_map(other, &chosen)
+            && !ties.iter().any(|t: &Model| same_map(t, other))
         {
             ties.push(*other);
         }
     }
     chosen
+}
+
+/// Whether `model`'s pixel map has no off-diagonal part (a thousandth of its largest entry).
+fn is_diagonal(model: &Model, step: f64) -> bool {
+    let m = model.pixels.relative_axes(step);
+    let largest = m.to_cols_array().iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    m.x_axis.y.abs() <= 1e-3 * largest && m.y_axis.x.abs() <= 1e-3 * largest
+}
+
+/// `model` with its pixel map moved, by a pattern search of small steps, to draw their images
+/// (colour and depth) in the fewest pixels wrong.
+fn polish_with_images(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Model {
+    let view = *scorer.view;
+    let (width, height) = (view.width_px, view.height_px);
+    let with = |values: [f64; 6]| {
+        let mut m = *model;
+        m.pixels = Affine::of_array(values).pixel_map(width, height, step);
+        m
+    };
+    let start = Affine::of_map(&model.pixels, width, height, step).to_array();
+    let mut best = (scorer.score(model), start);
+    let mut steps = [0.004, 0.004, 0.004, 0.004, 0.2, 0.2];
+    for _ in 0..3 {
+        let mut moved = true;
+        while moved && best.0 > 0 {
+            moved = false;
+            for i in 0..6 {
+                for sign in [-1.0, 1.0] {
+                    let mut values = best.1;
+                    values[i] += sign * steps[i];
+                    let score = scorer.score(&with(values));
+                    if score < best.0 {
+                        best = (score, values);
+                        moved = true;
+                    }
+                }
+            }
+        }
+        for s in &mut steps {
+            *s *= 0.5;
+        }
+    }
+    with(best.1)
 }
 
 /// The background and the rounding of bytes that draw their colour image best.
@@ -397,13 +302,24 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
                 *label = labels::Label::Unknown;
             }
         }
-        // The whole camera square in the block.
-        from.push(Affine::of_map(
+        // The whole camera square in the block, upright, mirrored or upside down.
+        let square = Affine::of_map(
             &block_square(&view, columns.min(rows), 0.5),
             view.width_px,
             view.height_px,
             step,
-        ));
+        );
+        for (sx, sy) in [(1.0, 1.0), (-1.0, 1.0), (1.0, -1.0)] {
+            let signs = glam::DMat2::from_diagonal(DVec2::new(sx, sy));
+            // Flipping an axis about the block's centre.
+            let centre = DVec2::splat(0.5 * f64::from(columns.min(rows)))
+                - 0.5 * DVec2::new(f64::from(view.width_px), f64::from(view.height_px));
+            let mirrored_centre = square.relative * centre;
+            from.push(Affine {
+                relative: square.relative * signs,
+                shift_px: square.shift_px + mirrored_centre - square.relative * signs * centre,
+            });
+        }
     }
     let mut problem = Problem {
         discs: &discs,
@@ -423,6 +339,21 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
     model = fit_geometry(&problem, &model, &from, &view, &mut ties);
     model = fit_colour(scorer, &model, seen_background, &mut seen);
     model = fit_depth(scorer, &model);
+    if scorer.theirs.depth.is_some() && scorer.score(&model) > 0 {
+        // Silhouettes that say little (a sphere filling the image): the depth ramp places the
+        // map, the range fitted again as it moves.
+        let mut moved = model;
+        for _ in 0..3 {
+            moved = polish_with_images(scorer, &moved, step);
+            moved = fit_depth(scorer, &moved);
+        }
+        // Only for clearly more pixels right: a map a hair off the silhouettes' trades with the
+        // depth line's ends on a few pixels.
+        let pixels = (view.width_px as usize) * (view.height_px as usize);
+        if scorer.score(&moved) + (pixels / 1000).max(10) < scorer.score(&model) {
+            model = moved;
+        }
+    }
     let searched = search_hit_rule(scorer, &model, RULE_ROUNDS, &mut seen);
     if searched.hits != model.hits {
         // The silhouettes again under the rule found, from where they were.
@@ -435,8 +366,35 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
         model = fit_geometry(&problem, &searched, &from, &view, &mut ties);
         model = fit_depth(scorer, &model);
         model = search_hit_rule(scorer, &model, RULE_ROUNDS, &mut seen);
+        // The map fitted again must earn its place.
+        if scorer.score(&searched) < scorer.score(&model) {
+            model = searched;
+        }
     } else {
         model = searched;
+    }
+    if scorer.score(&model) > 0 && model.hits.visible == Visible::Nearest {
+        // No depth test drags the silhouettes far from where a nearest-hit fit puts them: each
+        // file order is tried with the map fitted again under it.
+        for visible in [Visible::FirstInFile, Visible::LastInFile] {
+            let mut candidate = model;
+            candidate.hits.visible = visible;
+            candidate.hits.later_wins_ties = false;
+            // From where the map is, and from the course's.
+            let from = [
+                Affine::of_map(&model.pixels, view.width_px, view.height_px, step),
+                Affine::COURSE,
+            ];
+            let mut candidate_ties = Vec::new();
+            candidate = fit_geometry(&problem, &candidate, &from, &view, &mut candidate_ties);
+            candidate = fit_depth(scorer, &candidate);
+            let score = scorer.score(&candidate);
+            seen.push((score, candidate));
+            if score < scorer.score(&model) {
+                model = search_hit_rule(scorer, &candidate, RULE_ROUNDS, &mut seen);
+                ties = candidate_ties;
+            }
+        }
     }
     if let (None, Some(depth)) = (scorer.theirs.colour, scorer.theirs.depth) {
         // A depth image alone: black pixels where the model fitted so far draws a clear grey
@@ -455,13 +413,31 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
             0,
             Affine::of_map(&model.pixels, view.width_px, view.height_px, step),
         );
-        ties.clear();
-        model = fit_geometry(&problem, &model, &from, &view, &mut ties);
-        model = fit_depth(scorer, &model);
-        model = search_hit_rule(scorer, &model, RULE_ROUNDS, &mut seen);
+        let mut relabelled_ties = Vec::new();
+        let mut refitted = fit_geometry(&problem, &model, &from, &view, &mut relabelled_ties);
+        refitted = fit_depth(scorer, &refitted);
+        refitted = search_hit_rule(scorer, &refitted, RULE_ROUNDS, &mut seen);
+        // The map fitted again must earn its place.
+        if scorer.score(&refitted) <= scorer.score(&model) {
+            model = refitted;
+            ties = relabelled_ties;
+        }
     }
     model = fit_colour(scorer, &model, seen_background, &mut seen);
     model = fit_depth(scorer, &model);
+    if scorer.theirs.depth.is_some() {
+        // The depth range asked for, with the map moved to draw both images best: a lone
+        // sphere's size and its depth ramp trade against each other, and the silhouettes alone
+        // leave the scale a little off, which a fitted range then makes up for.
+        let mut given = model;
+        let named = crate::compare::model::DepthMap::of_range(view.depth_range);
+        given.depth.at_zero = named.at_zero;
+        given.depth.per_unit = named.per_unit;
+        if given.depth != model.depth {
+            let polished = polish_with_images(scorer, &given, step);
+            seen.push((scorer.score(&polished), polished));
+        }
+    }
     fitted.left = scorer.score(&model);
     if fitted.left > differing_exact {
         fitted.model = course;
@@ -476,6 +452,11 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
             let mut rival = fitted.model;
             rival.pixels = tie.pixels;
             rival.t_ramp = tie.t_ramp;
+            // A plain (diagonal) map beside a fitted matrix is given the same care: moved to
+            // draw both images best, as the answer's own map was.
+            if is_diagonal(&rival, step) && !is_diagonal(&fitted.model, step) {
+                rival = polish_with_images(scorer, &rival, step);
+            }
             (scorer.score(&rival), rival)
         })
         .collect();

@@ -8,8 +8,10 @@ use std::sync::Arc;
 use image::RgbImage;
 
 use crate::compare::difference::Difference;
-use crate::compare::model::{Model, Visible};
-use crate::compare::model_render::{Hits, colour_image, depth_image, render_hits};
+use rayon::prelude::*;
+
+use crate::compare::model::{Model, Quantity, Visible, colour_bytes};
+use crate::compare::model_render::{Hits, colour_image, depth_image, depth_pixel, render_hits};
 use crate::render::View;
 use crate::scene::Scene;
 
@@ -155,9 +157,54 @@ impl<'a> Scorer<'a> {
     /// than [`DEPTH_LEVELS_UNNOTICED`]).
     pub fn score(&mut self, model: &Model) -> usize {
         self.evaluated += 1;
-        let (colour, depth) = self.differences(model);
-        colour.map_or(0, |d| d.pixels_beyond(0))
-            + depth.map_or(0, |d| d.pixels_beyond(DEPTH_LEVELS_UNNOTICED))
+        let plain_depth = model.depth.quantity == Quantity::T
+            && model.depth.at_zero.is_finite()
+            && model.depth.per_unit.is_finite();
+        if !plain_depth {
+            let (colour, depth) = self.differences(model);
+            return colour.map_or(0, |d| d.pixels_beyond(0))
+                + depth.map_or(0, |d| d.pixels_beyond(DEPTH_LEVELS_UNNOTICED));
+        }
+        // Pixel by pixel, without making the images: the same count as
+        // [`Self::differences`] gives, for a depth image of t.
+        let hits = self.hits(model);
+        let scene = self.scene;
+        let colours: Vec<[u8; 3]> = scene
+            .spheres
+            .iter()
+            .map(|s| colour_bytes(scene.sphere_colour(s), model.rounded))
+            .collect();
+        let background = model
+            .background
+            .unwrap_or_else(|| colour_bytes(scene.background, model.rounded));
+        let (colour, depth) = (self.theirs.colour, self.theirs.depth);
+        let far = |a: [u8; 3], b: [u8; 3], levels: u8| (0..3).any(|c| a[c].abs_diff(b[c]) > levels);
+        (0..hits.t.len())
+            .into_par_iter()
+            .with_min_len(4096)
+            .map(|index| {
+                let (x, row) = (index as u32 % hits.width_px, index as u32 / hits.width_px);
+                let mut count = 0;
+                if let Some(colour) = colour {
+                    let drawn = colours
+                        .get(hits.sphere[index] as usize)
+                        .copied()
+                        .unwrap_or(background);
+                    count += usize::from(far(drawn, colour.get_pixel(x, row).0, 0));
+                }
+                if let Some(depth) = depth {
+                    let t = hits.t[index];
+                    let q = if t == f64::INFINITY { f64::NAN } else { t };
+                    let drawn = depth_pixel(model, q);
+                    count += usize::from(far(
+                        drawn,
+                        depth.get_pixel(x, row).0,
+                        DEPTH_LEVELS_UNNOTICED,
+                    ));
+                }
+                count
+            })
+            .sum()
     }
 
     /// Where the images of `model` differ from theirs.

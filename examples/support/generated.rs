@@ -1,0 +1,139 @@
+//! The generated corpus: seeded programs of the student caster (`student.rs`) on the course
+//! scenes, each diagnosed from its colour and depth images and judged (`judge.rs`). Shared by
+//! `tests/generated.rs` (the rules) and `examples/diagnosis_report.rs` (`docs/diagnosis.md`); the
+//! including file also includes `student.rs` as `student` and `judge.rs` as `judge`.
+
+#![allow(dead_code)]
+
+use std::path::Path;
+
+use raytracer::compare::{Deviation, Theirs, diagnose};
+use raytracer::render::View;
+use raytracer::render::depth_map::DepthRange;
+use raytracer::scene::{Scene, load_scene};
+
+use crate::judge::{Verdict, judge};
+use crate::student::{Draw, Program, draw_program, render};
+
+/// The course scenes and the depth ranges of their command lines.
+const SCENES: [(&str, f64, f64); 7] = [
+    ("scene1_01", 9.0, 10.0),
+    ("scene1_02", 8.0, 12.0),
+    ("scene1_03", 8.0, 12.0),
+    ("scene1_04", 12.0, 17.0),
+    ("scene1_05", 14.5, 19.5),
+    ("scene1_06", 3.0, 7.0),
+    ("scene1_07", -2.0, 2.0),
+];
+
+/// The image sizes drawn from.
+const SIZES: [(u32, u32); 3] = [(200, 200), (160, 90), (90, 140)];
+
+/// One generated case.
+pub(crate) struct Case {
+    pub(crate) seed: u64,
+    pub(crate) scene_name: &'static str,
+    pub(crate) scene: Scene,
+    pub(crate) width: u32,
+    pub(crate) height: u32,
+    pub(crate) range: (f64, f64),
+    pub(crate) program: Program,
+}
+
+/// The first `count` cases (seeds 0, 1, …).
+pub(crate) fn cases(count: u64) -> Vec<Case> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    (0..count)
+        .map(|seed| {
+            let mut draw = Draw::new(seed);
+            let (scene_name, dmin, dmax) = SCENES[draw.below(SCENES.len() as u64) as usize];
+            let (width, height) = SIZES[draw.below(SIZES.len() as u64) as usize];
+            let program = draw_program(&mut draw, width != height);
+            let scene =
+                load_scene(&root.join(format!("scenes/{scene_name}.txt"))).expect("a course scene");
+            Case {
+                seed,
+                scene_name,
+                scene,
+                width,
+                height,
+                range: (dmin, dmax),
+                program,
+            }
+        })
+        .collect()
+}
+
+impl Case {
+    /// The images the case's program makes.
+    pub(crate) fn images(&self) -> (image::RgbImage, image::RgbImage) {
+        render(
+            &self.program,
+            &self.scene,
+            self.width,
+            self.height,
+            self.range.0,
+            self.range.1,
+        )
+    }
+
+    /// Diagnoses the case's images: the verdict, the statements said (with values; "one of"
+    /// for a near tie), the pixels left unexplained.
+    pub(crate) fn diagnose(&self) -> (Verdict, Vec<String>, usize) {
+        let (colour, depth) = self.images();
+        let view = View::of_camera(
+            &self.scene.camera,
+            self.width,
+            self.height,
+            DepthRange::new(self.range.0, self.range.1),
+        );
+        let answer = diagnose(
+            &self.scene,
+            &view,
+            Theirs {
+                colour: Some(&colour),
+                depth: Some(&depth),
+            },
+        );
+        let names = |list: &[Deviation]| -> Vec<String> {
+            list.iter().map(|d| d.word().to_owned()).collect()
+        };
+        let stated: Vec<String> = [names(answer.stated()), names(answer.partial())].concat();
+        let alternatives: Vec<Vec<String>> =
+            answer.alternatives().iter().map(|a| names(a)).collect();
+        let pixels = 2 * u64::from(self.width) * u64::from(self.height);
+        let verdict = judge(
+            answer.differing_exact == 0,
+            &stated,
+            &alternatives,
+            answer.unexplained_pixels() as u64,
+            pixels,
+            &self.program.truth(),
+        );
+        let mut said: Vec<String> = answer
+            .stated()
+            .iter()
+            .map(Deviation::name_and_values)
+            .collect();
+        said.extend(
+            answer
+                .partial()
+                .iter()
+                .map(|d| format!("{} (in part)", d.name_and_values())),
+        );
+        if !answer.alternatives().is_empty() {
+            let sets: Vec<String> = answer
+                .alternatives()
+                .iter()
+                .map(|a| {
+                    a.iter()
+                        .map(Deviation::name_and_values)
+                        .collect::<Vec<_>>()
+                        .join(" + ")
+                })
+                .collect();
+            said.push(format!("one of: {}", sets.join(" | ")));
+        }
+        (verdict, said, answer.unexplained_pixels())
+    }
+}
