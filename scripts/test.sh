@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Runs the whole test suite on a fresh Debian/Ubuntu machine: installs the system packages the
-# viewer tests need (only those missing; needs root or sudo), then `cargo test`.
+# viewer tests need (only those missing; needs root or sudo), then `cargo test` of the library,
+# the program and the tests. The examples and benchmarks are not built here (clippy
+# --all-targets type-checks them in CI); arguments, when given, go to `cargo test` as they are.
 #   * xvfb, xauth, xdotool, imagemagick: the test that starts the real viewer window and takes a
 #     screenshot (tests/window_screenshot.rs)
 #   * mesa-vulkan-drivers, libvulkan1, libgl1-mesa-dri, libegl1: software GPU (lavapipe/llvmpipe)
@@ -26,4 +28,7 @@ if command -v dpkg >/dev/null 2>&1; then
   fi
 fi
 
+if [ $# -eq 0 ]; then
+  set -- --lib --bins --tests
+fi
 cargo test "$@"

@@ -66,12 +66,19 @@ browser_tools() {
   (cd tests/web && npm ci --no-audit --no-fund --silent)
 }
 
-# The native binary (the tests' oracle) and a dense scene of 100,000 spheres.
+# The native binary (the tests' oracle) and a dense scene of 100,000 spheres. The test takes the
+# debug build (its pixels are the release build's; CI has just built its dependencies for the
+# test suite), the report the release build, whose frame times it prints.
 native_tools() {
-  cargo build --release --bin raytracer --example generate --example viewer_frame
+  local profile=$1
+  if [ "$profile" = release ]; then
+    cargo build --release --bin raytracer --example generate --example viewer_frame
+  else
+    cargo build --bin raytracer --example generate
+  fi
   mkdir -p target/web-test
   [ -f target/web-test/dense_1e5.txt ] \
-    || target/release/examples/generate --dense 100000 target/web-test/dense_1e5.txt
+    || "target/$profile/examples/generate" --dense 100000 target/web-test/dense_1e5.txt
 }
 
 case "$command" in
@@ -87,11 +94,12 @@ case "$command" in
   test)
     build
     # The renderer in WebAssembly under Node: the native frames, bit for bit (tests/same_pixels.rs).
+    # The renderer needs no viewer: built without it, the test leaves egui's stack unbuilt.
     CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER="$PWD/$tools/bin/wasm-bindgen-test-runner" \
-      cargo test --target wasm32-unknown-unknown --test same_pixels
+      cargo test --target wasm32-unknown-unknown --no-default-features --test same_pixels
     browser_tools
-    native_tools
-    RAYTRACER_WEB_SITE=target/web RAYTRACER_BIN=target/release/raytracer \
+    native_tools debug
+    RAYTRACER_WEB_SITE=target/web RAYTRACER_BIN=target/debug/raytracer \
       RAYTRACER_SCENES=scenes RAYTRACER_DENSE_SCENE=target/web-test/dense_1e5.txt \
       RAYTRACER_CHROMIUM="$(command -v chromium)" \
       node --test --test-concurrency=1 tests/web/
@@ -99,7 +107,7 @@ case "$command" in
   report)
     build
     browser_tools
-    native_tools
+    native_tools release
     RAYTRACER_WEB_SITE=target/web RAYTRACER_SCENES=scenes \
       RAYTRACER_DENSE_SCENE=target/web-test/dense_1e5.txt \
       RAYTRACER_CHROMIUM="$(command -v chromium)" \
