@@ -2,7 +2,8 @@
 # Runs the whole test suite on a fresh Debian/Ubuntu machine: installs the system packages the
 # viewer tests need (only those missing; needs root or sudo), then `cargo test` of the library,
 # the program and the tests. The examples and benchmarks are not built here (clippy
-# --all-targets type-checks them in CI); arguments, when given, go to `cargo test` as they are.
+# --all-targets type-checks them in CI); arguments go to `cargo test`, and one that chooses
+# targets (`--test cli`, `--examples`...) replaces that default.
 #   * xvfb, xauth, xdotool, imagemagick: the test that starts the real viewer window and takes a
 #     screenshot (tests/window_screenshot.rs)
 #   * mesa-vulkan-drivers, libvulkan1, libgl1-mesa-dri, libegl1: software GPU (lavapipe/llvmpipe)
@@ -28,7 +29,14 @@ if command -v dpkg >/dev/null 2>&1; then
   fi
 fi
 
-if [ $# -eq 0 ]; then
-  set -- --lib --bins --tests
-fi
+# The default selection, unless the arguments choose targets themselves.
+selected=no
+for argument in "$@"; do
+  case "$argument" in
+    --) break ;;
+    --lib | --bin | --bin=* | --bins | --test | --test=* | --tests | --example | --example=* \
+      | --examples | --bench | --bench=* | --benches | --all-targets | --doc) selected=yes ;;
+  esac
+done
+[ "$selected" = yes ] || set -- --lib --bins --tests "$@"
 cargo test "$@"

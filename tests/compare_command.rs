@@ -384,3 +384,42 @@ fn what_cannot_be_compared_is_refused_and_their_file_is_never_written() {
         before
     );
 }
+
+/// An image of more than 250,000 pixels is fitted on a sample of its pixels (every fourth row
+/// and column) where it can be: its depth map, the candidates screened, the map polished. The
+/// answer must still be the mistakes it was made with, every pixel explained.
+#[test]
+fn a_large_depth_image_is_named_as_a_small_one_is() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene_path = path("scenes/scene1_05.txt");
+    let scene = load_scene(&scene_path).unwrap();
+    let view = View::of_camera(&scene.camera, 560, 560, DepthRange::new(14.5, 19.5));
+    let set = MistakeSet::of(&[Mistake::RawUp, Mistake::DepthReversed]);
+    let (_, depth) = render_variant(&scene, &view, set);
+    depth.save(folder.path().join("depth.png")).unwrap();
+    let scene_argument = scene_path.to_str().unwrap();
+    let output = run(
+        folder.path(),
+        &[
+            "-input",
+            scene_argument,
+            "-compare_depth",
+            "14.5",
+            "19.5",
+            "depth.png",
+        ],
+    );
+    assert_eq!(output.status.code(), Some(3), "{}", stderr(&output));
+    assert_eq!(
+        diagnosis(&output),
+        ["depth-reversed", "raw-up"],
+        "{}",
+        stdout(&output)
+    );
+    assert_eq!(
+        value(&output, "unexplained_pixels"),
+        "0",
+        "{}",
+        stdout(&output)
+    );
+}

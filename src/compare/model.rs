@@ -365,6 +365,17 @@ pub fn colour_bytes(colour: Vec3, rounded: bool) -> [u8; 3] {
 /// 256 when `wrap`.
 pub fn depth_level(value: f64, rounded: bool, wrap: bool) -> u8 {
     let scaled = value * 255.0;
+    if !rounded && !wrap {
+        // The clamped floor without calling floor (a library call on the baseline x86-64):
+        // below 0 (floor −1 or less) and up to 255 clamp; in between, truncation is the floor.
+        return if !scaled.is_finite() || scaled < 0.0 {
+            0
+        } else if scaled >= 255.0 {
+            255
+        } else {
+            scaled as u8
+        };
+    }
     let level = if rounded {
         scaled.round()
     } else {
@@ -377,5 +388,55 @@ pub fn depth_level(value: f64, rounded: bool, wrap: bool) -> u8 {
         (level as i64).rem_euclid(256) as u8
     } else {
         level.clamp(0.0, 255.0) as u8
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::depth_level;
+
+    /// The grey level of the course's depth image, as the course's code computes it: the value
+    /// times 255, floored, clamped to a byte; nothing finite is black.
+    fn course_level(value: f64) -> u8 {
+        let scaled = (value * 255.0).floor();
+        if scaled.is_nan() || scaled.is_infinite() {
+            0
+        } else {
+            scaled.clamp(0.0, 255.0) as u8
+        }
+    }
+
+    #[test]
+    fn a_truncated_level_is_the_clamped_floor_at_every_edge() {
+        let mut values = vec![
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::MAX,
+            f64::MIN,
+            -0.0,
+            0.0,
+            f64::MIN_POSITIVE,
+            -f64::MIN_POSITIVE,
+            -1.0 / 255.0,
+            -0.5 / 255.0,
+            1.0,
+            1.0 - f64::EPSILON,
+            1.0 + f64::EPSILON,
+            2.0,
+            1e300,
+        ];
+        // Every level's edges, a hair either side.
+        for level in 0..=256 {
+            let edge = f64::from(level) / 255.0;
+            values.extend([edge, edge.next_down(), edge.next_up()]);
+        }
+        for value in values {
+            assert_eq!(
+                depth_level(value, false, false),
+                course_level(value),
+                "{value:e}"
+            );
+        }
     }
 }

@@ -185,18 +185,28 @@ pub fn hit_at(
 
 /// Renders what each pixel's ray hits under `model`.
 pub fn render_hits(scene: &Scene, view: &View, model: &Model) -> Hits {
+    render_hits_every(scene, view, model, 1)
+}
+
+/// Renders what the rays of the pixels of every `stride`th row and column hit under `model`
+/// (rows and columns 0, `stride`, 2·`stride`… of the image, top row first): hits of an image
+/// `stride` times smaller in each axis.
+pub fn render_hits_every(scene: &Scene, view: &View, model: &Model, stride: u32) -> Hits {
+    let stride = stride.max(1);
     let (width, height) = (view.width_px.max(1), view.height_px.max(1));
+    let (sampled_width, sampled_height) = (width.div_ceil(stride), height.div_ceil(stride));
     let discs = discs(scene, view);
     let tiles = Tiles::of(model, &discs, width, height);
-    let pixels = (width * height) as usize;
+    let pixels = (sampled_width * sampled_height) as usize;
     let mut t = vec![f64::INFINITY; pixels];
     let mut sphere = vec![u32::MAX; pixels];
-    t.par_chunks_mut(width as usize)
-        .zip(sphere.par_chunks_mut(width as usize))
+    t.par_chunks_mut(sampled_width as usize)
+        .zip(sphere.par_chunks_mut(sampled_width as usize))
         .enumerate()
-        .for_each(|(row, (t_row, sphere_row))| {
-            let y_up = height - 1 - row as u32;
-            for x in 0..width {
+        .for_each(|(sampled_row, (t_row, sphere_row))| {
+            let y_up = height - 1 - sampled_row as u32 * stride;
+            for sampled_x in 0..sampled_width {
+                let x = sampled_x * stride;
                 if model
                     .drawn_px
                     .is_some_and(|(columns, rows)| x >= columns || y_up >= rows)
@@ -209,14 +219,14 @@ pub fn render_hits(scene: &Scene, view: &View, model: &Model) -> Hits {
                 if let Some((hit_t, index)) =
                     hit_at(model, &discs, tiles.at(x, y_up), screen, shift)
                 {
-                    t_row[x as usize] = hit_t;
-                    sphere_row[x as usize] = index;
+                    t_row[sampled_x as usize] = hit_t;
+                    sphere_row[sampled_x as usize] = index;
                 }
             }
         });
     Hits {
-        width_px: width,
-        height_px: height,
+        width_px: sampled_width,
+        height_px: sampled_height,
         t,
         sphere,
     }
@@ -241,34 +251,40 @@ pub fn colour_image(scene: &Scene, hits: &Hits, model: &Model) -> RgbImage {
     })
 }
 
+/// The quantity `model`'s depth image maps at the pixel in column `x` and row `row` (top row
+/// first) of `view`'s image, whose ray hit at `t` (NaN where no ray hits: `t` is `+∞`).
+pub fn depth_quantity(view: &View, frame: &Frame, model: &Model, t: f64, x: u32, row: u32) -> f64 {
+    if t == f64::INFINITY {
+        return f64::NAN;
+    }
+    let coordinate = |axis: u8| {
+        let pixel = DVec2::new(f64::from(x), f64::from(view.height_px.max(1) - 1 - row));
+        let screen = model.pixels.screen_of(pixel);
+        let t_plane = t - ramp_at(model, screen);
+        let hit = view.center_world
+            + screen.x * frame.horizontal
+            + screen.y * frame.screen_up
+            + t_plane * frame.direction;
+        hit[usize::from(axis.min(2))]
+    };
+    match model.depth.quantity {
+        Quantity::T => t,
+        Quantity::AbsT => t.abs(),
+        Quantity::Coordinate(axis) => coordinate(axis),
+        Quantity::AbsCoordinate(axis) => coordinate(axis).abs(),
+    }
+}
+
 /// The quantity `model`'s depth image maps, per pixel (top row first; NaN where no ray hits).
 pub fn depth_quantities(view: &View, hits: &Hits, model: &Model) -> Vec<f64> {
-    let quantity = model.depth.quantity;
     let frame = Frame::of(view);
-    let (width, height) = (hits.width_px, hits.height_px);
+    let width = hits.width_px;
     (0..hits.t.len())
+        .into_par_iter()
+        .with_min_len(4096)
         .map(|index| {
-            let t = hits.t[index];
-            if t == f64::INFINITY {
-                return f64::NAN;
-            }
-            let coordinate = |axis: u8| {
-                let (x, row) = (index as u32 % width, index as u32 / width);
-                let pixel = DVec2::new(f64::from(x), f64::from(height - 1 - row));
-                let screen = model.pixels.screen_of(pixel);
-                let t_plane = t - ramp_at(model, screen);
-                let hit = view.center_world
-                    + screen.x * frame.horizontal
-                    + screen.y * frame.screen_up
-                    + t_plane * frame.direction;
-                hit[usize::from(axis.min(2))]
-            };
-            match quantity {
-                Quantity::T => t,
-                Quantity::AbsT => t.abs(),
-                Quantity::Coordinate(axis) => coordinate(axis),
-                Quantity::AbsCoordinate(axis) => coordinate(axis).abs(),
-            }
+            let (x, row) = (index as u32 % width, index as u32 / width);
+            depth_quantity(view, &frame, model, hits.t[index], x, row)
         })
         .collect()
 }

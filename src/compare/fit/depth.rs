@@ -14,7 +14,7 @@ use glam::DVec3;
 
 use super::score::Scorer;
 use crate::compare::model::{DepthMap, Model, Outside, Quantity, colour_bytes};
-use crate::compare::model_render::{Hits, depth_quantities};
+use crate::compare::model_render::{Frame, Hits, depth_quantity};
 use crate::render::depth_map::DepthRange;
 
 /// Fewest ramp pixels a line is fitted to.
@@ -96,6 +96,30 @@ fn robust_fit<const N: usize>(rows: &[([f64; N], f64)]) -> Option<[f64; N]> {
     (held >= rows.len() / 2).then_some(fit)
 }
 
+/// Most ramp pixels a line is fitted to: a larger ramp (a large image) is sampled evenly, to
+/// bound the time of the fits.
+const MAX_RAMP_PIXELS: usize = 65_536;
+
+/// Their grey ramp: the pixels neither black nor white where the model hits, with the level
+/// each stands for (`g + ½`, or `g` where levels are rounded); at most [`MAX_RAMP_PIXELS`].
+fn ramp_pixels(theirs: &image::RgbImage, hits: &Hits, rounded: bool) -> Vec<(usize, f64)> {
+    let half_level = if rounded { 0.0 } else { 0.5 };
+    let ramp: Vec<(usize, f64)> = theirs
+        .pixels()
+        .enumerate()
+        .filter_map(|(index, pixel)| {
+            let [r, g, b] = pixel.0;
+            (r == g && g == b && g != 0 && g != 255 && hits.t[index].is_finite())
+                .then_some((index, f64::from(g) + half_level))
+        })
+        .collect();
+    if ramp.len() <= MAX_RAMP_PIXELS {
+        return ramp;
+    }
+    let every = ramp.len().div_ceil(MAX_RAMP_PIXELS);
+    ramp.into_iter().step_by(every).collect()
+}
+
 /// The quantities a depth image may map.
 const QUANTITIES: [Quantity; 8] = [
     Quantity::T,
@@ -115,26 +139,20 @@ pub fn fit_depth(scorer: &mut Scorer<'_>, model: &Model) -> Model {
     };
     let view = *scorer.view;
     let hits = scorer.hits(model);
-    let half_level = if model.rounded { 0.0 } else { 0.5 };
-    // Their grey ramp: pixels neither black nor white, where the model hits.
-    let ramp: Vec<(usize, f64)> = theirs
-        .pixels()
-        .enumerate()
-        .filter_map(|(index, pixel)| {
-            let [r, g, b] = pixel.0;
-            (r == g && g == b && g != 0 && g != 255 && hits.t[index].is_finite())
-                .then_some((index, f64::from(g) + half_level))
-        })
-        .collect();
+    let ramp = ramp_pixels(theirs, &hits, model.rounded);
     let mut candidates = vec![*model];
     let mut tilted = None;
+    let frame = Frame::of(&view);
     for quantity in QUANTITIES {
         let mut with = *model;
         with.depth.quantity = quantity;
-        let q = depth_quantities(&view, &hits, &with);
         let rows: Vec<([f64; 2], f64)> = ramp
             .iter()
-            .map(|&(index, level)| ([1.0, q[index]], level))
+            .map(|&(index, level)| {
+                let (x, row) = (index as u32 % hits.width_px, index as u32 / hits.width_px);
+                let q = depth_quantity(&view, &frame, &with, hits.t[index], x, row);
+                ([1.0, q], level)
+            })
             .collect();
         if let Some([a, b]) = robust_fit(&rows) {
             let mut fitted = with;
@@ -143,16 +161,15 @@ pub fn fit_depth(scorer: &mut Scorer<'_>, model: &Model) -> Model {
             candidates.push(fitted);
         }
         if quantity == Quantity::T {
-            tilted = tilted_fit(&hits, model, &with, &q, &ramp);
+            tilted = tilted_fit(&hits, model, &with, &ramp);
         }
     }
     let mut best = pick(scorer, &candidates, *model);
     // A tilt only where it draws clearly more pixels right: two more numbers fit some of the
     // noise of the grey levels.
     if let Some(tilted) = tilted {
-        let pixels = (view.width_px as usize) * (view.height_px as usize);
-        let margin = (pixels / 1000).max(10);
-        if scorer.score(&tilted) + margin < scorer.score(&best) {
+        let margin = (scorer.sampled_pixels() / 1000).max(10);
+        if scorer.sampled_score(&tilted) + margin < scorer.sampled_score(&best) {
             best = tilted;
         }
     }
@@ -181,13 +198,7 @@ pub fn fit_depth(scorer: &mut Scorer<'_>, model: &Model) -> Model {
 /// The depth map of `with` fitted to t plus a tilt, `t + ramp_u·u + ramp_v·v` at each pixel's
 /// screen point, where the tilt moves the grey by a few levels across the image (less is the
 /// noise of the levels themselves).
-fn tilted_fit(
-    hits: &Hits,
-    model: &Model,
-    with: &Model,
-    q: &[f64],
-    ramp: &[(usize, f64)],
-) -> Option<Model> {
+fn tilted_fit(hits: &Hits, model: &Model, with: &Model, ramp: &[(usize, f64)]) -> Option<Model> {
     let (width, height) = (hits.width_px, hits.height_px);
     let screen = |index: usize| {
         let (x, row) = ((index as u32 % width), (index as u32 / width));
@@ -198,7 +209,7 @@ fn tilted_fit(
         .iter()
         .map(|&(index, level)| {
             let s = screen(index);
-            ([1.0, q[index], s.x, s.y], level)
+            ([1.0, hits.t[index], s.x, s.y], level)
         })
         .collect();
     let spread = |axis: usize| {
@@ -231,16 +242,7 @@ pub fn fit_depth_quickly(scorer: &mut Scorer<'_>, model: &Model) -> Model {
         return *model;
     };
     let hits = scorer.hits(model);
-    let half_level = if model.rounded { 0.0 } else { 0.5 };
-    let ramp: Vec<(usize, f64)> = theirs
-        .pixels()
-        .enumerate()
-        .filter_map(|(index, pixel)| {
-            let [r, g, b] = pixel.0;
-            (r == g && g == b && g != 0 && g != 255 && hits.t[index].is_finite())
-                .then_some((index, f64::from(g) + half_level))
-        })
-        .collect();
+    let ramp = ramp_pixels(theirs, &hits, model.rounded);
     let rows: Vec<([f64; 2], f64)> = ramp
         .iter()
         .map(|&(index, level)| ([1.0, hits.t[index]], level))
@@ -269,21 +271,19 @@ pub fn fit_depth_quickly(scorer: &mut Scorer<'_>, model: &Model) -> Model {
         // A rule can move the hits so that the tilt fitted before no longer fits.
         let mut with_t = with_given;
         with_t.depth.quantity = Quantity::T;
-        candidates.extend(tilted_fit(&hits, model, &with_t, &hits.t, &ramp));
+        candidates.extend(tilted_fit(&hits, model, &with_t, &ramp));
     }
     pick(scorer, &candidates, *model)
 }
 
 /// The candidate whose images differ from theirs in the fewest pixels (the first on a tie).
 fn pick(scorer: &mut Scorer<'_>, candidates: &[Model], first: Model) -> Model {
-    let mut best = (scorer.score(&first), first);
-    for candidate in candidates {
-        let score = scorer.score(candidate);
-        if score < best.0 {
-            best = (score, *candidate);
-        }
-    }
-    best.1
+    let all: Vec<Model> = std::iter::once(first)
+        .chain(candidates.iter().copied())
+        .collect();
+    scorer
+        .sampled_best_of(&all)
+        .map_or(first, |(index, _)| all[index])
 }
 
 /// The most common colour of `image` among pixels whose t satisfies `keep`.
@@ -343,34 +343,21 @@ fn snap_to_range(scorer: &mut Scorer<'_>, fitted: Model) -> Model {
             }
         }
     }
-    let fitted_score = scorer.score(&fitted);
+    let fitted_score = scorer.sampled_score(&fitted);
     // The named map that draws best (the first on a tie), where it draws as well as the fit.
-    let mut best: Option<(usize, Model)> = None;
-    for candidate in candidates {
-        let score = scorer.score(&candidate);
-        if best.as_ref().is_none_or(|(s, _)| score < *s) {
-            best = Some((score, candidate));
-        }
-    }
-    match best {
-        Some((score, candidate)) if score <= fitted_score => candidate,
+    match scorer.sampled_best_of(&candidates) {
+        Some((index, score)) if score <= fitted_score => candidates[index],
         _ => fitted,
     }
 }
 
-/// Pixels where `model`'s depth image differs from theirs by any level.
+/// Pixels of the sample ([`Scorer::samples`]) where `model`'s depth image differs from theirs by
+/// any level.
 fn levels_off(scorer: &mut Scorer<'_>, model: &Model) -> usize {
-    let Some(theirs) = scorer.theirs.depth else {
+    if scorer.theirs.depth.is_none() {
         return 0;
-    };
-    let view = *scorer.view;
-    let hits = scorer.hits(model);
-    let drawn = crate::compare::model_render::depth_image(&view, &hits, model);
-    drawn
-        .pixels()
-        .zip(theirs.pixels())
-        .filter(|(a, b)| a != b)
-        .count()
+    }
+    scorer.sampled_depth_levels_off(model)
 }
 
 /// The fitted range's ends rounded: of the steps that move neither end by more than the fit can
@@ -392,7 +379,7 @@ fn round_range(scorer: &mut Scorer<'_>, fitted: Model) -> Model {
     // themselves must agree as the course's match asks (all but 0.1% of the pixels).
     let slack = ROUNDING_LEVELS * (white - black).abs() / 255.0;
     let round = |value: f64, per_unit: f64| (value * per_unit).round() / per_unit;
-    let mut scored = vec![(scorer.score(&fitted), levels_off(scorer, &fitted), fitted)];
+    let mut candidates = vec![fitted];
     for per_unit in STEPS_PER_UNIT {
         let (w, b) = (round(white, per_unit), round(black, per_unit));
         if w == b || (w - white).abs() > slack || (b - black).abs() > slack {
@@ -402,17 +389,33 @@ fn round_range(scorer: &mut Scorer<'_>, fitted: Model) -> Model {
         let map = DepthMap::of_range(DepthRange::new(w, b));
         with.depth.at_zero = map.at_zero;
         with.depth.per_unit = map.per_unit;
-        scored.push((scorer.score(&with), levels_off(scorer, &with), with));
+        candidates.push(with);
     }
-    let best_score = scored.iter().map(|s| s.0).min().unwrap_or(0);
+    let scores: Vec<usize> = candidates
+        .iter()
+        .map(|candidate| scorer.sampled_score(candidate))
+        .collect();
+    let best_score = scores.iter().copied().min().unwrap_or(0);
+    // The levels counted only where the score is the best (nowhere else are they compared).
+    let scored: Vec<(usize, usize, Model)> = candidates
+        .iter()
+        .zip(scores)
+        .map(|(candidate, score)| {
+            let off = if score == best_score {
+                levels_off(scorer, candidate)
+            } else {
+                usize::MAX
+            };
+            (score, off, *candidate)
+        })
+        .collect();
     let fewest_off = scored
         .iter()
         .filter(|s| s.0 == best_score)
         .map(|s| s.1)
         .min()
         .unwrap_or(0);
-    let pixels = (scorer.view.width_px as usize) * (scorer.view.height_px as usize);
-    let allowed_off = fewest_off + pixels / 1000;
+    let allowed_off = fewest_off + scorer.sampled_pixels() / 1000;
     // The rounded ends from the coarsest step; the fit's own last.
     let rounded = scored[1..]
         .iter()

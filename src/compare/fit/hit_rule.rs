@@ -79,12 +79,18 @@ pub fn search_hit_rule(
         if best.0 == 0 && round > 0 {
             break;
         }
+        // Each rule scored (on a large image, those far behind on a sample are left out).
+        let candidates: Vec<Model> = neighbours(best.1.hits)
+            .into_iter()
+            .map(|rule| with_rule(scorer, &best.1, rule))
+            .collect();
+        let scores = scorer.scores_of(&candidates);
         let mut tried: Vec<(usize, Model)> = Vec::new();
-        for rule in neighbours(best.1.hits) {
-            let candidate = with_rule(scorer, &best.1, rule);
-            let score = scorer.score(&candidate);
-            seen.push((score, candidate));
-            tried.push((score, candidate));
+        for (candidate, score) in candidates.into_iter().zip(scores) {
+            if let Some(score) = score {
+                seen.push((score, candidate));
+                tried.push((score, candidate));
+            }
         }
         // The depth map in full for the best few: a rule can need its own tilt or range before
         // it shows what it explains.

@@ -182,8 +182,19 @@ fn is_diagonal(model: &Model, step: f64) -> bool {
 }
 
 /// `model` with its pixel map moved, by a pattern search of small steps, to draw their images
-/// (colour and depth) in the fewest pixels wrong.
+/// (colour and depth) in the fewest pixels wrong. On a large image the search counts a sample
+/// of the pixels ([`Scorer::sampled_score`]), and the map found is kept only where it draws
+/// every pixel as well as `model`'s.
 fn polish_with_images(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Model {
+    let polished = polish_on(scorer, model, step);
+    if scorer.samples() && scorer.score(&polished) > scorer.score(model) {
+        return *model;
+    }
+    polished
+}
+
+/// The pattern search of [`polish_with_images`], on [`Scorer::sampled_score`].
+fn polish_on(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Model {
     let view = *scorer.view;
     let (width, height) = (view.width_px, view.height_px);
     let with = |values: [f64; 6]| {
@@ -192,7 +203,7 @@ fn polish_with_images(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Mode
         m
     };
     let start = Affine::of_map(&model.pixels, width, height, step).to_array();
-    let mut best = (scorer.score(model), start);
+    let mut best = (scorer.sampled_score(model), start);
     let mut steps = [0.004, 0.004, 0.004, 0.004, 0.2, 0.2];
     for _ in 0..3 {
         let mut moved = true;
@@ -202,7 +213,7 @@ fn polish_with_images(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Mode
                 for sign in [-1.0, 1.0] {
                     let mut values = best.1;
                     values[i] += sign * steps[i];
-                    let score = scorer.score(&with(values));
+                    let score = scorer.sampled_score(&with(values));
                     if score < best.0 {
                         best = (score, values);
                         moved = true;

@@ -10,8 +10,10 @@ use image::RgbImage;
 use crate::compare::difference::Difference;
 use rayon::prelude::*;
 
-use crate::compare::model::{Model, Quantity, Visible, colour_bytes};
-use crate::compare::model_render::{Hits, colour_image, depth_image, depth_pixel, render_hits};
+use crate::compare::model::{Model, Visible, colour_bytes};
+use crate::compare::model_render::{
+    Frame, Hits, colour_image, depth_image, depth_pixel, depth_quantity, render_hits_every,
+};
 use crate::render::View;
 use crate::scene::Scene;
 
@@ -21,6 +23,16 @@ pub const DEPTH_LEVELS_UNNOTICED: u8 = 1;
 /// Renders of hits the scorer keeps at once; [`crate::render::memory::compare_bound_bytes`]
 /// counts them.
 pub const MAX_CACHED_HITS: usize = 6;
+
+/// Pixels of an image above which candidates are screened, and maps polished, on a sample of
+/// its pixels first ([`Scorer::samples`]).
+pub const SAMPLED_ABOVE_PX: usize = 250_000;
+
+/// The sample's stride in both axes, pixels.
+pub const SAMPLE_STRIDE_PX: u32 = 4;
+
+/// Sampled pixels a candidate may differ in beyond twice the best and still be counted in full.
+pub const SCREEN_SLACK_PX: usize = 64;
 
 /// The images to explain (at least one), the size of the view.
 #[derive(Debug, Clone, Copy)]
@@ -104,8 +116,8 @@ pub struct Scorer<'a> {
     pub view: &'a View,
     /// Their images.
     pub theirs: Theirs<'a>,
-    hits: HashMap<HitKey, Arc<Hits>>,
-    order: Vec<HitKey>,
+    hits: HashMap<(HitKey, u32), Arc<Hits>>,
+    order: Vec<(HitKey, u32)>,
     /// Models scored so far.
     pub evaluated: usize,
 }
@@ -125,7 +137,13 @@ impl<'a> Scorer<'a> {
 
     /// The hits of `model`, rendered once while kept.
     pub fn hits(&mut self, model: &Model) -> Arc<Hits> {
-        let key = hit_key(model);
+        self.hits_every(model, 1)
+    }
+
+    /// The hits of `model` at the pixels of every `stride`th row and column, rendered once while
+    /// kept.
+    fn hits_every(&mut self, model: &Model, stride: u32) -> Arc<Hits> {
+        let key = (hit_key(model), stride);
         if let Some(hits) = self.hits.get(&key) {
             return Arc::clone(hits);
         }
@@ -133,10 +151,53 @@ impl<'a> Scorer<'a> {
             let oldest = self.order.remove(0);
             self.hits.remove(&oldest);
         }
-        let hits = Arc::new(render_hits(self.scene, self.view, model));
+        let hits = Arc::new(render_hits_every(self.scene, self.view, model, stride));
         self.hits.insert(key, Arc::clone(&hits));
         self.order.push(key);
         hits
+    }
+
+    /// Whether an image of this view is large enough ([`SAMPLED_ABOVE_PX`]) that its depth map
+    /// is fitted, candidates screened and a map polished on a sample of its pixels: every
+    /// [`SAMPLE_STRIDE_PX`]th row and column.
+    pub fn samples(&self) -> bool {
+        (self.view.width_px as usize) * (self.view.height_px as usize) > SAMPLED_ABOVE_PX
+    }
+
+    /// The stride of the sample: [`SAMPLE_STRIDE_PX`] where [`Self::samples`], else 1.
+    fn stride(&self) -> u32 {
+        if self.samples() { SAMPLE_STRIDE_PX } else { 1 }
+    }
+
+    /// The pixels of one image in the sample (all of them where the image is not sampled).
+    pub fn sampled_pixels(&self) -> usize {
+        let stride = self.stride();
+        (self.view.width_px.div_ceil(stride) as usize)
+            * (self.view.height_px.div_ceil(stride) as usize)
+    }
+
+    /// [`Self::score`] on the sample of pixels ([`Self::samples`]; every pixel of an image
+    /// that is not sampled).
+    pub fn sampled_score(&mut self, model: &Model) -> usize {
+        self.count(model, self.stride())
+    }
+
+    /// Of `candidates`, the index of the first with the fewest pixels of the sample differing
+    /// ([`Self::sampled_score`]), with that count.
+    pub fn sampled_best_of(&mut self, candidates: &[Model]) -> Option<(usize, usize)> {
+        let mut best: Option<(usize, usize)> = None;
+        for (index, candidate) in candidates.iter().enumerate() {
+            let score = self.sampled_score(candidate);
+            if best.is_none_or(|(_, s)| score < s) {
+                best = Some((index, score));
+            }
+        }
+        best
+    }
+
+    /// [`Self::depth_levels_off`] on the sample of pixels.
+    pub fn sampled_depth_levels_off(&mut self, model: &Model) -> usize {
+        self.count_beyond(model, self.stride(), false, 0)
     }
 
     /// How the images of `model` differ from theirs (colour, depth).
@@ -157,17 +218,79 @@ impl<'a> Scorer<'a> {
     /// than [`DEPTH_LEVELS_UNNOTICED`]).
     pub fn score(&mut self, model: &Model) -> usize {
         self.evaluated += 1;
-        let plain_depth = model.depth.quantity == Quantity::T
-            && model.depth.at_zero.is_finite()
-            && model.depth.per_unit.is_finite();
-        if !plain_depth {
-            let (colour, depth) = self.differences(model);
-            return colour.map_or(0, |d| d.pixels_beyond(0))
-                + depth.map_or(0, |d| d.pixels_beyond(DEPTH_LEVELS_UNNOTICED));
+        self.count(model, 1)
+    }
+
+    /// The score of each of `candidates`, or `None` for one screened out: on an image of more
+    /// than [`SAMPLED_ABOVE_PX`] pixels each candidate is first counted on a sample (every
+    /// [`SAMPLE_STRIDE_PX`]th row and column), and only those within twice the best sample's
+    /// count (and [`SCREEN_SLACK_PX`]) are scored in full: one left out would differ in about
+    /// twice as many pixels as the best.
+    pub fn scores_of(&mut self, candidates: &[Model]) -> Vec<Option<usize>> {
+        let kept: Vec<bool> = if self.samples() && candidates.len() > 1 {
+            let sampled: Vec<usize> = candidates
+                .iter()
+                .map(|candidate| self.count(candidate, SAMPLE_STRIDE_PX))
+                .collect();
+            let best = sampled.iter().copied().min().unwrap_or(0);
+            sampled
+                .iter()
+                .map(|&count| count <= 2 * best + SCREEN_SLACK_PX)
+                .collect()
+        } else {
+            vec![true; candidates.len()]
+        };
+        candidates
+            .iter()
+            .zip(kept)
+            .map(|(candidate, kept)| kept.then(|| self.score(candidate)))
+            .collect()
+    }
+
+    /// [`Self::score`] over the pixels of every `stride`th row and column (all at 1).
+    fn count(&mut self, model: &Model, stride: u32) -> usize {
+        self.count_beyond(model, stride, true, DEPTH_LEVELS_UNNOTICED)
+    }
+
+    /// The pixels of every `stride`th row and column where the images of `model` differ from
+    /// theirs: the colour image (where `with_colour`) by any level, the depth image by more than
+    /// `depth_levels`.
+    fn count_beyond(
+        &mut self,
+        model: &Model,
+        stride: u32,
+        with_colour: bool,
+        depth_levels: u8,
+    ) -> usize {
+        let colour = self
+            .theirs
+            .colour
+            .filter(|_| with_colour)
+            .map(|image| image.as_raw().as_slice());
+        let depth = self.theirs.depth.map(|image| image.as_raw().as_slice());
+        let width = self.view.width_px as usize;
+        let stride = stride.max(1) as usize;
+        // A map of finite ends, counted pixel by pixel; a zero-width range through the images.
+        if !(model.depth.at_zero.is_finite() && model.depth.per_unit.is_finite()) {
+            let (colour_difference, depth_difference) = self.differences(model);
+            let sampled = |index: usize| {
+                (index % width).is_multiple_of(stride) && (index / width).is_multiple_of(stride)
+            };
+            let beyond = |difference: Option<Difference>, levels: u8| {
+                difference.map_or(0, |d| {
+                    d.per_pixel
+                        .iter()
+                        .enumerate()
+                        .filter(|&(index, &level)| level > levels && sampled(index))
+                        .count()
+                })
+            };
+            return beyond(colour_difference.filter(|_| with_colour), 0)
+                + beyond(depth_difference, depth_levels);
         }
         // Pixel by pixel, without making the images: the same count as
-        // [`Self::differences`] gives, for a depth image of t.
-        let hits = self.hits(model);
+        // [`Self::differences`] gives.
+        let hits = self.hits_every(model, stride as u32);
         let scene = self.scene;
         let colours: Vec<[u8; 3]> = scene
             .spheres
@@ -177,32 +300,41 @@ impl<'a> Scorer<'a> {
         let background = model
             .background
             .unwrap_or_else(|| colour_bytes(scene.background, model.rounded));
-        let (colour, depth) = (self.theirs.colour, self.theirs.depth);
-        let far = |a: [u8; 3], b: [u8; 3], levels: u8| (0..3).any(|c| a[c].abs_diff(b[c]) > levels);
-        (0..hits.t.len())
+        let (view, frame) = (self.view, Frame::of(self.view));
+        let far = |a: [u8; 3], b: &[u8], levels: u8| (0..3).any(|c| a[c].abs_diff(b[c]) > levels);
+        // `sampled`: the index in the hits; (`x`, `row`): the pixel in their images.
+        let pixel = |sampled: usize, x: usize, row: usize| {
+            let index = row * width + x;
+            let mut count = 0;
+            if let Some(colour) = colour {
+                let drawn = colours
+                    .get(hits.sphere[sampled] as usize)
+                    .copied()
+                    .unwrap_or(background);
+                count += usize::from(far(drawn, &colour[3 * index..3 * index + 3], 0));
+            }
+            if let Some(depth) = depth {
+                let t = hits.t[sampled];
+                let q = depth_quantity(view, &frame, model, t, x as u32, row as u32);
+                let drawn = depth_pixel(model, q);
+                count += usize::from(far(drawn, &depth[3 * index..3 * index + 3], depth_levels));
+            }
+            count
+        };
+        let sampled_width = hits.width_px as usize;
+        (0..hits.height_px as usize)
             .into_par_iter()
-            .with_min_len(4096)
-            .map(|index| {
-                let (x, row) = (index as u32 % hits.width_px, index as u32 / hits.width_px);
-                let mut count = 0;
-                if let Some(colour) = colour {
-                    let drawn = colours
-                        .get(hits.sphere[index] as usize)
-                        .copied()
-                        .unwrap_or(background);
-                    count += usize::from(far(drawn, colour.get_pixel(x, row).0, 0));
-                }
-                if let Some(depth) = depth {
-                    let t = hits.t[index];
-                    let q = if t == f64::INFINITY { f64::NAN } else { t };
-                    let drawn = depth_pixel(model, q);
-                    count += usize::from(far(
-                        drawn,
-                        depth.get_pixel(x, row).0,
-                        DEPTH_LEVELS_UNNOTICED,
-                    ));
-                }
-                count
+            .with_min_len((4096 / sampled_width).max(1))
+            .map(|sampled_row| {
+                (0..sampled_width)
+                    .map(|sampled_x| {
+                        pixel(
+                            sampled_row * sampled_width + sampled_x,
+                            sampled_x * stride,
+                            sampled_row * stride,
+                        )
+                    })
+                    .sum::<usize>()
             })
             .sum()
     }
