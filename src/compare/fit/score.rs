@@ -195,7 +195,8 @@ impl<'a> Scorer<'a> {
         best
     }
 
-    /// [`Self::depth_levels_off`] on the sample of pixels.
+    /// The pixels of the sample ([`Self::samples`]) where `model`'s depth image differs from
+    /// theirs by any level.
     pub fn sampled_depth_levels_off(&mut self, model: &Model) -> usize {
         self.count_beyond(model, self.stride(), false, 0)
     }
@@ -230,7 +231,7 @@ impl<'a> Scorer<'a> {
         let kept: Vec<bool> = if self.samples() && candidates.len() > 1 {
             let sampled: Vec<usize> = candidates
                 .iter()
-                .map(|candidate| self.count(candidate, SAMPLE_STRIDE_PX))
+                .map(|candidate| self.sampled_score(candidate))
                 .collect();
             let best = sampled.iter().copied().min().unwrap_or(0);
             sampled
