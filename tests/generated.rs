@@ -21,6 +21,13 @@ use judge::Verdict;
 /// Cases the test diagnoses (the report diagnoses more, in a release build).
 const CASES: u64 = 60;
 
+/// Cases of the report's 300 the diagnosis once read wrongly or left unexplained, diagnosed too:
+/// a tilt standing in for a sample a twentieth of a pixel off (298), a square block read with a
+/// tilt (226), a flip of a scene that looks the same turned a quarter with its tilt not fitted
+/// again (270), spheres around the ray origins refused, fitted as a skewed map (280), a lone
+/// sphere's far root (170).
+const ONCE_MISREAD: [u64; 5] = [170, 226, 270, 280, 298];
+
 #[test]
 fn the_student_caster_with_no_knob_turned_draws_the_exact_images() {
     for case in generated::cases(21) {
@@ -61,7 +68,10 @@ fn the_student_caster_with_no_knob_turned_draws_the_exact_images() {
 fn generated_programs_get_no_false_statement_and_are_explained() {
     let mut wrong = Vec::new();
     let (mut differing, mut explained) = (0, 0);
-    for case in generated::cases(CASES) {
+    let cases = generated::cases(300)
+        .into_iter()
+        .filter(|case| case.seed < CASES || ONCE_MISREAD.contains(&case.seed));
+    for case in cases {
         let (verdict, said, left) = case.diagnose();
         match verdict {
             Verdict::Wrong => wrong.push(format!(

@@ -134,6 +134,16 @@ const QUANTITIES: [Quantity; 8] = [
 
 /// The model with the depth map (and, with t, the tilt) that draws their depth image best.
 pub fn fit_depth(scorer: &mut Scorer<'_>, model: &Model) -> Model {
+    fit_depth_tilted_or_not(scorer, model, true)
+}
+
+/// [`fit_depth`] with the model's tilt kept as it is (no tilt fitted).
+pub fn fit_depth_untilted(scorer: &mut Scorer<'_>, model: &Model) -> Model {
+    fit_depth_tilted_or_not(scorer, model, false)
+}
+
+/// [`fit_depth`], with a tilt fitted or not.
+fn fit_depth_tilted_or_not(scorer: &mut Scorer<'_>, model: &Model, tilt: bool) -> Model {
     let Some(theirs) = scorer.theirs.depth else {
         return *model;
     };
@@ -160,7 +170,7 @@ pub fn fit_depth(scorer: &mut Scorer<'_>, model: &Model) -> Model {
             fitted.depth.per_unit = b / 255.0;
             candidates.push(fitted);
         }
-        if quantity == Quantity::T {
+        if tilt && quantity == Quantity::T {
             tilted = tilted_fit(&hits, model, &with, &ramp);
         }
     }

@@ -21,7 +21,7 @@ pub mod starts;
 
 use glam::DVec2;
 
-use self::depth::fit_depth;
+use self::depth::{fit_depth, fit_depth_untilted};
 use self::geometry::{Affine, Problem};
 use self::hit_rule::search_hit_rule;
 use self::labels::Labels;
@@ -45,6 +45,20 @@ const FITTED: usize = usize::MAX - 1;
 
 /// Rival maps kept from one geometric fit, at most.
 const MAX_TIES: usize = 8;
+
+/// Rounds of the pattern search that moves the pixel map on the images, each with steps half
+/// the last: the shift's last step is 0.2 / 2⁵ of a pixel.
+const POLISH_ROUNDS: usize = 6;
+
+/// Of [`POLISH_ROUNDS`], those that move the whole map (the matrix's last step is 0.0005 of
+/// its entries); the rest move only the shift.
+const WHOLE_MAP_ROUNDS: usize = 3;
+
+/// Grey levels across the image beyond which a tilt is not tried without
+/// ([`untilted_if_as_good`]): a tilt standing in for a sample a fraction of a pixel off moves
+/// the depth by a few levels across the image (about 16 for the generated corpus's program 298),
+/// a camera basis that is not orthogonal by hundreds.
+const SMALL_TILT_LEVELS: f64 = 64.0;
 
 /// Rounds of the hit rule's search.
 const RULE_ROUNDS: usize = 3;
@@ -205,11 +219,13 @@ fn polish_on(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Model {
     let start = Affine::of_map(&model.pixels, width, height, step).to_array();
     let mut best = (scorer.sampled_score(model), start);
     let mut steps = [0.004, 0.004, 0.004, 0.004, 0.2, 0.2];
-    for _ in 0..3 {
+    for round in 0..POLISH_ROUNDS {
+        // The whole map in the first rounds; then only where it starts, finer.
+        let parameters = if round < WHOLE_MAP_ROUNDS { 0..6 } else { 4..6 };
         let mut moved = true;
         while moved && best.0 > 0 {
             moved = false;
-            for i in 0..6 {
+            for i in parameters.clone() {
                 for sign in [-1.0, 1.0] {
                     let mut values = best.1;
                     values[i] += sign * steps[i];
@@ -226,6 +242,57 @@ fn polish_on(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Model {
         }
     }
     with(best.1)
+}
+
+/// `model` with its pixel map's axes swapped (a map turned a quarter is diagonal so).
+fn turned_a_quarter(model: &Model) -> Model {
+    let mut turned = *model;
+    let axes = model.pixels.axes_world;
+    turned.pixels.axes_world = glam::DMat2::from_cols(axes.y_axis, axes.x_axis);
+    turned
+}
+
+/// Whether `model`'s pixel map and tilt are the course's or those of a known mistake.
+fn is_named_map(view: &crate::render::View, model: &Model) -> bool {
+    named_geometry(view)
+        .iter()
+        .any(|(_, point)| point.pixels == model.pixels && point.t_ramp == model.t_ramp)
+}
+
+/// `model` without its tilt where the map, moved on the images without it, draws them nearly as
+/// well (within a thousandth of the pixels compared): a sample a fraction of a pixel off moves
+/// each depth by a little, which a tilt of a few grey levels can stand in for.
+fn untilted_if_as_good(scorer: &mut Scorer<'_>, model: Model, step: f64) -> Model {
+    if model.t_ramp == glam::DVec3::ZERO || scorer.theirs.depth.is_none() {
+        return model;
+    }
+    // A named point's tilt (the up vector as written) is a word of its own; a tilt of many
+    // levels is more than a sample a fraction of a pixel off can stand in for.
+    let view = *scorer.view;
+    let corner = |x: u32, y: u32| {
+        model
+            .pixels
+            .screen_of(DVec2::new(f64::from(x), f64::from(y)))
+    };
+    let extent = (corner(view.width_px, view.height_px) - corner(0, 0)).abs();
+    let levels = (model.t_ramp.x.abs() * extent.x + model.t_ramp.y.abs() * extent.y)
+        * model.depth.per_unit.abs()
+        * 255.0;
+    if is_named_map(&view, &model) || levels > SMALL_TILT_LEVELS {
+        return model;
+    }
+    let mut untilted = model;
+    untilted.t_ramp = glam::DVec3::ZERO;
+    for _ in 0..2 {
+        untilted = polish_with_images(scorer, &untilted, step);
+        untilted = fit_depth_untilted(scorer, &untilted);
+    }
+    let margin = (scorer.compared_pixels() / 1000).max(10);
+    if scorer.score(&untilted) <= scorer.score(&model) + margin {
+        untilted
+    } else {
+        model
+    }
 }
 
 /// The background and the rounding of bytes that draw their colour image best.
@@ -365,6 +432,21 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
             model = moved;
         }
     }
+    // A hit rule that draws their images from the course's own map: a sphere refused shows
+    // what lies behind it, which the silhouettes' fit under the course's rule may explain by a
+    // map turned or skewed (no known mistake's, none diagonal, none a quarter turn from it).
+    // Kept aside, and taken at the end where it draws their images better than the fit that
+    // follows.
+    let at_course = (scorer.score(&model) > 0
+        && !is_named_map(&view, &model)
+        && !is_diagonal(&model, step)
+        && !is_diagonal(&turned_a_quarter(&model), step))
+    .then(|| {
+        let mut at_course = model;
+        at_course.pixels = course.pixels;
+        at_course.t_ramp = course.t_ramp;
+        search_hit_rule(scorer, &at_course, RULE_ROUNDS, &mut seen)
+    });
     let searched = search_hit_rule(scorer, &model, RULE_ROUNDS, &mut seen);
     if searched.hits != model.hits {
         // The silhouettes again under the rule found, from where they were.
@@ -434,8 +516,15 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
             ties = relabelled_ties;
         }
     }
+    if let Some(at_course) = at_course
+        && scorer.score(&at_course) < scorer.score(&model)
+    {
+        model = at_course;
+        ties.clear();
+    }
     model = fit_colour(scorer, &model, seen_background, &mut seen);
     model = fit_depth(scorer, &model);
+    model = untilted_if_as_good(scorer, model, step);
     if scorer.theirs.depth.is_some() {
         // The depth range asked for, with the map moved to draw both images best: a lone
         // sphere's size and its depth ramp trade against each other, and the silhouettes alone
@@ -463,6 +552,11 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
             let mut rival = fitted.model;
             rival.pixels = tie.pixels;
             rival.t_ramp = tie.t_ramp;
+            // A tilt fitted under the answer's map runs along its screen axes: under another
+            // map it is fitted again (a flip of a scene that looks the same turned a quarter).
+            if fitted.model.t_ramp != glam::DVec3::ZERO && rival.t_ramp != fitted.model.t_ramp {
+                rival = fit_depth(scorer, &rival);
+            }
             // A plain (diagonal) map beside a fitted matrix is given the same care: moved to
             // draw both images best, as the answer's own map was.
             if is_diagonal(&rival, step) && !is_diagonal(&fitted.model, step) {
