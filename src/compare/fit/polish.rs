@@ -1,0 +1,134 @@
+//! The pixel map moved on both images, colour and depth, by a pattern search of small steps
+//! (the silhouettes' least squares stop a hair off the fewest pixels wrong, and a lone sphere's
+//! size trades with its depth ramp); a fitted tilt left out where the map, moved without it,
+//! draws the images nearly as well; and what kind of map a model has (a known mistake's,
+//! diagonal, turned a quarter).
+
+use glam::DVec2;
+
+use super::depth::fit_depth_untilted;
+use super::geometry::Affine;
+use super::score::Scorer;
+use super::starts::named_geometry;
+use crate::compare::model::Model;
+
+/// Rounds of the pattern search that moves the pixel map on the images, each with steps half
+/// the last: the shift's last step is 0.2 / 2⁵ of a pixel.
+const POLISH_ROUNDS: usize = 6;
+
+/// Of [`POLISH_ROUNDS`], those that move the whole map (the matrix's last step is 0.0005 of
+/// its entries); the rest move only the shift.
+const WHOLE_MAP_ROUNDS: usize = 3;
+
+/// Grey levels across the image beyond which a tilt is not tried without
+/// ([`untilted_if_as_good`]): a tilt standing in for a sample a fraction of a pixel off moves
+/// the depth by a few levels across the image (about 16 for the generated corpus's program 298),
+/// a camera basis that is not orthogonal by hundreds.
+const SMALL_TILT_LEVELS: f64 = 64.0;
+
+/// Whether `model`'s pixel map has no off-diagonal part (a thousandth of its largest entry).
+pub(super) fn is_diagonal(model: &Model, step: f64) -> bool {
+    let m = model.pixels.relative_axes(step);
+    let largest = m.to_cols_array().iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    m.x_axis.y.abs() <= 1e-3 * largest && m.y_axis.x.abs() <= 1e-3 * largest
+}
+
+/// `model` with its pixel map moved, by a pattern search of small steps, to draw their images
+/// (colour and depth) in the fewest pixels wrong. On a large image the search counts a sample
+/// of the pixels ([`Scorer::sampled_score`]), and the map found is kept only where it draws
+/// every pixel as well as `model`'s.
+pub(super) fn polish_with_images(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Model {
+    let polished = polish_on(scorer, model, step);
+    if scorer.samples() && scorer.score(&polished) > scorer.score(model) {
+        return *model;
+    }
+    polished
+}
+
+/// The pattern search of [`polish_with_images`], on [`Scorer::sampled_score`].
+fn polish_on(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Model {
+    let view = *scorer.view;
+    let (width, height) = (view.width_px, view.height_px);
+    let with = |values: [f64; 6]| {
+        let mut m = *model;
+        m.pixels = Affine::of_array(values).pixel_map(width, height, step);
+        m
+    };
+    let start = Affine::of_map(&model.pixels, width, height, step).to_array();
+    let mut best = (scorer.sampled_score(model), start);
+    let mut steps = [0.004, 0.004, 0.004, 0.004, 0.2, 0.2];
+    for round in 0..POLISH_ROUNDS {
+        // The whole map in the first rounds; then only where it starts, finer.
+        let parameters = if round < WHOLE_MAP_ROUNDS { 0..6 } else { 4..6 };
+        let mut moved = true;
+        while moved && best.0 > 0 {
+            moved = false;
+            for i in parameters.clone() {
+                for sign in [-1.0, 1.0] {
+                    let mut values = best.1;
+                    values[i] += sign * steps[i];
+                    let score = scorer.sampled_score(&with(values));
+                    if score < best.0 {
+                        best = (score, values);
+                        moved = true;
+                    }
+                }
+            }
+        }
+        for s in &mut steps {
+            *s *= 0.5;
+        }
+    }
+    with(best.1)
+}
+
+/// `model` with its pixel map's axes swapped (a map turned a quarter is diagonal so).
+pub(super) fn turned_a_quarter(model: &Model) -> Model {
+    let mut turned = *model;
+    let axes = model.pixels.axes_world;
+    turned.pixels.axes_world = glam::DMat2::from_cols(axes.y_axis, axes.x_axis);
+    turned
+}
+
+/// Whether `model`'s pixel map and tilt are the course's or those of a known mistake.
+pub(super) fn is_named_map(view: &crate::render::View, model: &Model) -> bool {
+    named_geometry(view)
+        .iter()
+        .any(|(_, point)| point.pixels == model.pixels && point.t_ramp == model.t_ramp)
+}
+
+/// `model` without its tilt where the map, moved on the images without it, draws them nearly as
+/// well (within a thousandth of the pixels compared): a sample a fraction of a pixel off moves
+/// each depth by a little, which a tilt of a few grey levels can stand in for.
+pub(super) fn untilted_if_as_good(scorer: &mut Scorer<'_>, model: Model, step: f64) -> Model {
+    if model.t_ramp == glam::DVec3::ZERO || scorer.theirs.depth.is_none() {
+        return model;
+    }
+    // A named point's tilt (the up vector as written) is a word of its own; a tilt of many
+    // levels is more than a sample a fraction of a pixel off can stand in for.
+    let view = *scorer.view;
+    let corner = |x: u32, y: u32| {
+        model
+            .pixels
+            .screen_of(DVec2::new(f64::from(x), f64::from(y)))
+    };
+    let extent = (corner(view.width_px, view.height_px) - corner(0, 0)).abs();
+    let levels = (model.t_ramp.x.abs() * extent.x + model.t_ramp.y.abs() * extent.y)
+        * model.depth.per_unit.abs()
+        * 255.0;
+    if is_named_map(&view, &model) || levels > SMALL_TILT_LEVELS {
+        return model;
+    }
+    let mut untilted = model;
+    untilted.t_ramp = glam::DVec3::ZERO;
+    for _ in 0..2 {
+        untilted = polish_with_images(scorer, &untilted, step);
+        untilted = fit_depth_untilted(scorer, &untilted);
+    }
+    let margin = (scorer.compared_pixels() / 1000).max(10);
+    if scorer.score(&untilted) <= scorer.score(&model) + margin {
+        untilted
+    } else {
+        model
+    }
+}
