@@ -29,9 +29,9 @@ no-wrapped-depth~src/compare/fit/depth.rs~            Outside::Wrap,\n~
 no-rounded-bytes~src/compare/fit/mod.rs~        (true, None),\n~
 no-other-background~src/compare/fit/mod.rs~        (false, seen_background),\n~
 no-named-snap~src/compare/fit/mod.rs~        && results[first_named].0 <= results[0].0 + tolerance~        && false
-no-polish~src/compare/fit/mod.rs~    let polished = polish_on(scorer, model, step);~    let polished = *model;
+no-polish~src/compare/fit/polish.rs~    let polished = polish_on(scorer, model, step);~    let polished = *model;
 few-lm-steps~src/compare/fit/mod.rs~const MORE_STEPS: usize = 40;~const MORE_STEPS: usize = 1;
-no-untilted-refit~src/compare/fit/mod.rs~    if is_named_map(&view, &model) || levels > SMALL_TILT_LEVELS {~    if true {
+no-untilted-refit~src/compare/fit/polish.rs~    if is_named_map(&view, &model) || levels > SMALL_TILT_LEVELS {~    if true {
 no-rival-tilt-refit~src/compare/fit/mod.rs~            if fitted.model.t_ramp != glam::DVec3::ZERO && rival.t_ramp != fitted.model.t_ramp {~            if false {
 no-rule-from-course-map~src/compare/fit/mod.rs~    let at_course = (scorer.score(&model) > 0\n~    let at_course = (false\n
 no-only-block~src/compare/fit/starts.rs~    if width == height {\n        return None;~    if true {\n        return None;
