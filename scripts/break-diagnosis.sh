@@ -15,7 +15,6 @@ out=${OUT:-$root/docs/break-diagnosis.txt}
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 git clone -q "$root" "$scratch/repo"
-ln -sfn "$root/../shared" "$scratch/shared" 2>/dev/null || true
 export CARGO_TARGET_DIR=$root/target/break
 cd "$scratch/repo"
 
