@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The viewer in a browser page.
 #   bash scripts/web.sh build         the static site in target/web/ (index.html, raytracer.js,
-#                                     raytracer_bg.wasm): copy it to any web server
+#                                     raytracer_bg.wasm, scenes/ with the course scenes): copy it
+#                                     to any web server
 #   bash scripts/web.sh serve [PORT]  builds, then serves target/web/ on 127.0.0.1 (default port
 #                                     8080) and prints the address
 #   bash scripts/web.sh test          builds, runs tests/same_pixels.rs in WebAssembly under Node
@@ -47,6 +48,8 @@ build() {
   "$tools/bin/wasm-bindgen" --target web --no-typescript --out-dir "$site" --out-name raytracer \
     target/wasm32-unknown-unknown/release/raytracer.wasm
   cp web/index.html "$site/"
+  mkdir -p "$site/scenes"
+  cp scenes/*.txt "$site/scenes/"
   echo "web.sh: the site is in $site/ ($(du -k "$site/raytracer_bg.wasm" | cut -f1) KiB of wasm)"
 }
 

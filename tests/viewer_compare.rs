@@ -1,7 +1,7 @@
 //! The viewer's Compare section as a user meets it (egui_kittest): their image typed into the
 //! section is put beside the exact render and diagnosed, the A/B flip and the difference view
-//! replace the compared image on screen, the probe gives both values, a depth image offers the
-//! range read back from it and follows the depth range, and "Against the exact render" measures the chosen quality on the user's view.
+//! replace the compared image on screen, the probe gives both values, a depth image is judged
+//! under the range read back from it and then follows the depth range, messages stay current, and "Against the exact render" measures the chosen quality on the user's view.
 //! Their images are made by the project's variant renderer and written as real files.
 #![cfg(feature = "gui")]
 
@@ -184,7 +184,7 @@ fn the_exact_image_matches_and_names_nothing() {
 }
 
 #[test]
-fn a_depth_image_offers_the_range_read_back_and_follows_the_depth_range() {
+fn a_depth_image_is_judged_under_the_range_read_from_it_then_follows_the_depth_range() {
     let folder = tempfile::tempdir().unwrap();
     let (_, depth) = write_theirs(folder.path(), MistakeSet::NONE);
     let mut harness = viewer(Some(scene_file()));
@@ -193,18 +193,35 @@ fn a_depth_image_offers_the_range_read_back_and_follows_the_depth_range() {
     settle(&mut harness);
     click(&mut harness, "depth");
     compare_image(&mut harness, &depth);
-    assert!(
-        harness
-            .state()
-            .comparison()
-            .unwrap()
-            .difference
-            .pixels_differing()
-            > 0
+    // Made over 6 … 10, it is judged under the range read from it, with no click: a match, and
+    // the depth range above shows the range in use.
+    let comparison = harness.state().comparison().unwrap().clone();
+    assert_eq!(comparison.view.depth_range, DepthRange::new(6.0, 10.0));
+    assert!(comparison.difference.depth_matches());
+    assert!(label_shown(&harness, "match: yes"));
+    assert!(label_shown(
+        &harness,
+        "judged under 6 … 10 (read from their image)"
+    ));
+    assert_eq!(
+        harness.state().view().depth_range,
+        DepthRange::new(6.0, 10.0)
+    );
+    assert!(!label_shown(&harness, "their range looks like"));
+    // The user sets another range: it is judged again under theirs, and the one read back is
+    // offered; taking it makes the comparison again, and they match.
+    harness.state_mut().view_mut().depth_range = DepthRange::new(5.0, 12.0);
+    harness.run_steps(2);
+    wait_for_comparison(&mut harness);
+    assert_eq!(
+        harness.state().comparison().unwrap().view.depth_range,
+        DepthRange::new(5.0, 12.0)
     );
     assert!(label_shown(&harness, "match: no"));
-    // Their range is read back from the image and offered; taking it makes the comparison
-    // again: now they match, and the offer is gone.
+    assert!(label_shown(
+        &harness,
+        "judged under 5 … 12 (the depth range above)"
+    ));
     assert!(label_shown(&harness, "their range looks like 6 … 10:"));
     click(&mut harness, "use it");
     harness.run_steps(2);
@@ -214,6 +231,78 @@ fn a_depth_image_offers_the_range_read_back_and_follows_the_depth_range() {
     assert_eq!(comparison.view.depth_range, DepthRange::new(6.0, 10.0));
     assert!(comparison.difference.depth_matches());
     assert!(label_shown(&harness, "match: yes"));
+}
+
+#[test]
+fn a_flipped_depth_image_is_named_at_once_and_one_with_no_ramp_is_judged_under_the_viewers_range() {
+    let folder = tempfile::tempdir().unwrap();
+    let (_, depth) = write_theirs(folder.path(), MistakeSet::of(&[Mistake::FlippedVertically]));
+    let mut harness = viewer(Some(scene_file()));
+    settle(&mut harness);
+    harness.state_mut().view_mut().depth_range = DepthRange::new(5.0, 12.0);
+    settle(&mut harness);
+    click(&mut harness, "depth");
+    compare_image(&mut harness, &depth);
+    let comparison = harness.state().comparison().unwrap().clone();
+    assert_eq!(comparison.view.depth_range, DepthRange::new(6.0, 10.0));
+    assert_eq!(comparison.diagnosis(), ["flipped-vertically"]);
+    assert!(label_shown(&harness, "diagnosis: flipped-vertically"));
+
+    // All black: no ramp to read a range from; judged under the viewer's, and said so.
+    let black = folder.path().join("black.png");
+    image::RgbImage::new(160, 120).save(&black).unwrap();
+    harness.get_by_label("image").click();
+    harness.step();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness.step();
+    harness
+        .get_by_label("image")
+        .type_text(&black.display().to_string());
+    harness.step();
+    click(&mut harness, "Compare image");
+    wait_for_comparison(&mut harness);
+    let comparison = harness.state().comparison().unwrap();
+    assert_eq!(comparison.view.depth_range, DepthRange::new(6.0, 10.0));
+    assert!(label_shown(
+        &harness,
+        "judged under 6 … 10 (the depth range above: no range can be read from their image)"
+    ));
+}
+
+#[test]
+fn messages_are_current_a_failed_comparison_leaves_no_old_result() {
+    let folder = tempfile::tempdir().unwrap();
+    let (colour, _) = write_theirs(folder.path(), MistakeSet::of(&[Mistake::Mirrored]));
+    let mut harness = viewer(Some(scene_file()));
+    settle(&mut harness);
+    let missing = folder.path().join("nonexistent.png").display().to_string();
+    compare_image(&mut harness, &missing);
+    assert!(harness.state().comparison().is_none());
+    assert!(label_shown(&harness, "nonexistent.png"));
+    // A later comparison that succeeds replaces the error.
+    harness.get_by_label("image").click();
+    harness.step();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness.step();
+    harness.get_by_label("image").type_text(&colour);
+    harness.step();
+    click(&mut harness, "Compare image");
+    wait_for_comparison(&mut harness);
+    assert!(harness.state().comparison().is_some());
+    assert!(!label_shown(&harness, "nonexistent.png"));
+    assert!(label_shown(&harness, "theirs.tga: differs"));
+    // A failed one takes the old result off the screen.
+    harness.get_by_label("image").click();
+    harness.step();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness.step();
+    harness.get_by_label("image").type_text(&missing);
+    harness.step();
+    click(&mut harness, "Compare image");
+    wait_for_comparison(&mut harness);
+    assert!(harness.state().comparison().is_none());
+    assert!(!label_shown(&harness, "diagnosis: mirrored"));
+    assert!(label_shown(&harness, "nonexistent.png"));
 }
 
 #[test]
@@ -319,4 +408,42 @@ fn a_mistake_beside_an_unknown_one_is_shown_in_part_with_the_unexplained_pixels(
             "pixel {index}"
         );
     }
+}
+
+#[test]
+fn a_statement_pointed_at_shows_its_meaning_and_picture_and_highlights_its_pixels() {
+    let folder = tempfile::tempdir().unwrap();
+    let mistakes = MistakeSet::of(&[Mistake::PixelCorners, Mistake::Mirrored]);
+    let (colour, _) = write_theirs(folder.path(), mistakes);
+    let mut harness = viewer(Some(scene_file()));
+    settle(&mut harness);
+    compare_image(&mut harness, &colour);
+    let comparison = harness.state().comparison().unwrap().clone();
+    assert_eq!(comparison.diagnosis(), ["pixel-corners", "mirrored"]);
+    // Each statement explains pixels of its own; the two sets are not the same.
+    let counts: Vec<usize> = comparison
+        .explained_by
+        .iter()
+        .map(|flags| flags.as_ref().unwrap().iter().filter(|&&f| f).count())
+        .collect();
+    assert!(counts.iter().all(|&n| n > 0), "{counts:?}");
+    assert_ne!(comparison.explained_by[0], comparison.explained_by[1]);
+    assert!(harness.query_by_label_contains("what it means").is_none());
+    harness.get_by_label_contains("mirrored: ").scroll_to_me();
+    harness.run_steps(3);
+    harness.get_by_label_contains("mirrored: ").hover();
+    harness.run_steps(4);
+    assert!(label_shown(&harness, "what it means"));
+    assert!(label_shown(&harness, "in the gallery"));
+    assert!(label_shown(
+        &harness,
+        &format!(
+            "colour: the {} pixels mirrored explains",
+            with_commas(counts[1])
+        )
+    ));
+    // Pointed away, the difference is back.
+    harness.hover_at(egui::pos2(1.0, 1.0));
+    harness.run_steps(4);
+    assert!(!label_shown(&harness, "pixels mirrored explains"));
 }

@@ -1,6 +1,7 @@
 //! The viewer's writes, driven through its buttons (egui_kittest): it asks before replacing any
 //! file and warns when one is the open scene, writes into a folder when given one, and gives
-//! written files the modes the command line gives them.
+//! written files the modes the command line gives them; "Course files" writes the course's images
+//! and their command line, and exports are named after the scene.
 
 mod common;
 
@@ -252,4 +253,89 @@ fn the_exported_command_script_renders_the_same_files_from_anywhere() {
         assert!(&again == bytes, "{name} is made again byte for byte");
     }
     assert_eq!(std::fs::read_dir(elsewhere.path()).unwrap().count(), 0);
+}
+
+#[test]
+fn course_files_are_the_course_images_and_their_command_and_exports_are_named_after_the_scene() {
+    let folder = tempfile::tempdir().unwrap();
+    let mut harness = egui_kittest::Harness::builder()
+        .with_size(egui::vec2(1000.0, 700.0))
+        .build_eframe(|cc| {
+            raytracer::app::ViewerApp::new(
+                cc,
+                raytracer::cli::ViewerRequest {
+                    input: Some(scene_path("scene1_04.txt")),
+                    program: Some(env!("CARGO_BIN_EXE_raytracer").into()),
+                    ..Default::default()
+                },
+            )
+        });
+    settle(&mut harness);
+    // Exports are named after the scene on screen.
+    assert_eq!(harness.state().settings().export.path, "scene1_04.png");
+    // The view moved and resized, the course's range set: the course files are still the
+    // course's command's, over the range in use.
+    harness.state_mut().view_mut().center_world.y += 0.3;
+    harness.state_mut().view_mut().depth_range =
+        raytracer::render::depth_map::DepthRange::new(12.0, 17.0);
+    settle(&mut harness);
+    harness.state_mut().settings_mut().export.path =
+        folder.path().join("scene1_04.png").display().to_string();
+    press(&mut harness, "Course files");
+    let names = ["output1_04.tga", "depth1_04.tga"];
+    // The course's colour image, pixel for pixel.
+    let reference = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference");
+    let colour = image::open(folder.path().join(names[0])).unwrap().to_rgb8();
+    let course = image::open(reference.join("output1_04.png"))
+        .unwrap()
+        .to_rgb8();
+    assert!(colour == course, "output1_04.tga is the course's");
+    // Both are the course's command line's files, byte for byte.
+    let by_command = tempfile::tempdir().unwrap();
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_raytracer"))
+        .args(["-input", &scene_path("scene1_04.txt").display().to_string()])
+        .args(["-size", "200", "200", "-output", names[0]])
+        .args(["-depth", "12", "17", names[1]])
+        .current_dir(by_command.path())
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let mut written = Vec::new();
+    for name in names {
+        let path = folder.path().join(name);
+        let bytes = std::fs::read(&path).unwrap();
+        assert!(
+            bytes == std::fs::read(by_command.path().join(name)).unwrap(),
+            "{name} is the command line's"
+        );
+        written.push(bytes);
+        std::fs::remove_file(&path).unwrap();
+    }
+    let script = std::fs::read_to_string(folder.path().join("command1_04.sh")).unwrap();
+    assert!(
+        script.contains("-size 200 200 -output output1_04.tga -depth 12 17 depth1_04.tga"),
+        "{script}"
+    );
+    // The script makes the same files again, from anywhere.
+    let elsewhere = tempfile::tempdir().unwrap();
+    let output = std::process::Command::new("sh")
+        .arg(folder.path().join("command1_04.sh"))
+        .current_dir(elsewhere.path())
+        .env("PATH", "/usr/bin:/bin")
+        .output()
+        .unwrap();
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    for (name, bytes) in names.iter().zip(&written) {
+        assert!(
+            &std::fs::read(folder.path().join(name)).unwrap() == bytes,
+            "{name} again, byte for byte"
+        );
+    }
+    // A second time, the files exist: it asks before replacing them.
+    press(&mut harness, "Course files");
+    assert!(harness.query_by_label("Replace").is_some());
 }

@@ -1,6 +1,7 @@
 //! The viewer as people use it, driven headlessly with egui_kittest: small and scaled windows,
 //! precise control (fine drag, rejected values), undo and redo, named views and the view a scene
-//! was last seen in, the magnifier's pixels against the frame, and the shortcuts overlay.
+//! was last seen in, the magnifier's pixels against the frame, the shortcuts overlay, and the
+//! course scenes opened from the menu that bundles them.
 #![cfg(feature = "gui")]
 
 mod common;
@@ -390,4 +391,46 @@ fn f1_and_question_mark_open_the_shortcuts_overlay_and_escape_closes_it() {
     harness.step();
     settle(&mut harness);
     assert!(harness.state().help_open());
+}
+
+#[test]
+fn the_course_scenes_menu_opens_a_bundled_scene_and_replaces_an_old_error() {
+    let mut harness = viewer(None);
+    settle(&mut harness);
+    // An error of an earlier try: a file that is not there.
+    click(&mut harness, "path");
+    harness.get_by_label("path").type_text("nonexistent.txt");
+    harness.step();
+    click(&mut harness, "Open path");
+    settle(&mut harness);
+    let shown_error = |harness: &App| {
+        harness
+            .state()
+            .scene_error()
+            .map(str::to_owned)
+            .or_else(|| {
+                harness
+                    .state()
+                    .message()
+                    .filter(|(_, error)| *error)
+                    .map(|(text, _)| text.to_owned())
+            })
+    };
+    assert!(
+        shown_error(&harness).is_some_and(|text| text.contains("nonexistent.txt")),
+        "{:?}",
+        shown_error(&harness)
+    );
+    click(&mut harness, "Course scenes");
+    harness.run_steps(2);
+    click(&mut harness, "scene1_04.txt");
+    settle(&mut harness);
+    let expected = raytracer::scene::load_scene(&scene_path("scene1_04.txt")).unwrap();
+    let loaded = harness.state().loaded_scene();
+    assert_eq!(*loaded.scene, expected);
+    assert_eq!(loaded.name(), "scene1_04.txt");
+    // The opening replaces the old error.
+    assert_eq!(shown_error(&harness), None);
+    let (text, error) = harness.state().message().expect("a message");
+    assert!(!error && text.contains("opened scene1_04.txt"), "{text}");
 }

@@ -27,6 +27,8 @@ pub(crate) enum Action {
     OpenDialog(DialogKind),
     /// Open the scene file at this path.
     Open(PathBuf),
+    /// Open the bundled scene of this index (`scene::bundled::BUNDLED_SCENES`).
+    OpenBundled(usize),
     /// Read the open scene file again.
     Reload,
     /// Fit centre and size to the scene.
@@ -55,6 +57,8 @@ pub(crate) enum Action {
     ResetMagnifier,
     /// Export the current view to this base path.
     ExportTo(PathBuf),
+    /// Write the course's files (200×200 TGA pair and command line) into the export folder.
+    ExportCourseFiles,
     /// Write the scene with the current camera to this path.
     SaveViewTo(PathBuf),
     /// Release the pinned probe.
@@ -100,6 +104,11 @@ impl ViewerApp {
             Action::Open(path) => self.page.fetch_scene(&path.to_string_lossy(), &self.ctx),
             #[cfg(not(target_arch = "wasm32"))]
             Action::Open(path) => self.open(&path),
+            Action::OpenBundled(index) => {
+                if let Some((name, text)) = crate::scene::bundled::BUNDLED_SCENES.get(index) {
+                    self.open_bytes(name, std::sync::Arc::from(text.as_bytes()));
+                }
+            }
             Action::Reload => self.reload(),
             Action::FrameAll => self.frame_all(),
             Action::ResetView => self.viewing.reset_view(&self.scene.loaded.file_view),
@@ -132,7 +141,9 @@ impl ViewerApp {
             }
             Action::ToggleHelp => self.panels.help_open = !self.panels.help_open,
             Action::ResetMagnifier => self.viewing.magnifier = Default::default(),
-            Action::ExportTo(_) | Action::SaveViewTo(_) => self.write_or_ask(action),
+            Action::ExportTo(_) | Action::SaveViewTo(_) | Action::ExportCourseFiles => {
+                self.write_or_ask(action);
+            }
             Action::Unpin => self.viewing.probe.pinned_world = None,
             Action::CompareImage(path, kind) => self.compare_with_file(path, kind),
             Action::CompareQuality => self.compare_quality(),
@@ -152,6 +163,7 @@ impl ViewerApp {
         match action {
             Action::ExportTo(path) => self.export_to(path),
             Action::SaveViewTo(path) => self.save_view_to(path),
+            Action::ExportCourseFiles => self.export_course_files(),
             other => self.apply(other),
         }
     }
@@ -311,7 +323,7 @@ impl ViewerApp {
 
     /// Runs `write` as a task (`Writes::start`); its message lands in the status bar.
     #[cfg(not(target_arch = "wasm32"))]
-    fn write_in_background(
+    pub(super) fn write_in_background(
         &mut self,
         running: &str,
         write: impl FnOnce() -> Result<String, String> + Send + 'static,
@@ -426,7 +438,7 @@ impl ViewerApp {
 
 /// The name a browser page downloads `path` as: its last part.
 #[cfg(target_arch = "wasm32")]
-fn download_name(path: &Path) -> String {
+pub(super) fn download_name(path: &Path) -> String {
     path.file_name().map_or_else(
         || "raytracer".to_owned(),
         |name| name.to_string_lossy().into_owned(),

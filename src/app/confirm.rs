@@ -40,6 +40,7 @@ impl ViewerApp {
                 None => Vec::new(),
             },
             Action::SaveViewTo(path) => vec![path.clone()],
+            Action::ExportCourseFiles => self.course_files().all(),
             _ => Vec::new(),
         }
     }

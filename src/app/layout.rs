@@ -181,12 +181,19 @@ impl ViewerApp {
             if let Some(path) = file.open_path {
                 actions.push(Action::Open(PathBuf::from(path.trim())));
             }
+            if let Some(index) = file.open_bundled {
+                actions.push(Action::OpenBundled(index));
+            }
             if file.save_view {
                 actions.push(Action::SaveViewTo(PathBuf::from(export.scene_path.trim())));
             }
             ui.separator();
-            if file_sections::export_ui(ui, export, self.writes.dialog_note).export_to_path {
+            let requests = file_sections::export_ui(ui, export, self.writes.dialog_note);
+            if requests.export_to_path {
                 actions.push(Action::ExportTo(PathBuf::from(export.path.trim())));
+            }
+            if requests.course_files {
+                actions.push(Action::ExportCourseFiles);
             }
         });
         actions
@@ -326,14 +333,27 @@ fn compared_picture<'a>(compare: &'a CompareState, view: &View) -> Option<Compar
     } else {
         ""
     };
-    let (texture, caption, heat_scale) = match compare.show {
-        CompareShow::Rendered => return None,
-        CompareShow::Theirs => (
+    let shown: Vec<&crate::compare::Deviation> =
+        pixels.statements.iter().chain(&pixels.partial).collect();
+    let (texture, caption, heat_scale) = match (compare.highlighted(), compare.show) {
+        (Some((texture, index, count)), _) => (
+            texture,
+            format!(
+                "{kind}: the {} pixels {} explains, in colour",
+                grouped(count as f64, 0),
+                shown
+                    .get(index)
+                    .map_or_else(String::new, |s| s.name_and_values())
+            ),
+            true,
+        ),
+        (None, CompareShow::Rendered) => return None,
+        (None, CompareShow::Theirs) => (
             &current.theirs_texture,
             format!("{kind}: {theirs} (B: the render){note}"),
             false,
         ),
-        CompareShow::Difference => (
+        (None, CompareShow::Difference) => (
             &current.heat_texture,
             format!(
                 "{kind}: difference, {} pixels, largest {} (Shift+B: the render){note}",

@@ -12,6 +12,7 @@
 //! * [`actions`]: what the user can ask for ([`actions::Action`]), exports, dialogs
 //! * [`compare`]: their image (or the chosen quality) against the exact render, the diagnosis
 //! * [`confirm`]: asking before a write replaces files; [`writes`]: the writes' state
+//! * [`course_files`]: the course's 200×200 TGA pair and command line for the open scene
 //! * [`saved_views`]: undo and redo, named views, the view each scene was last seen in
 //! * [`viewing`]: auto range and follow, frame all, resets, undo and redo, named views
 //! * [`input`]: shortcuts, dropped files, keyboard and pointer navigation
@@ -28,6 +29,7 @@ pub(crate) mod actions;
 pub(crate) mod background;
 pub mod compare;
 pub(crate) mod confirm;
+pub(crate) mod course_files;
 pub(crate) mod dialogs;
 pub mod frame_log;
 pub(crate) mod input;

@@ -283,6 +283,17 @@ impl ViewerApp {
     fn adopt_opened(&mut self, loaded: LoadedScene, path: &Path) {
         self.remember_view();
         self.scene.failed_open = None;
+        // Exports are named after the scene on screen, unless the user chose a name.
+        let export = &mut self.settings.export;
+        if let Some(followed) = crate::export::export_path_following(
+            &export.path,
+            &crate::export::name_in_folder(self.scene.loaded.path.as_deref()),
+            &crate::export::name_in_folder(Some(path)),
+        ) {
+            export.path = followed;
+        }
+        // An older message (an error of an earlier try included) is not left beside it.
+        self.status = Some(Status::info(format!("opened {}", path.display())));
         self.adopt(loaded, false);
         if let Some(last) = self.settings.views.last.get(&SceneViews::key(path)) {
             self.viewing.view = last.applied_to(&self.viewing.view);

@@ -9,11 +9,12 @@ use std::path::Path;
 use image::RgbImage;
 
 use super::flags::Flag;
-use super::request::{CompareRequest, RenderRequest, TheirDepth};
+use super::request::CompareRequest;
+use crate::compare::judge::{NoDepthRange, judge};
 use crate::compare::picture::{Row, difference_picture};
-use crate::compare::{Deviation, Diagnosis, Difference, Theirs, diagnose, infer_depth_range};
+use crate::compare::{Deviation, Diagnosis, Difference, Theirs};
+use crate::render::Frame;
 use crate::render::depth_map::DepthRange;
-use crate::render::{Frame, View};
 use crate::scene::Scene;
 
 /// Why the images to compare cannot be compared.
@@ -286,127 +287,44 @@ pub(crate) fn read_theirs(
 }
 
 /// Compares `theirs` with `exact` (the exact, one-sample f64 frame of `request`'s view) and
-/// diagnoses the difference; returns the report and, with `-diff`, the difference picture. A
-/// depth image given without its range is compared over the range inferred from it.
+/// diagnoses the difference ([`judge`]); returns the report and, with `-diff`, the difference
+/// picture. A depth image given without its range is compared over the range read back from it.
 pub(crate) fn compare(
     scene: &Scene,
-    request: &RenderRequest,
     compare: &CompareRequest,
     theirs: &TheirImages,
     exact: &Frame,
 ) -> Result<(CompareReport, Option<RgbImage>), CompareError> {
-    let view = View::of_camera(
-        &scene.camera,
-        request.width_px,
-        request.height_px,
-        DepthRange::new(0.0, 1.0),
-    );
-    // Without a range, the depth image alone is read for one first; with one, the answer's own
-    // map is what is read back (below).
-    let range_given = matches!(compare.depth, Some(TheirDepth { range: Some(_), .. }));
-    let mut depth_range_inferred = theirs
-        .depth
-        .as_ref()
-        .filter(|_| !range_given)
-        .map(|depth| infer_depth_range(scene, &view, depth));
-    let range = match &compare.depth {
-        None => view.depth_range,
-        Some(TheirDepth {
-            range: Some(range), ..
-        }) => *range,
-        Some(TheirDepth { range: None, path }) => {
-            depth_range_inferred
-                .flatten()
-                .ok_or_else(|| CompareError::NoDepthRange {
-                    flag: Flag::CompareDepth,
-                    path: path.display().to_string(),
-                })?
-        }
-    };
     let given = Theirs {
         colour: theirs.colour.as_ref(),
         depth: theirs.depth.as_ref(),
     };
-    let mut view = View {
-        depth_range: range,
-        ..view
-    };
-    let mut diagnosis = diagnose(scene, &view, given);
-    if let Some(TheirDepth { range: None, .. }) = &compare.depth {
-        // Read back with both images, the range their program used may differ from the one the
-        // depth image alone suggested: the answer's own is the one reported and compared under.
-        let fitted = diagnosis
-            .stated()
-            .iter()
-            .find_map(|statement| match statement {
-                Deviation::DepthRange {
-                    white_t,
-                    black_t,
-                    per_image: None,
-                    ..
-                } => Some(DepthRange::new(
-                    white_t.min(*black_t),
-                    white_t.max(*black_t),
-                )),
-                _ => None,
-            });
-        if let Some(fitted) = fitted {
-            // Kept where the exact images under it differ from theirs in fewer pixels.
-            let refitted = diagnose(
-                scene,
-                &View {
-                    depth_range: fitted,
-                    ..view
-                },
-                given,
-            );
-            if refitted.differing_exact < diagnosis.differing_exact {
-                depth_range_inferred = Some(Some(fitted));
-                view.depth_range = fitted;
-                diagnosis = refitted;
-            }
-        }
-    }
-    if range_given && theirs.depth.is_some() {
-        // The range their depth image was drawn over, as the answer reads it: the one asked
-        // for, unless the answer says another (or a quantity other than t: none to read).
-        let model = &diagnosis.model;
-        depth_range_inferred = Some(
-            if model.depth.quantity == crate::compare::model::Quantity::T {
-                let (white, black) = model.depth.white_black_t();
-                let clean = |t: f64| (t * 1e9).round() / 1e9;
-                (white.is_finite() && black.is_finite() && white != black)
-                    .then(|| DepthRange::new(clean(white.min(black)), clean(white.max(black))))
-            } else {
-                None
-            },
-        );
-    }
-    let range = view.depth_range;
-    let exact_colour = theirs.colour.as_ref().map(|_| exact.colour_image());
-    let exact_depth = theirs.depth.as_ref().map(|_| exact.depth_image(range));
-    let difference = |a: &Option<RgbImage>, b: &Option<RgbImage>| match (a, b) {
-        (Some(a), Some(b)) => Some(Difference::of(a, b)),
-        _ => None,
-    };
-    let colour = difference(&theirs.colour, &exact_colour);
-    let depth = difference(&theirs.depth, &exact_depth);
+    let range = compare.depth.as_ref().and_then(|depth| depth.range);
+    let judged =
+        judge(scene, exact, given, range).map_err(|NoDepthRange| CompareError::NoDepthRange {
+            flag: Flag::CompareDepth,
+            path: compare
+                .depth
+                .as_ref()
+                .map(|depth| depth.path.display().to_string())
+                .unwrap_or_default(),
+        })?;
     let picture = compare.diff.as_ref().map(|_| {
         let mut rows = Vec::new();
         for (kind, theirs, exact, difference, unexplained) in [
             (
                 "colour",
                 &theirs.colour,
-                &exact_colour,
-                &colour,
-                &diagnosis.unexplained.colour,
+                &judged.exact_colour,
+                &judged.colour,
+                &judged.diagnosis.unexplained.colour,
             ),
             (
                 "depth",
                 &theirs.depth,
-                &exact_depth,
-                &depth,
-                &diagnosis.unexplained.depth,
+                &judged.exact_depth,
+                &judged.depth,
+                &judged.diagnosis.unexplained.depth,
             ),
         ] {
             if let (Some(theirs), Some(exact), Some(difference)) = (theirs, exact, difference) {
@@ -423,10 +341,10 @@ pub(crate) fn compare(
     });
     Ok((
         CompareReport {
-            colour,
-            depth,
-            diagnosis,
-            depth_range_inferred,
+            colour: judged.colour,
+            depth: judged.depth,
+            diagnosis: judged.diagnosis,
+            depth_range_inferred: judged.depth_range_inferred,
         },
         picture,
     ))

@@ -378,7 +378,7 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
                 exact_owned = crate::render::render(&scene, &view)?;
                 &exact_owned
             };
-            let (report, picture) = compare(&scene, request, wanted, &theirs, exact)?;
+            let (report, picture) = compare(&scene, wanted, &theirs, exact)?;
             (Some(report), picture)
         }
         None => (None, None),

@@ -9,6 +9,7 @@
 //! * [`describe`]: a model said as statements, and back.
 //! * [`deviation`]: the statements, with their values and what to check in code.
 //! * [`diagnosis`]: the answer: the statements the images need, and how far they explain them.
+//! * [`judge`]: their images against the exact ones, under a depth range given or read back.
 //! * [`depth_range`]: the depth range a depth image was most likely made over.
 //! * [`picture`]: the difference picture (theirs, exact, heat map, legend).
 //! * [`their_image`]: reading the image a user compares.
@@ -19,6 +20,7 @@ pub mod deviation;
 pub mod diagnosis;
 pub mod difference;
 pub mod fit;
+pub mod judge;
 pub mod mistake;
 pub mod model;
 pub mod model_render;

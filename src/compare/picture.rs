@@ -82,6 +82,20 @@ pub fn heat_map_marked(difference: &Difference, unexplained: &[bool]) -> RgbImag
     map
 }
 
+/// The heat map of `difference` with only the `highlighted` pixels in colour, the rest dimmed
+/// to a quarter of their grey: the pixels one statement of the answer explains.
+pub fn heat_map_highlighted(difference: &Difference, highlighted: &[bool]) -> RgbImage {
+    let mut map = heat_map(difference);
+    for (pixel, &flag) in map.pixels_mut().zip(highlighted) {
+        if !flag {
+            let [r, g, b] = pixel.0;
+            let grey = ((u16::from(r) + u16::from(g) + u16::from(b)) / 12) as u8;
+            *pixel = Rgb([grey; 3]);
+        }
+    }
+    map
+}
+
 /// The heat map of `difference`.
 pub fn heat_map(difference: &Difference) -> RgbImage {
     RgbImage::from_fn(difference.width_px, difference.height_px, |x, y| {

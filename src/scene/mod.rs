@@ -1,8 +1,9 @@
 //! Scenes: the plain data model ([`Scene`]), the parser of the 6.837 assignment-1 text format
 //! ([`parse_scene`], [`load_scene`]) and its typed errors, and the writer back to text
-//! ([`scene_to_text`]).
+//! ([`scene_to_text`]); the scenes bundled with the program ([`bundled`]).
 
 mod ahead;
+pub mod bundled;
 mod error;
 mod lexer;
 mod model;

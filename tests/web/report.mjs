@@ -16,7 +16,7 @@ const frameExample = process.env.RAYTRACER_VIEWER_FRAME ?? "target/release/examp
 const RUNS = 15;
 const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
 
-const site = await serve(env.site, { "/scenes/": env.scenes, "/workload/": path.dirname(dense) });
+const site = await serve(env.site, { "/workload/": path.dirname(dense) });
 const browser = await launch();
 
 // Sizes.

@@ -6,7 +6,7 @@ use egui::{RichText, Ui};
 
 use crate::app::actions::Action;
 use crate::app::compare::{
-    CompareShow, CompareSource, CompareState, ImageKind, OFF_LEVELS, REFERENCE_SAMPLES,
+    CompareShow, CompareSource, CompareState, ImageKind, OFF_LEVELS, REFERENCE_SAMPLES, RangeSource,
 };
 use crate::app::dialogs::DialogKind;
 use crate::compare::deviation::Deviation;
@@ -27,7 +27,9 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
         ui.radio_value(&mut state.kind, ImageKind::Colour, "colour")
             .on_hover_text("the image is a colour image (-output)");
         ui.radio_value(&mut state.kind, ImageKind::Depth, "depth")
-            .on_hover_text("the image is a depth image (-depth), of the depth range set above");
+            .on_hover_text(
+                "the image is a depth image (-depth): judged under the range read from it",
+            );
     });
     ui.horizontal(|ui| {
         let label = ui.label(IMAGE_PATH_LABEL);
@@ -71,6 +73,24 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
             ui.label("comparing…");
         });
     }
+    // The gallery's pictures of the statements shown, decoded before the answer is borrowed.
+    let pictures: Vec<Option<egui::TextureHandle>> = match &state.current {
+        Some(current) => {
+            let shown: Vec<Deviation> = current
+                .pixels
+                .statements
+                .iter()
+                .chain(&current.pixels.partial)
+                .cloned()
+                .collect();
+            shown
+                .iter()
+                .map(|deviation| state.gallery.picture(ui.ctx(), deviation))
+                .collect()
+        }
+        None => Vec::new(),
+    };
+    let mut pointed = None;
     let Some(current) = &state.current else {
         super::hint(
             ui,
@@ -134,6 +154,24 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
             } else {
                 "match: no"
             });
+            if pixels.kind == ImageKind::Depth {
+                let used = pixels.view.depth_range;
+                let from = match pixels.range_source {
+                    RangeSource::ReadBack => "read from their image",
+                    RangeSource::Viewer => "the depth range above",
+                    RangeSource::Unreadable => {
+                        "the depth range above: no range can be read from their image"
+                    }
+                };
+                ui.label(format!(
+                    "judged under {} … {} ({from})",
+                    used.min_t, used.max_t
+                ))
+                .on_hover_text(
+                    "a depth image is judged under the range read from it; set the depth \
+                         range above to judge it under another",
+                );
+            }
             if let Some(range) = pixels.depth_range_inferred
                 && range != pixels.view.depth_range
             {
@@ -176,16 +214,22 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
             if !pixels.alternatives.is_empty() {
                 ui.label(format!("or: {}", pixels.alternatives.join(" | ")));
             }
-            // Each statement with what it means and what to check in their code.
-            for deviation in pixels.statements.iter().chain(&pixels.partial) {
-                ui.label(
-                    RichText::new(format!(
-                        "{}: {}",
-                        deviation.name_and_values(),
-                        deviation.explanation()
-                    ))
-                    .small(),
-                );
+            // Each statement with what it means and what to check in their code; pointed at,
+            // its gallery picture, and its pixels highlighted in the difference.
+            for (index, deviation) in pixels.statements.iter().chain(&pixels.partial).enumerate() {
+                let response = ui
+                    .label(
+                        RichText::new(format!(
+                            "{}: {}",
+                            deviation.name_and_values(),
+                            deviation.explanation()
+                        ))
+                        .small(),
+                    )
+                    .on_hover_ui(|ui| statement_tip(ui, deviation, pictures.get(index)));
+                if response.hovered() {
+                    pointed = Some(index);
+                }
             }
             if !matches {
                 let marked = if pixels.unexplained.is_some() && pixels.unexplained_pixels > 0 {
@@ -221,5 +265,30 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
     if ui.button("Close comparison").clicked() {
         actions.push(Action::CompareClose);
     }
+    state.point_at(&ui.ctx().clone(), pointed);
     actions
+}
+
+/// Heads the tip of a statement pointed at (tests find the tip by it).
+pub(crate) const STATEMENT_TIP: &str = "what it means";
+
+/// The tip of a statement pointed at: what it means and what to check, and its gallery picture.
+fn statement_tip(
+    ui: &mut Ui,
+    deviation: &Deviation,
+    picture: Option<&Option<egui::TextureHandle>>,
+) {
+    ui.set_max_width(420.0);
+    ui.label(RichText::new(deviation.name_and_values()).strong());
+    ui.label(RichText::new(STATEMENT_TIP).small());
+    ui.label(deviation.explanation());
+    if let Some(Some(texture)) = picture {
+        ui.label(
+            RichText::new("in the gallery (docs/mistakes.md): theirs, exact, difference").small(),
+        );
+        let size = texture.size_vec2();
+        let scale = (400.0 / size.x).min(1.0);
+        ui.image((texture.id(), size * scale));
+    }
+    ui.label(RichText::new("its pixels are in colour in the difference while pointed at").small());
 }

@@ -7,6 +7,7 @@ use crate::app::settings::{ExportFormat, ExportSettings};
 use crate::export::ExtraDepth;
 use crate::output::depth_file::RawDepthFormat;
 use crate::render::MAX_SIDE_PX;
+use crate::scene::bundled::BUNDLED_SCENES;
 
 /// What the file section asked for.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
@@ -15,7 +16,12 @@ pub(crate) struct FileRequests {
     pub(crate) open_path: Option<String>,
     /// Write the scene with the current camera to the typed path.
     pub(crate) save_view: bool,
+    /// Open the bundled scene of this index ([`BUNDLED_SCENES`]).
+    pub(crate) open_bundled: Option<usize>,
 }
+
+/// The menu of the scenes bundled with the program.
+pub(crate) const BUNDLED_MENU: &str = "Course scenes";
 
 /// A typed scene path with an "Open path" button, and a path to save the current view as a scene
 /// file to (both work without any file dialog).
@@ -46,6 +52,16 @@ pub(crate) fn file_ui(ui: &mut Ui, path_text: &mut String, save_path: &mut Strin
             requests.open_path = Some(path_text.clone());
         }
     });
+    ui.menu_button(BUNDLED_MENU, |ui| {
+        for (index, (name, _)) in BUNDLED_SCENES.iter().enumerate() {
+            if ui.button(*name).clicked() {
+                requests.open_bundled = Some(index);
+                ui.close();
+            }
+        }
+    })
+    .response
+    .on_hover_text("the course's scenes and the showcase scenes, bundled with the program");
     requests
 }
 
@@ -54,7 +70,12 @@ pub(crate) fn file_ui(ui: &mut Ui, path_text: &mut String, save_path: &mut Strin
 pub(crate) struct ExportRequests {
     /// Write to the typed path now.
     pub(crate) export_to_path: bool,
+    /// Write the course's files into the typed path's folder.
+    pub(crate) course_files: bool,
 }
+
+/// The button that writes the course's files.
+pub(crate) const COURSE_FILES: &str = "Course files";
 
 /// Export options: size, format, side by side, and the path to write to.
 pub(crate) fn export_ui(
@@ -141,6 +162,17 @@ pub(crate) fn export_ui(
          <name>_scene.txt (the current camera) and <name>_command.sh (the command line \
          that renders the same files); asks before replacing any file",
     );
+    if ui
+        .button(COURSE_FILES)
+        .on_hover_text(
+            "what the course's command line writes for the scene file, into the path's folder: \
+             outputN_MM.tga and depthN_MM.tga at 200×200 over the depth range in use, and \
+             commandN_MM.sh with that command line",
+        )
+        .clicked()
+    {
+        requests.course_files = true;
+    }
     if let Some(note) = dialog_note {
         ui.label(
             RichText::new(note)

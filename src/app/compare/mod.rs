@@ -11,29 +11,27 @@
 //! * **Against the exact render**: the view at the chosen quality against the exact render (and
 //!   a high-sample one): mean error, share of pixels off by over 8 levels, frame time.
 
+pub(crate) mod gallery;
+mod pixels;
+
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
-use web_time::Instant;
 
 use egui::{ColorImage, TextureHandle, TextureOptions};
 use image::RgbImage;
 
+pub use pixels::{
+    CompareSource, ComparisonPixels, QualityFigures, RangeSource, compare_file, compare_quality,
+};
+pub(crate) use pixels::{OFF_LEVELS, REFERENCE_SAMPLES};
+
 use super::ViewerApp;
 use super::background::{Poll, Task};
 use super::status::Status;
-use crate::compare::picture::{heat_map, heat_map_marked};
+use crate::compare::picture::{heat_map, heat_map_highlighted, heat_map_marked};
 use crate::compare::their_image::{decode_their_image, read_their_image};
-use crate::compare::{Deviation, Difference, Theirs, diagnose, infer_depth_range};
+use crate::render::View;
 use crate::render::depth_map::DepthRange;
-use crate::render::sampling::Sampling;
-use crate::render::{Quality, View, render_with};
-use crate::scene::Scene;
-
-/// Samples per pixel of the high-sample reference an anti-aliased picture is measured against.
-pub(crate) const REFERENCE_SAMPLES: u32 = 256;
-
-/// A picture is "off" where a channel differs from the exact one by more than this many levels.
-pub(crate) const OFF_LEVELS: u8 = 8;
 
 /// Which of the two images is compared.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -67,76 +65,14 @@ pub enum CompareShow {
     Difference,
 }
 
-/// Where the compared picture came from.
-#[derive(Debug, Clone, PartialEq)]
-pub enum CompareSource {
-    /// An image file the user opened.
-    File(PathBuf),
-    /// The current view at the chosen quality.
-    Quality(QualityFigures),
-}
-
-/// The trade measured on the user's view: the chosen quality against the exact render.
-#[derive(Debug, Clone, PartialEq)]
-pub struct QualityFigures {
-    /// The quality measured, in words.
-    pub quality: String,
-    /// Its frame time, milliseconds.
-    pub frame_ms: f64,
-    /// The exact render's frame time, milliseconds.
-    pub exact_ms: f64,
-    /// Mean difference from the exact render, levels (largest channel per pixel).
-    pub mean_error_levels: f64,
-    /// Share of pixels off the exact render by more than [`OFF_LEVELS`].
-    pub share_off: f64,
-    /// For anti-aliasing: the same two figures against a high-sample reference.
-    pub against_reference: Option<(f64, f64)>,
-}
-
-/// A finished comparison (pixels on the CPU; the textures are made on the UI thread).
-#[derive(Debug, Clone)]
-pub struct ComparisonPixels {
-    /// Where their picture came from.
-    pub source: CompareSource,
-    /// Which image it is.
-    pub kind: ImageKind,
-    /// The view both pictures are of.
-    pub view: View,
-    /// Their picture.
-    pub theirs: RgbImage,
-    /// The exact picture.
-    pub exact: RgbImage,
-    /// How they differ.
-    pub difference: Difference,
-    /// The statements that explain the difference (empty: none does, or none was looked for).
-    pub statements: Vec<Deviation>,
-    /// The alternatives of a near tie, each a `+`-joined list of statements (empty: no tie).
-    pub alternatives: Vec<String>,
-    /// When nothing explains it all: the statements that explain part of it.
-    pub partial: Vec<Deviation>,
-    /// Differing pixels no word named accounts for.
-    pub unexplained_pixels: usize,
-    /// A depth image's range, read back from it (`None`: a colour image, or no ramp to fit).
-    pub depth_range_inferred: Option<DepthRange>,
-    /// Where they are, one flag per pixel from the top row (cyan over the heat map).
-    pub unexplained: Option<Vec<bool>>,
-}
-
-impl ComparisonPixels {
-    /// Each statement as its word and values (`zoom 1.118`).
-    pub fn diagnosis(&self) -> Vec<String> {
-        self.statements
-            .iter()
-            .map(Deviation::name_and_values)
-            .collect()
-    }
-}
-
 /// A comparison on screen.
 pub(crate) struct Comparison {
     pub(crate) pixels: ComparisonPixels,
     pub(crate) theirs_texture: TextureHandle,
     pub(crate) heat_texture: TextureHandle,
+    /// The difference with one statement's pixels highlighted: the statement's index, and the
+    /// picture.
+    highlight: Option<(usize, TextureHandle)>,
 }
 
 /// The Compare section's state.
@@ -152,137 +88,11 @@ pub(crate) struct CompareState {
     pub(crate) current: Option<Comparison>,
     /// A comparison being computed.
     pending: Option<Task<Result<ComparisonPixels, String>>>,
+    /// The statement of the answer pointed at (hovered), if any.
+    pointed: Option<usize>,
+    /// The gallery's pictures of the known mistakes.
+    pub(crate) gallery: gallery::Gallery,
 }
-
-/// The exact picture of `kind` for `view`.
-fn exact_picture(scene: &Scene, view: &View, kind: ImageKind) -> Result<RgbImage, String> {
-    let frame = render_with(scene, view, &Quality::default()).map_err(|e| e.to_string())?;
-    Ok(match kind {
-        ImageKind::Colour => frame.colour_image(),
-        ImageKind::Depth => frame.depth_image(view.depth_range),
-    })
-}
-
-/// Compares `theirs` with the exact picture of the scene's own camera at their size (the depth
-/// range of `depth_view`), and diagnoses the difference.
-pub fn compare_file(
-    scene: &Scene,
-    path: &Path,
-    theirs: RgbImage,
-    kind: ImageKind,
-    depth_view: &View,
-) -> Result<ComparisonPixels, String> {
-    let (width_px, height_px) = theirs.dimensions();
-    let view = View::of_camera(&scene.camera, width_px, height_px, depth_view.depth_range);
-    let exact = exact_picture(scene, &view, kind)?;
-    let difference = Difference::of(&theirs, &exact);
-    let given = match kind {
-        ImageKind::Colour => Theirs {
-            colour: Some(&theirs),
-            depth: None,
-        },
-        ImageKind::Depth => Theirs {
-            colour: None,
-            depth: Some(&theirs),
-        },
-    };
-    let diagnosis = diagnose(scene, &view, given);
-    let depth_range_inferred = match kind {
-        ImageKind::Colour => None,
-        ImageKind::Depth => infer_depth_range(scene, &view, &theirs),
-    };
-    let unexplained = if diagnosis.stated().is_empty() && diagnosis.partial().is_empty() {
-        None
-    } else {
-        match kind {
-            ImageKind::Colour => diagnosis.unexplained.colour.clone(),
-            ImageKind::Depth => diagnosis.unexplained.depth.clone(),
-        }
-    };
-    Ok(ComparisonPixels {
-        source: CompareSource::File(path.to_path_buf()),
-        kind,
-        view,
-        exact,
-        difference,
-        statements: diagnosis.stated().to_vec(),
-        alternatives: diagnosis
-            .alternatives()
-            .iter()
-            .map(|set| {
-                set.iter()
-                    .map(Deviation::name_and_values)
-                    .collect::<Vec<_>>()
-                    .join(" + ")
-            })
-            .collect(),
-        partial: diagnosis.partial().to_vec(),
-        unexplained_pixels: diagnosis.unexplained_pixels(),
-        unexplained,
-        depth_range_inferred,
-        theirs,
-    })
-}
-
-/// The colour image of `view` at `quality` against the exact one (and, with anti-aliasing, a
-/// high-sample reference of the same sampler and filter).
-pub fn compare_quality(
-    scene: &Scene,
-    view: &View,
-    quality: &Quality,
-) -> Result<ComparisonPixels, String> {
-    let timed = |quality: &Quality| {
-        let started = Instant::now();
-        let frame = render_with(scene, view, quality).map_err(|e| e.to_string())?;
-        Ok::<_, String>((frame.colour_image(), started.elapsed().as_secs_f64() * 1e3))
-    };
-    let (theirs, frame_ms) = timed(quality)?;
-    let (exact, exact_ms) = timed(&Quality::default())?;
-    let difference = Difference::of(&theirs, &exact);
-    let figures = |difference: &Difference| {
-        let total = difference.per_pixel.len().max(1) as f64;
-        (
-            difference.mean_difference(),
-            difference.pixels_beyond(OFF_LEVELS) as f64 / total,
-        )
-    };
-    let (mean_error_levels, share_off) = figures(&difference);
-    let against_reference = match quality.sampling {
-        Some(sampling) => {
-            let reference_quality = Quality {
-                sampling: Some(Sampling {
-                    samples: REFERENCE_SAMPLES,
-                    ..sampling
-                }),
-            };
-            let (reference, _) = timed(&reference_quality)?;
-            Some(figures(&Difference::of(&theirs, &reference)))
-        }
-        None => None,
-    };
-    Ok(ComparisonPixels {
-        source: CompareSource::Quality(QualityFigures {
-            quality: quality.describe(),
-            frame_ms,
-            exact_ms,
-            mean_error_levels,
-            share_off,
-            against_reference,
-        }),
-        kind: ImageKind::Colour,
-        view: *view,
-        theirs,
-        exact,
-        difference,
-        statements: Vec::new(),
-        alternatives: Vec::new(),
-        partial: Vec::new(),
-        unexplained_pixels: 0,
-        unexplained: None,
-        depth_range_inferred: None,
-    })
-}
-
 /// An RGB image as an egui image.
 fn to_colour_image(image: &RgbImage) -> ColorImage {
     ColorImage::from_rgb(
@@ -329,19 +139,20 @@ impl CompareState {
     }
 
     /// Their depth image on screen, compared at another depth range than `depth_range`: its
-    /// file, to compare again.
-    fn stale_depth_file(&self, depth_range: DepthRange) -> Option<PathBuf> {
+    /// name and pixels, to compare again (the image is not read again: a page has no file).
+    fn stale_depth_image(&self, depth_range: DepthRange) -> Option<(PathBuf, RgbImage)> {
         let pixels = &self.current.as_ref()?.pixels;
         let CompareSource::File(path) = &pixels.source else {
             return None;
         };
         (pixels.kind == ImageKind::Depth && pixels.view.depth_range != depth_range)
-            .then(|| path.clone())
+            .then(|| (path.clone(), pixels.theirs.clone()))
     }
 
-    /// Takes a finished comparison in, its textures made through `ctx`. `Ok(Some(view))` with
-    /// their image: the view to hold (the file's camera at their size); an error when it failed.
-    fn poll(&mut self, ctx: &egui::Context) -> Result<Option<View>, Status> {
+    /// Takes a finished comparison in, its textures made through `ctx`. `Ok(Some((view, kind)))`
+    /// with their image: the view to hold (the file's camera at their size, the depth range it
+    /// was judged under) and which image it is; an error when it failed.
+    fn poll(&mut self, ctx: &egui::Context) -> Result<Option<(View, ImageKind)>, Status> {
         let Some(task) = &self.pending else {
             return Ok(None);
         };
@@ -349,17 +160,19 @@ impl CompareState {
             Poll::Running => return Ok(None),
             Poll::Done(Ok(pixels)) => pixels,
             Poll::Done(Err(error)) => {
-                self.pending = None;
+                // The old result is not left on screen as if it answered this one.
+                self.close();
                 return Err(Status::error(format!("compare: {error}")));
             }
             Poll::Lost => {
-                self.pending = None;
+                self.close();
                 return Err(Status::error("compare: the comparison stopped"));
             }
         };
         self.pending = None;
         let first = self.current.is_none();
-        let hold = matches!(pixels.source, CompareSource::File(_)).then_some(pixels.view);
+        let hold =
+            matches!(pixels.source, CompareSource::File(_)).then_some((pixels.view, pixels.kind));
         let theirs_texture = ctx.load_texture(
             "compare theirs",
             to_colour_image(&pixels.theirs),
@@ -380,8 +193,64 @@ impl CompareState {
             pixels,
             theirs_texture,
             heat_texture,
+            highlight: None,
         });
         Ok(hold)
+    }
+
+    /// The message of a comparison just finished (it replaces any older one, an error of an
+    /// earlier try included).
+    fn done_message(&self) -> Option<Status> {
+        let pixels = &self.current.as_ref()?.pixels;
+        let CompareSource::File(path) = &pixels.source else {
+            return None;
+        };
+        let matches = match pixels.kind {
+            ImageKind::Colour => pixels.difference.colour_matches(),
+            ImageKind::Depth => pixels.difference.depth_matches(),
+        };
+        Some(Status::info(format!(
+            "compared {}: {}",
+            path.display(),
+            if matches { "match" } else { "differs" }
+        )))
+    }
+
+    /// Points at the statement `index` of the answer on screen (`None`: at none): while it is
+    /// pointed at, the compared image shows the difference with the pixels it explains
+    /// highlighted (made once through `ctx`).
+    pub(crate) fn point_at(&mut self, ctx: &egui::Context, index: Option<usize>) {
+        self.pointed = index;
+        let (Some(index), Some(current)) = (index, &mut self.current) else {
+            return;
+        };
+        if current.highlight.as_ref().is_some_and(|(i, _)| *i == index) {
+            return;
+        }
+        current.highlight = match current.pixels.explained_by.get(index) {
+            Some(Some(flags)) => Some((
+                index,
+                ctx.load_texture(
+                    "compare highlight",
+                    to_colour_image(&heat_map_highlighted(&current.pixels.difference, flags)),
+                    TextureOptions::NEAREST,
+                ),
+            )),
+            _ => None,
+        };
+    }
+
+    /// While a statement is pointed at: the difference with its pixels highlighted, the
+    /// statement's index and how many pixels it explains.
+    pub(crate) fn highlighted(&self) -> Option<(&TextureHandle, usize, usize)> {
+        let current = self.current.as_ref()?;
+        let (index, texture) = current.highlight.as_ref()?;
+        (self.pointed == Some(*index)).then(|| {
+            let count = current.pixels.explained_by[*index]
+                .as_ref()
+                .map_or(0, |flags| flags.iter().filter(|&&f| f).count());
+            (texture, *index, count)
+        })
     }
 
     /// The A/B flip: the render and their image in turn.
@@ -438,29 +307,31 @@ impl CompareState {
 impl ViewerApp {
     /// Opens the image at `path` and compares it with the exact render of the open scene.
     pub(crate) fn compare_with_file(&mut self, path: PathBuf, kind: ImageKind) {
-        self.compare_theirs(path, kind, read_their_image);
+        self.compare_theirs(path, kind, None, read_their_image);
     }
 
     /// Compares the image `bytes` named `name` (a browser page's dropped or picked file) with the
     /// exact render, as [`Self::compare_with_file`] does a file.
     pub fn compare_with_bytes(&mut self, name: &str, bytes: Arc<[u8]>, kind: ImageKind) {
-        self.compare_theirs(name.into(), kind, move |path| {
+        self.compare_theirs(name.into(), kind, None, move |path| {
             decode_their_image(path, &bytes)
         });
     }
 
-    /// Compares the image `read` gets for `path` with the exact render, in the background.
+    /// Compares the image `read` gets for `path` with the exact render, in the background: a
+    /// depth image under `range`, or with `None` under the range read back from it.
     fn compare_theirs(
         &mut self,
         path: PathBuf,
         kind: ImageKind,
+        range: Option<DepthRange>,
         read: impl FnOnce(&Path) -> Result<RgbImage, String> + Send + 'static,
     ) {
         let scene = Arc::clone(&self.scene.loaded.scene);
-        let depth_view = self.viewing.view;
+        let fallback = self.viewing.view.depth_range;
         self.compare.kind = kind;
         let status = self.compare.start(&self.ctx, move || {
-            compare_file(&scene, &path, read(&path)?, kind, &depth_view)
+            compare_file(&scene, &path, read(&path)?, kind, range, fallback)
         });
         self.say(status);
     }
@@ -477,22 +348,29 @@ impl ViewerApp {
     }
 
     /// Takes a finished comparison in ([`CompareState::poll`]); with their image, holds the view
-    /// at the file's camera and their size, keeping the depth range. A depth comparison follows
-    /// the depth range: it is made again when it changes.
+    /// at the file's camera and their size. A depth image sets the depth range to the one it
+    /// was judged under (read back from it), and follows the depth range after: it is judged
+    /// again under the range the user sets.
     pub(crate) fn poll_comparison(&mut self) {
         if !self.compare.busy() {
-            if let Some(path) = self.compare.stale_depth_file(self.viewing.view.depth_range) {
-                self.compare_with_file(path, ImageKind::Depth);
+            let range = self.viewing.view.depth_range;
+            if let Some((path, theirs)) = self.compare.stale_depth_image(range) {
+                self.compare_theirs(path, ImageKind::Depth, Some(range), move |_| Ok(theirs));
             }
             return;
         }
         match self.compare.poll(&self.ctx) {
             Ok(None) => {}
-            Ok(Some(view)) => {
+            Ok(Some((view, kind))) => {
+                let depth_range = match kind {
+                    ImageKind::Depth => view.depth_range,
+                    ImageKind::Colour => self.viewing.view.depth_range,
+                };
                 self.viewing.view = View {
-                    depth_range: self.viewing.view.depth_range,
+                    depth_range,
                     ..view
                 };
+                self.status = self.compare.done_message();
             }
             Err(status) => self.status = Some(status),
         }

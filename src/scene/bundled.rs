@@ -1,0 +1,56 @@
+//! The scenes that ship inside the program: the course's seven and the showcase scenes, offered
+//! by the viewer's "Course scenes" menu (in a page, where no folder of scenes is at hand, they
+//! are the ones a user can open without a file). The files themselves are in `scenes/`.
+
+/// Each bundled scene: its file name (as in `scenes/`) and its text.
+pub const BUNDLED_SCENES: &[(&str, &str)] = &[
+    ("scene1_01.txt", include_str!("../../scenes/scene1_01.txt")),
+    ("scene1_02.txt", include_str!("../../scenes/scene1_02.txt")),
+    ("scene1_03.txt", include_str!("../../scenes/scene1_03.txt")),
+    ("scene1_04.txt", include_str!("../../scenes/scene1_04.txt")),
+    ("scene1_05.txt", include_str!("../../scenes/scene1_05.txt")),
+    ("scene1_06.txt", include_str!("../../scenes/scene1_06.txt")),
+    ("scene1_07.txt", include_str!("../../scenes/scene1_07.txt")),
+    (
+        "showcase_far_from_origin.txt",
+        include_str!("../../scenes/showcase_far_from_origin.txt"),
+    ),
+    (
+        "showcase_skewed_camera.txt",
+        include_str!("../../scenes/showcase_skewed_camera.txt"),
+    ),
+    (
+        "showcase_torus_knot.txt",
+        include_str!("../../scenes/showcase_torus_knot.txt"),
+    ),
+];
+
+#[cfg(test)]
+mod tests {
+    use super::BUNDLED_SCENES;
+
+    /// Every scene in `scenes/` is bundled, under its own name, and each parses.
+    #[test]
+    fn every_scene_file_is_bundled_and_parses() {
+        let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+        let mut on_disk: Vec<String> = std::fs::read_dir(&folder)
+            .unwrap()
+            .map(|entry| entry.unwrap().file_name().to_string_lossy().into_owned())
+            .filter(|name| {
+                std::path::Path::new(name)
+                    .extension()
+                    .is_some_and(|extension| extension.eq_ignore_ascii_case("txt"))
+            })
+            .collect();
+        on_disk.sort();
+        let bundled: Vec<String> = BUNDLED_SCENES
+            .iter()
+            .map(|(name, _)| name.to_string())
+            .collect();
+        assert_eq!(bundled, on_disk);
+        for (name, text) in BUNDLED_SCENES {
+            assert_eq!(*text, std::fs::read_to_string(folder.join(name)).unwrap());
+            crate::scene::parse_scene(text).unwrap_or_else(|e| panic!("{name}: {e}"));
+        }
+    }
+}
