@@ -5,14 +5,14 @@
 #   bash scripts/reports.sh NAME…      only these, e.g. `accuracy tradeoff screenshot`
 # Names: accuracy performance tradeoff mistakes diagnosis diagnosis-speed compare-diff memory scaling thread-wake profile
 # command-vs-cpp dense-speedup window-frame-times window-frame-times-wgpu setup-times web
-# windows windows-viewer screenshot readme-screenshots window-sizes fuzz.
+# windows windows-viewer screenshot readme-screenshots window-sizes fuzz trace-example.
 # Each runs the command docs/README.md names for it; a failure stops the script.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 all=(accuracy performance tradeoff mistakes diagnosis diagnosis-speed compare-diff memory scaling thread-wake profile command-vs-cpp
      dense-speedup window-frame-times window-frame-times-wgpu setup-times web
-     windows windows-viewer screenshot readme-screenshots window-sizes fuzz)
+     windows windows-viewer screenshot readme-screenshots window-sizes fuzz trace-example)
 wanted=("$@")
 [ ${#wanted[@]} -eq 0 ] && wanted=("${all[@]}")
 
@@ -42,6 +42,11 @@ report() {
     readme-screenshots) bash scripts/readme-screenshots.sh ;;
     window-sizes) bash scripts/window-sizes.sh ;;
     fuzz) bash scripts/fuzz.sh 240 docs/fuzz && bash scripts/fuzz-self-test.sh ;;
+    trace-example)
+      cargo build --bin raytracer && scratch=$(mktemp -d) && {
+        echo "\$ raytracer -input scenes/scene1_02.txt -depth 8 12 depth.tga -trace 60 140"
+        target/debug/raytracer -input scenes/scene1_02.txt -depth 8 12 "$scratch/depth.tga" -trace 60 140
+      } >docs/trace-example.txt && rm -rf "$scratch" ;;
     *) echo "reports.sh: unknown report '$1' (see the list at the top of this script)" >&2
        return 2 ;;
   esac

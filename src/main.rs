@@ -56,6 +56,9 @@ fn main() -> ExitCode {
                 Ok(report) => {
                     let mut text = String::new();
                     let json = request.answer_as_json();
+                    if let Some(trace) = report.trace.as_deref().filter(|_| !json) {
+                        text.push_str(trace);
+                    }
                     if request.stats && !json {
                         text.push_str(&report.stats_lines());
                     }
@@ -63,7 +66,9 @@ fn main() -> ExitCode {
                     if let Some(compared) = &report.compare {
                         if json {
                             let stats = request.stats.then(|| report.stats_lines());
-                            text.push_str(&compared.json(stats.as_deref()));
+                            text.push_str(
+                                &compared.json(stats.as_deref(), report.trace.as_deref()),
+                            );
                         } else {
                             text.push_str(&compared.lines());
                         }

@@ -1,6 +1,7 @@
 //! End to end against the course: runs the real `raytracer` binary with the seven command lines
 //! of the 6.837 assignment-1 handout, writing TGA and PNG, and compares with the course's
-//! published results in `tests/reference/` (200×200).
+//! published results in `tests/reference/` (200×200); `-trace X Y` agrees with the high-precision
+//! oracle and with the files written, and beside their image says what t their grey stands for.
 //!
 //! Tolerances (SPEC.md): colour identical pixel for pixel; depth equal except for at most 0.1% of
 //! pixels, which may differ by one grey level (the course rendered in 32-bit floats, so a value on
@@ -98,4 +99,140 @@ fn course_command_lines_reproduce_the_reference_images() {
             eprintln!("{name}: colour identical, depth off by one on {off_by_one} pixels");
         }
     }
+}
+
+/// The numbers `-trace X Y` prints on the line starting with `prefix`, after `marker`.
+fn traced_after<'a>(trace: &'a str, prefix: &str, marker: &str) -> &'a str {
+    let line = trace
+        .lines()
+        .find(|line| line.starts_with(prefix))
+        .unwrap_or_else(|| panic!("no '{prefix}' line in\n{trace}"));
+    let start = line
+        .find(marker)
+        .unwrap_or_else(|| panic!("no '{marker}' in {line}"));
+    &line[start + marker.len()..]
+}
+
+#[test]
+fn the_pixel_trace_agrees_with_the_high_precision_oracle_and_the_files_written() {
+    use raytracer::oracle::high_precision::HighPrecision;
+    use raytracer::render::View;
+    use raytracer::render::depth_map::DepthRange;
+    let folder = tempfile::tempdir().unwrap();
+    let mut traced_hits = 0;
+    for (number, depth_min, depth_max) in COURSE_RUNS {
+        let scene_file = project_path(&format!("scenes/scene1_0{number}.txt"));
+        let scene = raytracer::scene::load_scene(&scene_file).unwrap();
+        let range = DepthRange::new(depth_min.parse().unwrap(), depth_max.parse().unwrap());
+        let view = View::of_camera(&scene.camera, 200, 200, range);
+        let oracle = HighPrecision::new(&scene, &view).unwrap();
+        let (colour, depth) =
+            render_course_scene(number, depth_min, depth_max, "tga", folder.path());
+        for (x, y_up) in [
+            (0, 0),
+            (199, 199),
+            (100, 100),
+            (57, 131),
+            (143, 62),
+            (99, 20),
+        ] {
+            let output = Command::new(env!("CARGO_BIN_EXE_raytracer"))
+                .arg("-input")
+                .arg(&scene_file)
+                .args([
+                    "-size", "200", "200", "-depth", depth_min, depth_max, "d.tga",
+                ])
+                .args(["-trace", &x.to_string(), &y_up.to_string()])
+                .current_dir(folder.path())
+                .output()
+                .unwrap();
+            assert!(output.status.success(), "{output:?}");
+            let trace = String::from_utf8(output.stdout).unwrap();
+            let name = format!("scene1_0{number} pixel ({x}, {y_up})");
+            // The hit: the oracle's sphere, and its t to within rounding.
+            let hit = traced_after(&trace, "hit:", "hit: ");
+            match oracle.pixel(x, y_up).hit {
+                Some((sphere, t)) => {
+                    let said = hit
+                        .strip_prefix(&format!("sphere {sphere} at t = "))
+                        .unwrap_or_else(|| panic!("{name}: {hit}, the oracle sees {sphere}"));
+                    let said_t: f64 = said.split(' ').next().unwrap().parse().unwrap();
+                    assert!(
+                        (said_t - t).abs() <= 1e-9 * t.abs().max(1.0),
+                        "{name}: t {said_t} against {t}"
+                    );
+                    traced_hits += 1;
+                }
+                None => assert_eq!(hit, "none", "{name}"),
+            }
+            // Its colour and grey bytes are those of the files the course's command writes.
+            let row = 199 - y_up;
+            let bytes: Vec<u8> = traced_after(&trace, "colour:", "floor(255·c) = ")
+                .split(' ')
+                .map(|b| b.parse().unwrap())
+                .collect();
+            assert_eq!(bytes, colour.get_pixel(x, row).0, "{name}: colour");
+            let grey: u8 = if hit == "none" {
+                traced_after(&trace, "depth:", "→ grey ").parse().unwrap()
+            } else {
+                traced_after(&trace, "depth:", "floor(255·grey) = ")
+                    .parse()
+                    .unwrap()
+            };
+            assert_eq!(grey, depth.get_pixel(x, row).0[0], "{name}: depth");
+            assert_eq!(
+                trace.matches("\nsphere ").count(),
+                scene.spheres.len(),
+                "{name}"
+            );
+        }
+    }
+    assert!(
+        traced_hits >= 14,
+        "only {traced_hits} pixels with a hit traced"
+    );
+}
+
+#[test]
+fn the_pixel_trace_beside_their_image_gives_their_pixel_and_the_t_their_grey_stands_for() {
+    // The course's own depth image of scene1_04 (-depth 12 17), compared without a range: the
+    // range is read back, and their grey's t interval holds the exact t.
+    let folder = tempfile::tempdir().unwrap();
+    let output = Command::new(env!("CARGO_BIN_EXE_raytracer"))
+        .arg("-input")
+        .arg(project_path("scenes/scene1_04.txt"))
+        .arg("-compare_depth")
+        .arg(project_path("tests/reference/depth1_04.png"))
+        .args(["-trace", "100", "100"])
+        .current_dir(folder.path())
+        .output()
+        .unwrap();
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert_eq!(output.status.code(), Some(0), "{text}");
+    let t: f64 = traced_after(&text, "hit:", " at t = ")
+        .split(' ')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    let interval = traced_after(&text, "theirs, depth:", "stands for t in [");
+    let (low, high) = interval.trim_end_matches(')').split_once(", ").unwrap();
+    let (low, high): (f64, f64) = (low.parse().unwrap(), high.parse().unwrap());
+    assert!(low <= t && t < high, "{t} in [{low}, {high}) of\n{text}");
+    assert!(text.contains("over 12 … 17"), "{text}");
+
+    // Outside the image: a one-line error, exit status 2, nothing written.
+    let output = Command::new(env!("CARGO_BIN_EXE_raytracer"))
+        .arg("-input")
+        .arg(project_path("scenes/scene1_04.txt"))
+        .args([
+            "-size", "200", "100", "-output", "o.tga", "-trace", "10", "100",
+        ])
+        .current_dir(folder.path())
+        .output()
+        .unwrap();
+    let error = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{error}");
+    assert!(error.contains("outside the 200×100 image"), "{error}");
+    assert!(!folder.path().join("o.tga").exists());
 }

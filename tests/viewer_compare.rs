@@ -447,3 +447,37 @@ fn a_statement_pointed_at_shows_its_meaning_and_picture_and_highlights_its_pixel
     harness.run_steps(4);
     assert!(!label_shown(&harness, "pixels mirrored explains"));
 }
+
+#[test]
+fn their_image_written_again_is_compared_again() {
+    let folder = tempfile::tempdir().unwrap();
+    let (colour, _) = write_theirs(folder.path(), MistakeSet::of(&[Mistake::Mirrored]));
+    let mut harness = viewer(Some(scene_file()));
+    settle(&mut harness);
+    compare_image(&mut harness, &colour);
+    assert_eq!(
+        harness.state().comparison().unwrap().diagnosis(),
+        ["mirrored"]
+    );
+    // Their program, fixed, writes the file again: the comparison follows with no click.
+    write_theirs(folder.path(), MistakeSet::NONE);
+    let deadline = Instant::now() + Duration::from_secs(60);
+    loop {
+        harness.step();
+        let matched = harness
+            .state()
+            .comparison()
+            .is_some_and(|c| c.difference.pixels_differing() == 0);
+        if matched && !harness.state().comparing() {
+            break;
+        }
+        assert!(
+            Instant::now() < deadline,
+            "their new image was not compared"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    settle(&mut harness);
+    harness.run_steps(2);
+    assert!(label_shown(&harness, "match: yes"));
+}

@@ -13,6 +13,7 @@ use super::request::CompareRequest;
 use crate::compare::judge::{NoDepthRange, judge};
 use crate::compare::picture::{Row, difference_picture};
 use crate::compare::{Deviation, Diagnosis, Difference, Theirs};
+use crate::explore::trace::{PixelTrace, t_of_grey};
 use crate::render::Frame;
 use crate::render::depth_map::DepthRange;
 use crate::scene::Scene;
@@ -89,6 +90,8 @@ pub struct CompareReport {
     pub(crate) diagnosis: Diagnosis,
     /// With a depth image: the range it was most likely made over (`None`: no ramp to fit).
     pub(crate) depth_range_inferred: Option<Option<DepthRange>>,
+    /// With a depth image: the range it was judged under (given, or read back).
+    pub(crate) depth_range_used: Option<DepthRange>,
 }
 
 impl CompareReport {
@@ -176,7 +179,7 @@ pub const COMPARE_JSON_VERSION: u32 = 1;
 impl CompareReport {
     /// The report as one JSON document (docs/compare-json.md), with the `-stats` lines when
     /// given (as numbers where they are).
-    pub fn json(&self, stats: Option<&str>) -> String {
+    pub fn json(&self, stats: Option<&str>, trace: Option<&str>) -> String {
         use serde_json::{Value, json};
         let difference = |d: &Option<Difference>| {
             d.as_ref().map_or(Value::Null, |d| {
@@ -221,6 +224,9 @@ impl CompareReport {
                 }
             }
             document["stats"] = Value::Object(object);
+        }
+        if let Some(trace) = trace {
+            document["trace"] = Value::from(trace.lines().collect::<Vec<_>>());
         }
         let mut text = serde_json::to_string_pretty(&document).unwrap_or_default();
         text.push('\n');
@@ -345,7 +351,51 @@ pub(crate) fn compare(
             depth: judged.depth,
             diagnosis: judged.diagnosis,
             depth_range_inferred: judged.depth_range_inferred,
+            depth_range_used: theirs.depth.as_ref().map(|_| judged.view.depth_range),
         },
         picture,
     ))
+}
+
+/// Their pixel beside the trace of it: their colour and depth bytes at the traced pixel, and
+/// the interval of t their grey stands for over the range the depth image was judged under.
+pub(crate) fn their_pixel_lines(theirs: &TheirImages, traced: &PixelTrace) -> String {
+    let mut text = String::new();
+    let (x, y_up) = (traced.x_px, traced.y_up_px);
+    let (_, height) = traced.size_px;
+    let row = height - 1 - y_up;
+    if let Some(colour) = &theirs.colour {
+        let [r, g, b] = colour.get_pixel(x, row).0;
+        let [er, eg, eb] = traced.colour_bytes;
+        let _ = writeln!(text, "theirs, colour: {r} {g} {b} (exact {er} {eg} {eb})");
+    }
+    if let Some(depth) = &theirs.depth {
+        let grey = depth.get_pixel(x, row).0[0];
+        let exact = traced
+            .grey_byte()
+            .map_or_else(|| "unknown".to_owned(), |byte| byte.to_string());
+        let _ = write!(text, "theirs, depth: grey {grey} (exact {exact})");
+        match traced
+            .depth_range
+            .map(|range| (range, t_of_grey(range, grey)))
+        {
+            Some((range, Some((low, high)))) => {
+                let _ = writeln!(
+                    text,
+                    ": over {} … {} their grey stands for t in [{low}, {high})",
+                    range.min_t, range.max_t
+                );
+            }
+            Some((_, None)) => {
+                let _ = writeln!(
+                    text,
+                    ": grey {grey} is the range's end, or beyond it (or no hit, for 0)"
+                );
+            }
+            None => {
+                let _ = writeln!(text);
+            }
+        }
+    }
+    text
 }

@@ -44,6 +44,8 @@ pub enum Flag {
     CompareFormat,
     /// Timings and counts after rendering.
     Stats,
+    /// The computation behind one pixel, printed.
+    Trace,
     /// The usage text.
     Help,
 }
@@ -81,6 +83,7 @@ pub(crate) const FLAGS: &[FlagSpec] = &[
     FlagSpec { flag: Flag::CompareDepth, name: "-compare_depth", aliases: &[], values: &["DMIN", "DMAX", "FILE"], help: "compare a depth image made over DMIN … DMAX (inferred when left out) with the exact one" },
     FlagSpec { flag: Flag::Diff, name: "-diff", aliases: &[], values: &["FILE"], help: "write the comparison's picture: theirs, exact, heat map (.png/.tga)" },
     FlagSpec { flag: Flag::CompareFormat, name: "-compare_format", aliases: &[], values: &["lines|json"], help: "print the comparison's answer as name: value lines (default) or one JSON document (docs/compare-json.md)" },
+    FlagSpec { flag: Flag::Trace, name: "-trace", aliases: &[], values: &["X", "Y"], help: "print the computation behind pixel (X, Y), Y from the bottom: ray, each sphere's roots, hit, colour, depth grey" },
     FlagSpec { flag: Flag::Stats, name: "-stats", aliases: &[], values: &[], help: "print timings and counts after rendering" },
     FlagSpec { flag: Flag::Help, name: "-help", aliases: &["--help", "-h"], values: &[], help: "print this help" },
 ];
@@ -181,7 +184,7 @@ pub fn usage() -> String {
 mod tests {
     use super::*;
 
-    const ALL: [Flag; 19] = [
+    const ALL: [Flag; 20] = [
         Flag::Input,
         Flag::Size,
         Flag::Output,
@@ -200,6 +203,7 @@ mod tests {
         Flag::Diff,
         Flag::CompareFormat,
         Flag::Stats,
+        Flag::Trace,
         Flag::Help,
     ];
 

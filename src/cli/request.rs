@@ -99,6 +99,8 @@ pub struct RenderRequest {
     pub(crate) quality: Quality,
     /// Print timings and counts after rendering.
     pub stats: bool,
+    /// `-trace X Y`: print the computation behind this pixel (x, y from the bottom).
+    pub(crate) trace: Option<(u32, u32)>,
 }
 
 /// Opening the viewer.
@@ -175,7 +177,8 @@ impl RawArgs {
         } else {
             DepthColourMap::Grey
         };
-        if outputs.is_empty() && compare.is_none() {
+        let trace = self.trace()?;
+        if outputs.is_empty() && compare.is_none() && trace.is_none() {
             return Ok(Command::View(ViewerRequest {
                 input,
                 size_px,
@@ -199,6 +202,7 @@ impl RawArgs {
                 sampling: self.sampling()?,
             },
             stats: self.has(Flag::Stats),
+            trace,
         })))
     }
 
@@ -307,6 +311,25 @@ impl RawArgs {
                 found: text.to_owned(),
             }),
         }
+    }
+
+    /// `-trace X Y`, if given (checked against the image size when the run knows it).
+    fn trace(&self) -> Result<Option<(u32, u32)>, UsageError> {
+        if !self.has(Flag::Trace) {
+            return Ok(None);
+        }
+        let coordinate = |index, what| {
+            let text = self.text(Flag::Trace, index)?;
+            text.parse::<u32>().map_err(|_| UsageError::BadNumber {
+                flag: Flag::Trace,
+                what,
+                found: text.to_owned(),
+            })
+        };
+        Ok(Some((
+            coordinate(0, "a pixel column from 0 (X)")?,
+            coordinate(1, "a pixel row from 0 at the bottom (Y)")?,
+        )))
     }
 
     fn size(&self) -> Result<(u32, u32), UsageError> {
@@ -468,6 +491,12 @@ impl RenderRequest {
             if compare.json {
                 push(Flag::CompareFormat, vec!["json".into()]);
             }
+        }
+        if let Some((x, y)) = self.trace {
+            push(
+                Flag::Trace,
+                vec![x.to_string().into(), y.to_string().into()],
+            );
         }
         if self.stats {
             push(Flag::Stats, Vec::new());

@@ -9,12 +9,15 @@ use std::time::{Duration, Instant};
 
 use image::RgbImage;
 
-use super::compare::{CompareError, CompareReport, TheirImages, compare, read_theirs};
+use super::compare::{
+    CompareError, CompareReport, TheirImages, compare, read_theirs, their_pixel_lines,
+};
 use super::error::UsageError;
 use super::flags::Flag;
 use super::progress::StepProgress;
 use super::streamed::{StreamedError, render_streamed, streams};
 use crate::cli::RenderRequest;
+use crate::explore::trace::{TraceError, trace_pixel};
 use crate::output::WriteError;
 use crate::output::atomic::FileSet;
 use crate::output::depth_file::{check_writable_raw, stage_depth_png16, stage_raw_depth};
@@ -64,6 +67,9 @@ pub enum RunError {
     /// An image to compare could not be read or has the wrong size.
     #[error(transparent)]
     Compare(#[from] CompareError),
+    /// The pixel to trace cannot be traced (exit status 2).
+    #[error("-trace: {0}")]
+    Trace(#[from] TraceError),
 }
 
 impl From<StreamedError> for RunError {
@@ -79,7 +85,7 @@ impl RunError {
     /// The exit status the program ends with.
     pub fn exit_status(&self) -> u8 {
         match self {
-            Self::Usage(_) => 2,
+            Self::Usage(_) | Self::Trace(_) => 2,
             _ => 1,
         }
     }
@@ -111,6 +117,8 @@ pub struct RunReport {
     pub(crate) memory_bound: u64,
     /// What the comparison found (`-compare_output`, `-compare_depth`).
     pub compare: Option<CompareReport>,
+    /// `-trace`: the computation behind the pixel, as text (with their pixel, comparing).
+    pub trace: Option<String>,
 }
 
 impl RunReport {
@@ -318,6 +326,16 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
     };
     let parse = started.elapsed();
     let view = request_view(&scene, request);
+    let traced = match request.trace {
+        Some((x_px, y_up_px)) => Some(trace_pixel(
+            &scene,
+            &view,
+            x_px,
+            y_up_px,
+            known_depth_range(request),
+        )?),
+        None => None,
+    };
     let streamed = streams(request);
     let measuring = Instant::now();
     let render_bound = if streamed {
@@ -359,6 +377,7 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
             disc_tests: streamed.disc_tests,
             memory_bound,
             compare: None,
+            trace: traced.map(|traced| traced.text()),
         });
     }
     let started = Instant::now();
@@ -384,6 +403,14 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
         None => (None, None),
     };
 
+    let trace = traced.map(|mut traced| {
+        if traced.depth_range.is_none() {
+            traced.depth_range = compare_report.as_ref().and_then(|r| r.depth_range_used);
+        }
+        let mut text = traced.text();
+        text.push_str(&their_pixel_lines(&theirs, &traced));
+        text
+    });
     let started = Instant::now();
     write_outputs(request, &frame, diff.as_ref())?;
     Ok(RunReport {
@@ -397,5 +424,17 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
         disc_tests: frame.disc_tests,
         memory_bound,
         compare: compare_report,
+        trace,
     })
+}
+
+/// The depth range a request names: its depth output's, else the range given with their depth
+/// image.
+fn known_depth_range(request: &RenderRequest) -> Option<DepthRange> {
+    request
+        .depth_output
+        .as_ref()
+        .or(request.depth16_output.as_ref())
+        .map(|depth| depth.range)
+        .or_else(|| request.compare.as_ref()?.depth.as_ref()?.range)
 }

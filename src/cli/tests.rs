@@ -30,6 +30,7 @@ fn course_command_line_gives_a_render_request() {
             depth_raw_output: None,
             quality: Quality::default(),
             stats: false,
+            trace: None,
         }))
     );
 }
@@ -235,6 +236,7 @@ fn requests_with_every_setting() -> Vec<RenderRequest> {
             }),
         },
         stats: true,
+        trace: Some((3, 7)),
     };
     let mut requests = vec![
         full.clone(),

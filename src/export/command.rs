@@ -35,6 +35,7 @@ pub(crate) fn export_request(
         depth_raw_output: files.depth_raw.as_deref().map(name),
         quality: *quality,
         stats: false,
+        trace: None,
     }
 }
 

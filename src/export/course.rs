@@ -82,6 +82,7 @@ impl CourseFiles {
             depth_raw_output: None,
             quality: Quality::default(),
             stats: false,
+            trace: None,
         }
         .to_arguments()
         .into_iter()

@@ -27,6 +27,7 @@ pub(crate) use pixels::{OFF_LEVELS, REFERENCE_SAMPLES};
 
 use super::ViewerApp;
 use super::background::{Poll, Task};
+use super::reload::{FileWatcher, WatchState};
 use super::status::Status;
 use crate::compare::picture::{heat_map, heat_map_highlighted, heat_map_marked};
 use crate::compare::their_image::{decode_their_image, read_their_image};
@@ -92,6 +93,8 @@ pub(crate) struct CompareState {
     pointed: Option<usize>,
     /// The gallery's pictures of the known mistakes.
     pub(crate) gallery: gallery::Gallery,
+    /// Their image file, watched: when their program writes it again it is compared again.
+    watched: Option<(PathBuf, ImageKind, FileWatcher)>,
 }
 /// An RGB image as an egui image.
 fn to_colour_image(image: &RgbImage) -> ColorImage {
@@ -133,6 +136,13 @@ impl CompareState {
 
     /// Closes the comparison (the view is free again).
     pub(crate) fn close(&mut self) {
+        self.drop_result();
+        self.watched = None;
+    }
+
+    /// Takes the comparison off the screen (a failed one, or one closed); their file stays
+    /// watched, so a good version written later is compared.
+    fn drop_result(&mut self) {
         self.current = None;
         self.pending = None;
         self.show = CompareShow::Rendered;
@@ -161,11 +171,11 @@ impl CompareState {
             Poll::Done(Ok(pixels)) => pixels,
             Poll::Done(Err(error)) => {
                 // The old result is not left on screen as if it answered this one.
-                self.close();
+                self.drop_result();
                 return Err(Status::error(format!("compare: {error}")));
             }
             Poll::Lost => {
-                self.close();
+                self.drop_result();
                 return Err(Status::error("compare: the comparison stopped"));
             }
         };
@@ -307,12 +317,17 @@ impl CompareState {
 impl ViewerApp {
     /// Opens the image at `path` and compares it with the exact render of the open scene.
     pub(crate) fn compare_with_file(&mut self, path: PathBuf, kind: ImageKind) {
+        let ctx = self.ctx.clone();
+        self.compare.watched = FileWatcher::watch(&path, move || ctx.request_repaint())
+            .ok()
+            .map(|watcher| (path.clone(), kind, watcher));
         self.compare_theirs(path, kind, None, read_their_image);
     }
 
     /// Compares the image `bytes` named `name` (a browser page's dropped or picked file) with the
     /// exact render, as [`Self::compare_with_file`] does a file.
     pub fn compare_with_bytes(&mut self, name: &str, bytes: Arc<[u8]>, kind: ImageKind) {
+        self.compare.watched = None;
         self.compare_theirs(name.into(), kind, None, move |path| {
             decode_their_image(path, &bytes)
         });
@@ -352,6 +367,23 @@ impl ViewerApp {
     /// was judged under (read back from it), and follows the depth range after: it is judged
     /// again under the range the user sets.
     pub(crate) fn poll_comparison(&mut self) {
+        // Their file written again (and settled): read and judged again, its range read anew.
+        // (Asked only between comparisons: a change seen while one runs waits for it.)
+        let seen = self
+            .compare
+            .watched
+            .as_ref()
+            .filter(|_| !self.compare.busy())
+            .map(|(path, kind, watcher)| (path, *kind, watcher.poll()));
+        match seen {
+            Some((path, kind, WatchState::Changed)) => {
+                let path = path.clone();
+                self.compare_theirs(path, kind, None, read_their_image);
+                return;
+            }
+            Some((_, _, WatchState::Settling(wait))) => self.ctx.request_repaint_after(wait),
+            _ => {}
+        }
         if !self.compare.busy() {
             let range = self.viewing.view.depth_range;
             if let Some((path, theirs)) = self.compare.stale_depth_image(range) {
