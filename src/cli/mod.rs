@@ -19,6 +19,7 @@ pub mod run;
 mod streamed;
 #[cfg(test)]
 mod tests;
+mod to_arguments;
 
 pub use error::UsageError;
 pub use flags::{Flag, usage};
