@@ -273,7 +273,8 @@ fn auto_range_brackets_the_visible_t() {
 }
 
 #[test]
-fn the_probe_reports_the_sphere_under_the_pointer_and_a_click_pins_it() {
+fn the_probe_reports_the_sphere_under_the_pointer_a_click_pins_it_and_trace_shows_its_computation()
+{
     let mut harness = viewer("scene1_04.txt");
     let (frame, shown_view) = {
         let (frame, view) = harness.state().shown_frame().unwrap();
@@ -367,6 +368,23 @@ fn the_probe_reports_the_sphere_under_the_pointer_and_a_click_pins_it() {
             .is_some(),
         "the probe's lines name the sphere"
     );
+    // Trace: the course's computation behind the pinned pixel, in a window; it sees the
+    // oracle's sphere, and its colour bytes are the frame's.
+    click(&mut harness, "Trace");
+    harness.run_steps(3);
+    let sphere = oracle.sphere[oracle.index(pinned.x_px, pinned.y_up_px)];
+    let [r, g, b] = pinned.colour_rgb;
+    for expected in [
+        format!("pixel: x {} y {} of", pinned.x_px, pinned.y_up_px),
+        format!("hit: sphere {sphere} at t = "),
+        format!("floor(255·c) = {r} {g} {b}"),
+    ] {
+        assert!(
+            harness.query_by_label_contains(&expected).is_some(),
+            "the trace says {expected}"
+        );
+    }
+    assert!(harness.query_by_label_contains("Pixel trace").is_some());
     click(&mut harness, "Unpin");
     harness.run_steps(2);
     assert_eq!(harness.state().pinned_probe(), None);

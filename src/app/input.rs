@@ -205,6 +205,9 @@ impl ViewerApp {
         if gestures.unpin {
             self.apply(Action::Unpin);
         }
+        if gestures.trace {
+            self.open_trace();
+        }
     }
 
     /// Orbits around the scene's centre: `yaw_rad` as a drag to the right, `pitch_rad` up.

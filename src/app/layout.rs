@@ -40,6 +40,8 @@ pub(crate) struct Panels {
     pub(crate) help_open: bool,
     /// The controls drawer of narrow windows is open.
     pub(crate) drawer_open: bool,
+    /// The pixel trace window's text, while it is open.
+    pub(crate) trace: Option<String>,
 }
 
 /// Below this window width the controls are closed at first and the toolbar's Controls opens
@@ -127,6 +129,7 @@ impl ViewerApp {
             self.scene.error = None;
         }
         self.confirm_ui(&ctx);
+        self.trace_ui(&ctx);
         if self.panels.help_open {
             self.panels.help_open = help::help_ui(&ctx);
         }

@@ -13,6 +13,7 @@
 //! * [`compare`]: their image (or the chosen quality) against the exact render, the diagnosis
 //! * [`confirm`]: asking before a write replaces files; [`writes`]: the writes' state
 //! * [`course_files`]: the course's 200×200 TGA pair and command line for the open scene
+//! * [`pixel_trace`]: the course's computation behind the pinned pixel, in a window
 //! * [`saved_views`]: undo and redo, named views, the view each scene was last seen in
 //! * [`viewing`]: auto range and follow, frame all, resets, undo and redo, named views
 //! * [`input`]: shortcuts, dropped files, keyboard and pointer navigation
@@ -36,6 +37,7 @@ pub(crate) mod input;
 pub(crate) mod inspect;
 pub(crate) mod layout;
 pub mod loaded_scene;
+pub(crate) mod pixel_trace;
 pub(crate) mod reload;
 pub mod render_job;
 pub(crate) mod render_requests;

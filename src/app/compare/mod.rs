@@ -31,6 +31,7 @@ use super::reload::{FileWatcher, WatchState};
 use super::status::Status;
 use crate::compare::picture::{heat_map, heat_map_highlighted, heat_map_marked};
 use crate::compare::their_image::{decode_their_image, read_their_image};
+use crate::explore::trace::{PixelTrace, t_of_grey};
 use crate::render::View;
 use crate::render::depth_map::DepthRange;
 
@@ -260,6 +261,35 @@ impl CompareState {
                 .as_ref()
                 .map_or(0, |flags| flags.iter().filter(|&&f| f).count());
             (texture, *index, count)
+        })
+    }
+
+    /// Their pixel beside a trace of it, while their image is compared at the traced size: its
+    /// value and, for a depth image, the t its grey stands for.
+    pub(crate) fn their_pixel(&self, traced: &PixelTrace) -> Option<String> {
+        let pixels = &self.current.as_ref()?.pixels;
+        if !matches!(pixels.source, CompareSource::File(_))
+            || pixels.theirs.dimensions() != traced.size_px
+        {
+            return None;
+        }
+        let row = traced.size_px.1 - 1 - traced.y_up_px;
+        let [r, g, b] = pixels.theirs.get_pixel(traced.x_px, row).0;
+        Some(match pixels.kind {
+            ImageKind::Colour => {
+                let [er, eg, eb] = traced.colour_bytes;
+                format!("theirs, colour: {r} {g} {b} (exact {er} {eg} {eb})\n")
+            }
+            ImageKind::Depth => {
+                let range = pixels.view.depth_range;
+                match t_of_grey(range, r) {
+                    Some((low, high)) => format!(
+                        "theirs, depth: grey {r}: over {} … {} it stands for t in [{low}, {high})\n",
+                        range.min_t, range.max_t
+                    ),
+                    None => format!("theirs, depth: grey {r}: the range's end, or beyond it\n"),
+                }
+            }
         })
     }
 

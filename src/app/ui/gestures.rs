@@ -35,6 +35,8 @@ pub(crate) struct ImageGestures {
     pub(crate) clicked_px: Option<DVec2>,
     /// "Unpin" was clicked.
     pub(crate) unpin: bool,
+    /// "Trace" was clicked.
+    pub(crate) trace: bool,
     /// A histogram handle moved the depth range.
     pub(crate) depth_range_dragged: bool,
 }

@@ -233,9 +233,9 @@ pub(crate) fn images_ui(
             let width = half_width(ui);
             ui.vertical(|ui| {
                 ui.set_width(width);
-                if probe_ui(ui, probe_lines, has_pin, layout.footer_points - 4.0) {
-                    gestures.unpin = true;
-                }
+                let asked = probe_ui(ui, probe_lines, has_pin, layout.footer_points - 4.0);
+                gestures.unpin = asked.unpin;
+                gestures.trace = asked.trace;
             });
             ui.vertical(|ui| {
                 ui.set_width(width);

@@ -3,6 +3,15 @@
 
 use egui::{RichText, Sense, Ui, Vec2};
 
+/// What the probe's buttons asked for.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct ProbeAsked {
+    /// "Unpin" was clicked.
+    pub(crate) unpin: bool,
+    /// "Trace" was clicked.
+    pub(crate) trace: bool,
+}
+
 /// Font size of the probe's lines, in points.
 const PROBE_FONT_POINTS: f32 = 11.0;
 
@@ -11,11 +20,11 @@ const BUTTONS_POINTS: f32 = 52.0;
 
 /// The probe's lines in a block `height` points high: the lines on the left, wrapped to its
 /// width and scrolled (the scroll bar shown whenever they do not fit), the buttons on the right.
-/// Returns true when "Unpin" was clicked.
-pub(crate) fn probe_ui(ui: &mut Ui, lines: &[String], has_pin: bool, height: f32) -> bool {
+/// Returns the buttons clicked.
+pub(crate) fn probe_ui(ui: &mut Ui, lines: &[String], has_pin: bool, height: f32) -> ProbeAsked {
     let (rect, _) = ui.allocate_exact_size(Vec2::new(ui.available_width(), height), Sense::hover());
     let (text_rect, buttons_rect) = rect.split_left_right_at_x(rect.right() - BUTTONS_POINTS);
-    let mut unpin = false;
+    let mut asked = ProbeAsked::default();
     // The buttons apart from the lines, so they stay put while the hover lines come and go.
     let mut buttons = ui.new_child(
         egui::UiBuilder::new()
@@ -28,7 +37,18 @@ pub(crate) fn probe_ui(ui: &mut Ui, lines: &[String], has_pin: bool, height: f32
             .on_hover_text("Release the pinned pixel (Escape)")
             .clicked()
     {
-        unpin = true;
+        asked.unpin = true;
+    }
+    if has_pin
+        && buttons
+            .small_button("Trace")
+            .on_hover_text(
+                "the course's computation behind the pinned pixel: ray, each sphere's roots, \
+                 hit, colour, depth grey (as -trace X Y prints it)",
+            )
+            .clicked()
+    {
+        asked.trace = true;
     }
     if !lines.is_empty()
         && buttons
@@ -61,5 +81,5 @@ pub(crate) fn probe_ui(ui: &mut Ui, lines: &[String], has_pin: bool, height: f32
                 );
             }
         });
-    unpin
+    asked
 }
