@@ -165,7 +165,7 @@ test("a wrong image dropped on the page gets the command line's diagnosis", asyn
   await context.close();
 });
 
-test("an export downloads the files the command line writes for the same request", async () => {
+test("an export downloads the files the command line writes for the same request, named after the scene", async () => {
   const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_02.txt`);
   await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_02.txt");
   await settled(page);
@@ -183,19 +183,19 @@ test("an export downloads the files the command line writes for the same request
     await download.saveAs(path.join(folder, "page", name));
   }
   assert.deepEqual(names.sort(), [
-    "raytracer_both.png", "raytracer_colour.png", "raytracer_command.sh", "raytracer_depth.png", "raytracer_scene.txt",
+    "scene1_02_both.png", "scene1_02_colour.png", "scene1_02_command.sh", "scene1_02_depth.png", "scene1_02_scene.txt",
   ]);
   // The downloaded command, run by the native binary beside the downloaded scene.
   const again = path.join(folder, "again");
   fs.mkdirSync(again);
-  for (const name of ["raytracer_command.sh", "raytracer_scene.txt"]) {
+  for (const name of ["scene1_02_command.sh", "scene1_02_scene.txt"]) {
     fs.copyFileSync(path.join(folder, "page", name), path.join(again, name));
   }
-  execFileSync("sh", ["raytracer_command.sh"], {
+  execFileSync("sh", ["scene1_02_command.sh"], {
     cwd: again,
     env: { ...process.env, PATH: `${path.dirname(path.resolve(env.raytracer))}:${process.env.PATH}` },
   });
-  for (const name of ["raytracer_colour.png", "raytracer_depth.png"]) {
+  for (const name of ["scene1_02_colour.png", "scene1_02_depth.png"]) {
     assert.ok(
       fs.readFileSync(path.join(again, name)).equals(fs.readFileSync(path.join(folder, "page", name))),
       `${name}: the page's download and the command line's file are the same bytes`,
