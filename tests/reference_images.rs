@@ -221,6 +221,29 @@ fn the_pixel_trace_beside_their_image_gives_their_pixel_and_the_t_their_grey_sta
     assert!(low <= t && t < high, "{t} in [{low}, {high}) of\n{text}");
     assert!(text.contains("over 12 … 17"), "{text}");
 
+    // As JSON, the trace's lines are the document's `trace` array.
+    let output = Command::new(env!("CARGO_BIN_EXE_raytracer"))
+        .arg("-input")
+        .arg(project_path("scenes/scene1_04.txt"))
+        .arg("-compare_output")
+        .arg(project_path("tests/reference/output1_04.png"))
+        .args(["-trace", "100", "100", "-compare_format", "json"])
+        .current_dir(folder.path())
+        .output()
+        .unwrap();
+    let document: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    let lines = document["trace"].as_array().expect("a trace array");
+    assert_eq!(
+        lines[0],
+        "pixel: x 100 y 100 of 200×200 (y from the bottom; row 99 from the top)"
+    );
+    assert!(
+        lines
+            .iter()
+            .any(|line| line.as_str().unwrap().starts_with("theirs, colour: ")),
+        "{lines:?}"
+    );
+
     // Outside the image: a one-line error, exit status 2, nothing written.
     let output = Command::new(env!("CARGO_BIN_EXE_raytracer"))
         .arg("-input")
