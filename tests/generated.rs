@@ -100,22 +100,22 @@ fn generated_programs_get_no_false_statement_and_are_explained() {
     );
 }
 
-/// Depth drawn from the hit point's |z| (a knob the seeded draw never turns): on scene1_04, whose
-/// camera looks along a diagonal, |z| is neither t nor another coordinate, and the answer must
-/// say it, with no other statement.
-#[test]
-fn depth_drawn_from_the_hit_points_z_is_said_as_such() {
+/// The diagnosis of `program`'s images of the course scene `name` at 200×200, the program drawing
+/// depth over `theirs` and the diagnosis given `given`: the statements said (with values), and
+/// the pixels left unexplained.
+fn diagnosed(
+    name: &str,
+    program: &student::Program,
+    theirs: (f64, f64),
+    given: (f64, f64),
+) -> (Vec<String>, usize) {
     use raytracer::compare::{Theirs, diagnose};
     let scene = raytracer::scene::load_scene(
-        &std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_04.txt"),
+        &std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.txt")),
     )
     .unwrap();
-    let program = student::Program {
-        depth: student::DepthRule::AbsZ,
-        ..student::Program::course()
-    };
-    let (colour, depth) = student::render(&program, &scene, 200, 200, 0.0, 2.0);
-    let view = View::of_camera(&scene.camera, 200, 200, DepthRange::new(0.0, 2.0));
+    let (colour, depth) = student::render(program, &scene, 200, 200, theirs.0, theirs.1);
+    let view = View::of_camera(&scene.camera, 200, 200, DepthRange::new(given.0, given.1));
     let answer = diagnose(
         &scene,
         &view,
@@ -124,47 +124,41 @@ fn depth_drawn_from_the_hit_points_z_is_said_as_such() {
             depth: Some(&depth),
         },
     );
-    let said: Vec<String> = answer
+    let said = answer
         .stated()
         .iter()
         .map(raytracer::compare::Deviation::name_and_values)
         .collect();
-    assert_eq!(said, ["depth-quantity |z|"], "{answer:?}");
-    assert_eq!(answer.unexplained_pixels(), 0, "{said:?}");
+    (said, answer.unexplained_pixels())
+}
+
+/// Depth drawn from the hit point's |z| (a knob the seeded draw never turns): on scene1_04, whose
+/// camera looks along a diagonal, |z| is neither t nor another coordinate, and the answer must
+/// say it, with no other statement.
+#[test]
+fn depth_drawn_from_the_hit_points_z_is_said_as_such() {
+    let program = student::Program {
+        depth: student::DepthRule::AbsZ,
+        ..student::Program::course()
+    };
+    let (said, left) = diagnosed("scene1_04", &program, (0.0, 2.0), (0.0, 2.0));
+    assert_eq!(said, ["depth-quantity |z|"]);
+    assert_eq!(left, 0, "{said:?}");
 }
 
 /// Depth over a range of the program's own (not the one given) and not clamped: the wrap must be
 /// fitted beside the range, where no named point (the given range, reversed or scaled) reaches.
 #[test]
 fn an_own_depth_range_that_wraps_is_said_with_its_range() {
-    use raytracer::compare::{Theirs, diagnose};
-    let scene = raytracer::scene::load_scene(
-        &std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_05.txt"),
-    )
-    .unwrap();
     let program = student::Program {
         outside: student::OutsideRule::Wrap,
         ..student::Program::course()
     };
-    let (colour, depth) = student::render(&program, &scene, 200, 200, 15.5, 18.0);
-    let view = View::of_camera(&scene.camera, 200, 200, DepthRange::new(14.5, 19.5));
-    let answer = diagnose(
-        &scene,
-        &view,
-        Theirs {
-            colour: Some(&colour),
-            depth: Some(&depth),
-        },
-    );
-    let said: Vec<String> = answer
-        .stated()
-        .iter()
-        .map(raytracer::compare::Deviation::name_and_values)
-        .collect();
+    let (said, left) = diagnosed("scene1_05", &program, (15.5, 18.0), (14.5, 19.5));
     assert!(said.iter().any(|s| s == "depth-no-clamp"), "{said:?}");
     assert!(
         said.iter().any(|s| s.starts_with("depth-range")),
         "{said:?}"
     );
-    assert_eq!(answer.unexplained_pixels(), 0, "{said:?}");
+    assert_eq!(left, 0, "{said:?}");
 }
