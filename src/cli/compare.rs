@@ -13,7 +13,7 @@ use super::request::CompareRequest;
 use crate::compare::judge::{NoDepthRange, judge};
 use crate::compare::picture::{Row, difference_picture};
 use crate::compare::{Deviation, Diagnosis, Difference, Theirs};
-use crate::explore::trace::{PixelTrace, t_of_grey};
+use crate::explore::trace::PixelTrace;
 use crate::render::Frame;
 use crate::render::depth_map::DepthRange;
 use crate::scene::Scene;
@@ -360,42 +360,14 @@ pub(crate) fn compare(
 /// Their pixel beside the trace of it: their colour and depth bytes at the traced pixel, and
 /// the interval of t their grey stands for over the range the depth image was judged under.
 pub(crate) fn their_pixel_lines(theirs: &TheirImages, traced: &PixelTrace) -> String {
-    let mut text = String::new();
-    let (x, y_up) = (traced.x_px, traced.y_up_px);
-    let (_, height) = traced.size_px;
-    let row = height - 1 - y_up;
-    if let Some(colour) = &theirs.colour {
-        let [r, g, b] = colour.get_pixel(x, row).0;
-        let [er, eg, eb] = traced.colour_bytes;
-        let _ = writeln!(text, "theirs, colour: {r} {g} {b} (exact {er} {eg} {eb})");
-    }
-    if let Some(depth) = &theirs.depth {
-        let grey = depth.get_pixel(x, row).0[0];
-        let exact = traced
-            .grey_byte()
-            .map_or_else(|| "unknown".to_owned(), |byte| byte.to_string());
-        let _ = write!(text, "theirs, depth: grey {grey} (exact {exact})");
-        match traced
-            .depth_range
-            .map(|range| (range, t_of_grey(range, grey)))
-        {
-            Some((range, Some((low, high)))) => {
-                let _ = writeln!(
-                    text,
-                    ": over {} … {} their grey stands for t in [{low}, {high})",
-                    range.min_t, range.max_t
-                );
-            }
-            Some((_, None)) => {
-                let _ = writeln!(
-                    text,
-                    ": grey {grey} is the range's end, or beyond it (or no hit, for 0)"
-                );
-            }
-            None => {
-                let _ = writeln!(text);
-            }
-        }
-    }
-    text
+    let row = traced.size_px.1 - 1 - traced.y_up_px;
+    let colour = theirs
+        .colour
+        .as_ref()
+        .map(|image| traced.their_colour_line(image.get_pixel(traced.x_px, row).0));
+    let depth = theirs
+        .depth
+        .as_ref()
+        .map(|image| traced.their_depth_line(image.get_pixel(traced.x_px, row).0[0]));
+    colour.into_iter().chain(depth).collect()
 }

@@ -295,3 +295,33 @@ pub fn t_of_grey(range: DepthRange, grey: u8) -> Option<(f64, f64)> {
     let (a, b) = (t_at(f64::from(grey) + 1.0), t_at(f64::from(grey)));
     Some((a.min(b), a.max(b)))
 }
+
+impl PixelTrace {
+    /// Their colour pixel `rgb` beside the exact bytes, as a line.
+    pub fn their_colour_line(&self, [r, g, b]: [u8; 3]) -> String {
+        let [er, eg, eb] = self.colour_bytes;
+        format!("theirs, colour: {r} {g} {b} (exact {er} {eg} {eb})\n")
+    }
+
+    /// Their depth grey beside the exact one, and the t it stands for over the trace's range, as
+    /// a line.
+    pub fn their_depth_line(&self, grey: u8) -> String {
+        let exact = self
+            .grey_byte()
+            .map_or_else(|| "unknown".to_owned(), |byte| byte.to_string());
+        let head = format!("theirs, depth: grey {grey} (exact {exact})");
+        match self
+            .depth_range
+            .map(|range| (range, t_of_grey(range, grey)))
+        {
+            Some((range, Some((low, high)))) => format!(
+                "{head}: over {} … {} their grey stands for t in [{low}, {high})\n",
+                range.min_t, range.max_t
+            ),
+            Some((_, None)) => {
+                format!("{head}: grey {grey} is the range's end, or beyond it (or no hit, for 0)\n")
+            }
+            None => format!("{head}\n"),
+        }
+    }
+}

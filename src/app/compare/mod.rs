@@ -31,7 +31,7 @@ use super::reload::{FileWatcher, WatchState};
 use super::status::Status;
 use crate::compare::picture::{heat_map, heat_map_highlighted, heat_map_marked};
 use crate::compare::their_image::{decode_their_image, read_their_image};
-use crate::explore::trace::{PixelTrace, t_of_grey};
+use crate::explore::trace::PixelTrace;
 use crate::render::View;
 use crate::render::depth_map::DepthRange;
 
@@ -274,22 +274,14 @@ impl CompareState {
             return None;
         }
         let row = traced.size_px.1 - 1 - traced.y_up_px;
-        let [r, g, b] = pixels.theirs.get_pixel(traced.x_px, row).0;
+        let pixel = pixels.theirs.get_pixel(traced.x_px, row).0;
         Some(match pixels.kind {
-            ImageKind::Colour => {
-                let [er, eg, eb] = traced.colour_bytes;
-                format!("theirs, colour: {r} {g} {b} (exact {er} {eg} {eb})\n")
+            ImageKind::Colour => traced.their_colour_line(pixel),
+            ImageKind::Depth => PixelTrace {
+                depth_range: Some(pixels.view.depth_range),
+                ..traced.clone()
             }
-            ImageKind::Depth => {
-                let range = pixels.view.depth_range;
-                match t_of_grey(range, r) {
-                    Some((low, high)) => format!(
-                        "theirs, depth: grey {r}: over {} … {} it stands for t in [{low}, {high})\n",
-                        range.min_t, range.max_t
-                    ),
-                    None => format!("theirs, depth: grey {r}: the range's end, or beyond it\n"),
-                }
-            }
+            .their_depth_line(pixel[0]),
         })
     }
 
