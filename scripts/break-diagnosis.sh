@@ -32,9 +32,9 @@ no-file-order~src/compare/fit/hit_rule.rs~    for visible in [Visible::Nearest, 
 no-near-root-only~src/compare/fit/hit_rule.rs~    (0.0, false, false),\n~    (0.0, true, false),\n
 no-square-root-toggle~src/compare/fit/hit_rule.rs~        square_root: !rule.square_root,~        square_root: rule.square_root,
 no-coordinate-quantity~src/compare/fit/depth.rs~    Quantity::AbsCoordinate(2),\n~    Quantity::AbsCoordinate(1),\n
-no-wrapped-depth~src/compare/fit/depth.rs~            Outside::Wrap,\n~
-no-rounded-bytes~src/compare/fit/mod.rs~        (true, None),\n~
-no-other-background~src/compare/fit/mod.rs~        (false, seen_background),\n~
+no-wrapped-depth~src/compare/fit/depth.rs~[Outside::Clamp, Outside::Wrap, Outside::Black];~[Outside::Clamp, Outside::Clamp, Outside::Black];
+no-rounded-bytes~src/compare/fit/mod.rs~    for rounded in [false, true] {~    for rounded in [false, false] {
+no-other-background~src/compare/fit/mod.rs~        for background in [None, seen_background] {~        for background in [None, None] {
 no-named-snap~src/compare/fit/mod.rs~        && results[first_named].0 <= results[0].0 + tolerance~        && false
 no-polish~src/compare/fit/polish.rs~    let polished = polish_on(scorer, model, step);~    let polished = *model;
 few-lm-steps~src/compare/fit/mod.rs~const MORE_STEPS: usize = 40;~const MORE_STEPS: usize = 1;

@@ -120,6 +120,10 @@ fn ramp_pixels(theirs: &image::RgbImage, hits: &Hits, rounded: bool) -> Vec<(usi
     ramp.into_iter().step_by(every).collect()
 }
 
+/// What a program may do with a value outside the range (besides drawing it in a colour): the
+/// one list both the fitted and the named maps try.
+const OUTSIDE_RULES: [Outside; 3] = [Outside::Clamp, Outside::Wrap, Outside::Black];
+
 /// The quantities a depth image may map.
 const QUANTITIES: [Quantity; 8] = [
     Quantity::T,
@@ -188,12 +192,7 @@ fn fit_depth_tilted_or_not(scorer: &mut Scorer<'_>, model: &Model, tilt: bool) -
     let background = colour_bytes(scorer.scene.background, best.rounded);
     let mut more = Vec::new();
     for no_hit in [[0; 3], no_hit_seen.unwrap_or([0; 3]), background] {
-        for outside in [
-            Outside::Clamp,
-            Outside::Wrap,
-            Outside::Black,
-            Outside::Colour(no_hit),
-        ] {
+        for outside in OUTSIDE_RULES.into_iter().chain([Outside::Colour(no_hit)]) {
             let mut with = best;
             with.depth.no_hit = no_hit;
             with.depth.outside = outside;
@@ -330,15 +329,12 @@ fn snap_to_range(scorer: &mut Scorer<'_>, fitted: Model) -> Model {
                 map.at_zero = 1.0 - map.at_zero;
                 map.per_unit = -map.per_unit;
             }
-            for (outside, no_hit) in [
-                (fitted.depth.outside, fitted.depth.no_hit),
-                (Outside::Clamp, [0; 3]),
-                (Outside::Wrap, [0; 3]),
-                (Outside::Black, [0; 3]),
-                (Outside::Clamp, fitted.depth.no_hit),
-                (Outside::Wrap, fitted.depth.no_hit),
-                (Outside::Black, fitted.depth.no_hit),
-            ] {
+            let rules = [[0; 3], fitted.depth.no_hit]
+                .into_iter()
+                .flat_map(|no_hit| OUTSIDE_RULES.map(|outside| (outside, no_hit)));
+            for (outside, no_hit) in
+                std::iter::once((fitted.depth.outside, fitted.depth.no_hit)).chain(rules)
+            {
                 let mut with = fitted;
                 with.depth = DepthMap {
                     outside,

@@ -189,24 +189,30 @@ fn fit_colour(
     if scorer.theirs.colour.is_none() {
         return *model;
     }
-    let mut best = (scorer.score(model), *model);
-    // Known mistakes before fitted values: on a tie the first is kept, the rest are seen.
-    for (rounded, background) in [
-        (false, None),
-        (true, None),
-        (false, seen_background),
-        (true, seen_background),
-    ] {
-        let mut candidate = *model;
-        candidate.rounded = rounded;
-        candidate.background = background;
-        let score = scorer.score(&candidate);
-        seen.push((score, candidate));
-        if score < best.0 {
-            best = (score, candidate);
+    let scene_background = scorer.scene.background;
+    let mut best: Option<(usize, Model)> = None;
+    // Known mistakes before fitted values: on a tie the first is kept, the rest are seen. The
+    // scene's own background, in the bytes of either rounding, is no other background: each
+    // picture is tried once.
+    let mut tried = Vec::new();
+    for rounded in [false, true] {
+        for background in [None, seen_background] {
+            let mut candidate = *model;
+            candidate.rounded = rounded;
+            candidate.background =
+                background.filter(|&c| c != colour_bytes(scene_background, rounded));
+            if tried.contains(&candidate) {
+                continue;
+            }
+            tried.push(candidate);
+            let score = scorer.score(&candidate);
+            seen.push((score, candidate));
+            if best.is_none_or(|(least, _)| score < least) {
+                best = Some((score, candidate));
+            }
         }
     }
-    best.1
+    best.map_or(*model, |(_, chosen)| chosen)
 }
 
 /// Fits a model to their images (see the module docs).
