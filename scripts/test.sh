@@ -9,12 +9,14 @@
 #   * mesa-vulkan-drivers, libvulkan1, libgl1-mesa-dri, libegl1: software GPU (lavapipe/llvmpipe)
 #     for the window and for egui_kittest's wgpu rendering
 #   * libxkbcommon-x11-0, libx11-xcb1, libxcursor1, libxrandr2, libxi6: what winit loads under X11
-#   * fonts-dejavu-core: a font for the screenshot's window decorations (none are drawn by Xvfb)
+#   * fonts-dejavu-core: a font for the screenshot's window decorations (none are drawn by Xvfb), and
+#     Arabic; fonts-wqy-microhei: Chinese, Japanese and Korean (tests/window_text.rs: the viewer
+#     draws text in other scripts from the system's fonts)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(xvfb xauth xdotool imagemagick strace mesa-vulkan-drivers libvulkan1 libgl1-mesa-dri libegl1
-          libxkbcommon-x11-0 libx11-xcb1 libxcursor1 libxrandr2 libxi6 fonts-dejavu-core)
+          libxkbcommon-x11-0 libx11-xcb1 libxcursor1 libxrandr2 libxi6 fonts-dejavu-core fonts-wqy-microhei)
 if command -v dpkg >/dev/null 2>&1; then
   missing=()
   for package in "${packages[@]}"; do

@@ -7,7 +7,10 @@
 //!   as eframe measures it);
 //! * `frame RENDER_MS LATENCY_MS WIDTH HEIGHT`: a new frame from the worker — its render time
 //!   (what the status bar shows), and the time from the UI frame that changed the view to the
-//!   one that takes the picture of it in.
+//!   one that takes the picture of it in;
+//! * `missing-glyphs N NAME`: the scene's name as the status bar shows it, and how many of its
+//!   characters no font has (each drawn as a box), whenever either changes — text in other
+//!   scripts comes from the system's fonts, looked up as it appears.
 
 use std::fs::File;
 use std::io::{BufWriter, Write};
@@ -19,6 +22,8 @@ pub const FRAME_LOG_VARIABLE: &str = "RAYTRACER_FRAME_LOG";
 /// An open frame log.
 pub(crate) struct FrameLog {
     out: BufWriter<File>,
+    /// The last `missing-glyphs` line written.
+    glyphs_line: String,
 }
 
 impl FrameLog {
@@ -28,6 +33,7 @@ impl FrameLog {
         let file = File::create(path).ok()?;
         Some(Self {
             out: BufWriter::new(file),
+            glyphs_line: String::new(),
         })
     }
 
@@ -55,5 +61,22 @@ impl FrameLog {
         );
         // Written as it goes: the script stops the viewer with a signal.
         let _ = self.out.flush();
+    }
+
+    /// How many characters of `name` (the scene's, in the status bar) no font has, asked of the
+    /// fonts that draw it (the system's fonts found as the characters appear included).
+    pub(crate) fn missing_glyphs(&mut self, ctx: &egui::Context, name: &str) {
+        let font = egui::FontId::proportional(14.0);
+        let missing = ctx.fonts_mut(|fonts| {
+            name.chars()
+                .filter(|&c| !c.is_whitespace() && !fonts.has_glyph(&font, c))
+                .count()
+        });
+        let line = format!("missing-glyphs {missing} {name}");
+        if line != self.glyphs_line {
+            let _ = writeln!(self.out, "{line}");
+            let _ = self.out.flush();
+            self.glyphs_line = line;
+        }
     }
 }

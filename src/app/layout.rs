@@ -203,7 +203,7 @@ impl ViewerApp {
     }
 
     /// What the status bar shows now.
-    fn status_line(&self) -> StatusLine<'_> {
+    pub(super) fn status_line(&self) -> StatusLine<'_> {
         let shown = self.frames.shown.as_ref();
         StatusLine {
             render_ms: shown.map(|s| s.render_ms),

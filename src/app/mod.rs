@@ -204,6 +204,12 @@ impl eframe::App for ViewerApp {
         for action in actions {
             self.apply(action);
         }
+        if self.frames.log.is_some() {
+            let name = self.status_line().scene_name;
+            if let Some(log) = &mut self.frames.log {
+                log.missing_glyphs(&ctx, &name);
+            }
+        }
         self.viewing
             .history
             .observe(&self.viewing.view, web_time::Instant::now());
