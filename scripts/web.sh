@@ -59,6 +59,9 @@ browser_tools() {
   command -v node >/dev/null 2>&1 || missing+=(nodejs)
   command -v npm >/dev/null 2>&1 || missing+=(npm)
   command -v convert >/dev/null 2>&1 || missing+=(imagemagick)
+  # A CJK font for the browser: the page draws a character egui's fonts lack with the browser's
+  # fonts (tests/web: a scene named in other scripts).
+  [ -e /usr/share/fonts/truetype/wqy/wqy-microhei.ttc ] || missing+=(fonts-wqy-microhei)
   if [ ${#missing[@]} -gt 0 ]; then
     sudo=""
     [ "$(id -u)" -ne 0 ] && sudo="sudo"

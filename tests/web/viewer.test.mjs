@@ -238,3 +238,42 @@ test("settings survive a reload of the page in the browser's storage", async () 
   assert.equal(await page.evaluate(() => window.raytracer.colour_map()), "Turbo");
   await context.close();
 });
+
+test("a scene named in other scripts shows its name in the browser's fonts, not as boxes", async () => {
+  // Each word is dropped as a scene's name, and so is the same word in private-use characters,
+  // which no font has: each drawn as egui's box. A word drawn as text differs from its boxes.
+  // The status bar's message is compared from its separator on (the render time before it
+  // changes from frame to frame).
+  const { page, context, errors } = await openViewer(browser, site.url);
+  await settled(page);
+  const scene = fs.readFileSync(path.join(env.scenes, "scene1_01.txt"));
+  const message = async (name) => {
+    await dropFile(page, name, scene);
+    await page.waitForFunction((n) => window.raytracer.scene_name() === n, name);
+    await settled(page);
+    await page.waitForTimeout(300);
+    const size = page.viewportSize();
+    const clip = { x: 0, y: size.height - 24, width: size.width, height: 24 };
+    const { width, height, rgb } = pngToRgb(await page.screenshot({ clip }));
+    const at = (x, y) => rgb.subarray((y * width + x) * 3, (y * width + x) * 3 + 3).toString("hex");
+    const background = at(width - 2, height - 5);
+    const separator = [...Array(width).keys()].find((x) => {
+      const top = at(x, 5);
+      return top !== background && [...Array(height - 10).keys()].every((y) => at(x, 5 + y) === top);
+    });
+    assert.ok(separator !== undefined, "no separator in the status bar");
+    return [...Array(height).keys()]
+      .map((y) => rgb.subarray((y * width + separator) * 3, (y + 1) * width * 3).toString("hex"))
+      .join("\n");
+  };
+  const boxed = [];
+  for (const word of ["作业一", "場面", "장면", "мышь", "σκηνή", "مشهد"]) {
+    const asBoxes = [...word].map((_, i) => String.fromCodePoint(0xe000 + i)).join("");
+    if ((await message(`${word}.txt`)) === (await message(`${asBoxes}.txt`))) boxed.push(word);
+  }
+  assert.deepEqual(boxed, [], "words drawn as boxes");
+  // And the comparison can tell: the same boxes twice are the same picture.
+  assert.equal(await message("\ue000\ue001.txt"), await message("\ue000\ue001.txt"));
+  assert.deepEqual(errors, []);
+  await context.close();
+});
