@@ -64,8 +64,8 @@ fn a_scene_named_in_other_scripts_is_drawn_with_no_box() {
     }
     let last = lines
         .lines()
-        .filter_map(|line| line.strip_prefix("missing-glyphs "))
-        .last()
+        .rev()
+        .find_map(|line| line.strip_prefix("missing-glyphs "))
         .unwrap_or_else(|| panic!("no missing-glyphs line in the frame log: {lines}"));
     let (count, name) = last.split_once(' ').unwrap();
     assert!(

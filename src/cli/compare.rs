@@ -12,6 +12,7 @@ use super::flags::Flag;
 use super::request::CompareRequest;
 use crate::compare::judge::{NoDepthRange, judge};
 use crate::compare::picture::{Row, difference_picture};
+use crate::compare::their_image::read_their_image;
 use crate::compare::{Deviation, Diagnosis, Difference, Theirs};
 use crate::explore::trace::PixelTrace;
 use crate::render::Frame;
@@ -234,18 +235,13 @@ impl CompareReport {
     }
 }
 
-/// Reads one image to compare.
+/// Reads one image to compare (within the limits of [`read_their_image`]).
 fn read_image(flag: Flag, path: &Path) -> Result<RgbImage, CompareError> {
-    let image = image::ImageReader::open(path)
-        .and_then(image::ImageReader::with_guessed_format)
-        .map_err(|error| error.to_string())
-        .and_then(|reader| reader.decode().map_err(|error| error.to_string()))
-        .map_err(|message| CompareError::ReadImage {
-            flag,
-            path: path.display().to_string(),
-            message,
-        })?;
-    Ok(image.to_rgb8())
+    read_their_image(path).map_err(|error| CompareError::ReadImage {
+        flag,
+        path: path.display().to_string(),
+        message: error.reason(),
+    })
 }
 
 /// Reads the images of `compare`; each must be `size_px` when given (`-size`), and all the same

@@ -1,29 +1,131 @@
-//! Reading the image a user compares with the exact render: a file or bytes of any size, TGA,
+//! Reading the image a user compares with the exact render: a file, a named pipe or bytes, TGA,
 //! PNG or what else the `image` crate reads (by the name's extension unless the bytes say
-//! otherwise), as an 8-bit RGB picture. Errors are messages for the viewer's status bar.
+//! otherwise), as an 8-bit RGB picture.
+//!
+//! Images come from strangers (a student's program, a class's submissions), so they are read
+//! within bounds: a file of more than [`MAX_FILE_BYTES`] is not read past that size, and an image
+//! whose header announces more than [`MAX_SIDE_PX`] pixels a side or more than [`MAX_DECODE_BYTES`]
+//! of pixels (a small PNG of a huge image, a "decompression bomb") is refused before it is
+//! decoded. The file is read as a stream, never sought, so a named pipe works as a file does.
 
+use std::io::Read;
 use std::path::Path;
 
 use image::RgbImage;
 
-/// Reads an image file to compare (any size; TGA, PNG and what else the `image` crate reads).
-pub fn read_their_image(path: &Path) -> Result<RgbImage, String> {
-    let bytes = std::fs::read(path)
-        .map_err(|error| format!("cannot read '{}': {error}", path.display()))?;
+/// The most bytes read of an image file (a 16384×16384 uncompressed 24-bit TGA is 768 MiB).
+pub const MAX_FILE_BYTES: u64 = 800 << 20;
+/// The longest side of an image read, in pixels.
+pub const MAX_SIDE_PX: u32 = 16_384;
+/// The most memory the decoder may take for the pixels (an 8-bit RGB image of 13,000×13,000; the
+/// course's images are 200×200).
+pub const MAX_DECODE_BYTES: u64 = 512 << 20;
+
+/// Why an image to compare could not be read.
+#[derive(Debug, thiserror::Error)]
+pub enum TheirImageError {
+    /// The file could not be read.
+    #[error("cannot read '{path}': {source}")]
+    Read {
+        /// The file.
+        path: String,
+        /// The system's error.
+        source: std::io::Error,
+    },
+    /// The file is larger than [`MAX_FILE_BYTES`].
+    #[error("'{path}' is larger than {} MiB: not read", MAX_FILE_BYTES >> 20)]
+    TooLarge {
+        /// The file.
+        path: String,
+    },
+    /// The bytes are not an image the decoder reads, or its header asks for more than the limits.
+    #[error("cannot read the image '{path}': {message}")]
+    Decode {
+        /// The file (or the name the bytes came under).
+        path: String,
+        /// The decoder's words.
+        message: String,
+    },
+}
+
+impl TheirImageError {
+    /// What went wrong, without the file's name (for a message that names it already).
+    pub fn reason(&self) -> String {
+        match self {
+            Self::Read { source, .. } => source.to_string(),
+            Self::TooLarge { .. } => format!("larger than {} MiB: not read", MAX_FILE_BYTES >> 20),
+            Self::Decode { message, .. } => message.clone(),
+        }
+    }
+}
+
+/// Reads an image file to compare (any size within the limits; TGA, PNG and what else the
+/// `image` crate reads), as a stream: a named pipe is read as a file is.
+pub fn read_their_image(path: &Path) -> Result<RgbImage, TheirImageError> {
+    let read_error = |source| TheirImageError::Read {
+        path: path.display().to_string(),
+        source,
+    };
+    let file = std::fs::File::open(path).map_err(read_error)?;
+    let mut bytes = Vec::new();
+    file.take(MAX_FILE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(read_error)?;
+    if bytes.len() as u64 > MAX_FILE_BYTES {
+        return Err(TheirImageError::TooLarge {
+            path: path.display().to_string(),
+        });
+    }
     decode_their_image(path, &bytes)
 }
 
 /// Decodes the image `bytes` named `name` (the format by the name's extension, as for a file,
-/// unless the bytes say otherwise), as an 8-bit RGB picture.
-pub fn decode_their_image(name: &Path, bytes: &[u8]) -> Result<RgbImage, String> {
-    let mut reader = image::ImageReader::new(std::io::Cursor::new(bytes));
-    if let Ok(format) = image::ImageFormat::from_path(name) {
-        reader.set_format(format);
+/// unless the bytes say otherwise), as an 8-bit RGB picture, within the limits.
+pub fn decode_their_image(name: &Path, bytes: &[u8]) -> Result<RgbImage, TheirImageError> {
+    let decode_error = |message: String| TheirImageError::Decode {
+        path: name.display().to_string(),
+        message,
+    };
+    let mut limits = image::Limits::default();
+    limits.max_image_width = Some(MAX_SIDE_PX);
+    limits.max_image_height = Some(MAX_SIDE_PX);
+    limits.max_alloc = Some(MAX_DECODE_BYTES);
+    let reader = || {
+        let mut reader = image::ImageReader::new(std::io::Cursor::new(bytes));
+        if let Ok(format) = image::ImageFormat::from_path(name) {
+            reader.set_format(format);
+        }
+        let mut reader = reader
+            .with_guessed_format()
+            .map_err(|error| decode_error(error.to_string()))?;
+        reader.limits(limits.clone());
+        Ok::<_, TheirImageError>(reader)
+    };
+    // The header first: its size is refused before a byte of pixels is decoded.
+    let (width, height) = reader()?
+        .into_dimensions()
+        .map_err(|error| decode_error(limit_message(&error)))?;
+    // The 8-bit RGB copy may be made beside the decoded pixels: it must fit too.
+    if u64::from(width) * u64::from(height) * 3 > MAX_DECODE_BYTES {
+        return Err(decode_error(format!(
+            "{width}×{height} pixels is more than this program reads ({} MiB of pixels)",
+            MAX_DECODE_BYTES >> 20
+        )));
     }
-    let image = reader
-        .with_guessed_format()
-        .map_err(|error| format!("cannot read '{}': {error}", name.display()))?
+    let image = reader()?
         .decode()
-        .map_err(|error| format!("cannot read the image '{}': {error}", name.display()))?;
-    Ok(image.to_rgb8())
+        .map_err(|error| decode_error(limit_message(&error)))?;
+    Ok(image.into_rgb8())
+}
+
+/// The decoder's error, in this program's words where it is a limit.
+fn limit_message(error: &image::ImageError) -> String {
+    match error {
+        image::ImageError::Limits(_) => format!(
+            "its header announces an image larger than this program reads (at most \
+             {MAX_SIDE_PX} pixels a side, {} MiB of pixels): {error}",
+            MAX_DECODE_BYTES >> 20
+        ),
+        _ => error.to_string(),
+    }
 }

@@ -343,7 +343,9 @@ impl ViewerApp {
         self.compare.watched = FileWatcher::watch(&path, move || ctx.request_repaint())
             .ok()
             .map(|watcher| (path.clone(), kind, watcher));
-        self.compare_theirs(path, kind, None, read_their_image);
+        self.compare_theirs(path, kind, None, |path| {
+            read_their_image(path).map_err(|error| error.to_string())
+        });
     }
 
     /// Compares the image `bytes` named `name` (a browser page's dropped or picked file) with the
@@ -351,7 +353,7 @@ impl ViewerApp {
     pub fn compare_with_bytes(&mut self, name: &str, bytes: Arc<[u8]>, kind: ImageKind) {
         self.compare.watched = None;
         self.compare_theirs(name.into(), kind, None, move |path| {
-            decode_their_image(path, &bytes)
+            decode_their_image(path, &bytes).map_err(|error| error.to_string())
         });
     }
 
@@ -400,7 +402,9 @@ impl ViewerApp {
         match seen {
             Some((path, kind, WatchState::Changed)) => {
                 let path = path.clone();
-                self.compare_theirs(path, kind, None, read_their_image);
+                self.compare_theirs(path, kind, None, |path| {
+                    read_their_image(path).map_err(|error| error.to_string())
+                });
                 return;
             }
             Some((_, _, WatchState::Settling(wait))) => self.ctx.request_repaint_after(wait),
