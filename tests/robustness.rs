@@ -347,6 +347,10 @@ fn a_termination_signal_during_the_write_leaves_no_temporary_file() {
         ("-QUIT", 131),
         ("-USR1", 138),
         ("-ALRM", 142),
+        ("-XCPU", 152),
+        ("-PROF", 155),
+        ("-IO", 157),
+        ("-PWR", 158),
     ] {
         let folder = tempfile::tempdir().unwrap();
         let status = (0..5)

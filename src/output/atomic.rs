@@ -84,7 +84,8 @@ impl Staging {
     /// Creates the temporary file for `destination` (with `mode` before the umask). A symbolic
     /// link is written through: the file it leads to is replaced, and the link stays.
     pub(crate) fn begin(destination: &Path, mode: u32) -> Result<Self, WriteError> {
-        let destination = &files::through_links(destination);
+        let destination = &files::through_links_to_write(destination)
+            .map_err(|source| io_error(destination, source))?;
         let error = |source| io_error(destination, source);
         check_not_special(destination).map_err(error)?;
         let temporary = Temporary::create(folder_of(destination), mode).map_err(error)?;
@@ -360,6 +361,16 @@ impl OldFile {
         }
     }
 
+    /// Whether `destination` still holds the old content: the same file (a hard link), or the
+    /// same bytes (a copy).
+    fn holds_what_is_in(&self, destination: &Path) -> bool {
+        files::same_file(&self.path, destination)
+            || matches!(
+                (std::fs::read(&self.path), std::fs::read(destination)),
+                (Ok(old), Ok(now)) if old == now
+            )
+    }
+
     /// The old content is not needed any more.
     fn forget(self) {
         let _ = std::fs::remove_file(&self.path);
@@ -386,6 +397,9 @@ fn put_back(
                 // nothing; the second name then goes.
                 match files::rename_over(&old.path, destination) {
                     Ok(()) => old.forget(),
+                    // The file that could not be replaced could not be put back either: it
+                    // never changed (an immutable file, another user's in a sticky folder).
+                    Err(_) if is_failed && old.holds_what_is_in(destination) => old.forget(),
                     Err(error) => not_put_back.push(format!(
                         "'{}' could not be put back ({error}): its old content is in '{}'",
                         destination.display(),
@@ -444,7 +458,7 @@ fn check_not_special(destination: &Path) -> std::io::Result<()> {
 /// `path` (its links followed) is not a folder or a device, a temporary file can be created (and
 /// is removed) beside it, and the file there, if any, can be replaced.
 pub(crate) fn check_folder_writable(path: &Path) -> Result<(), WriteError> {
-    let path = &files::through_links(path);
+    let path = &files::through_links_to_write(path).map_err(|source| io_error(path, source))?;
     check_not_special(path).map_err(|source| io_error(path, source))?;
     Temporary::create(folder_of(path), 0o600)
         .and_then(|probe| {

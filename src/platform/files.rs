@@ -255,6 +255,35 @@ pub enum FileIdentity {
 /// Symbolic links a path is followed through before giving up (as the kernel does).
 const MAX_LINKS: usize = 40;
 
+/// The file to write for `path`: [`through_links`], where a loop of links, or more than the
+/// kernel follows, is an error (as `cp` and the shell refuse it), and a link that leads to
+/// something other than a file (a pipe through `/dev/stdout`, a device) is left as it is, so that
+/// what it leads to is judged, not a name the kernel made up (`pipe:[N]`).
+pub fn through_links_to_write(path: &Path) -> std::io::Result<PathBuf> {
+    let mut current = path.to_path_buf();
+    for _ in 0..=MAX_LINKS {
+        let is_link = std::fs::symlink_metadata(&current)
+            .is_ok_and(|metadata| metadata.file_type().is_symlink());
+        let leads_to_a_file_or_nothing =
+            std::fs::metadata(&current).map_or(true, |metadata| metadata.is_file());
+        if !is_link || !leads_to_a_file_or_nothing {
+            return Ok(current);
+        }
+        let Ok(target) = std::fs::read_link(&current) else {
+            return Ok(current);
+        };
+        current = if target.is_absolute() {
+            target
+        } else {
+            folder_of(&current).join(target)
+        };
+    }
+    Err(std::io::Error::new(
+        std::io::ErrorKind::InvalidInput,
+        "too many levels of symbolic links (a loop?): nothing written",
+    ))
+}
+
 /// The file `path` names once its symbolic links are followed, as `cp` and the shell follow
 /// them when they write: each link's target, relative to the link's folder, until a name that
 /// is no link (which need not exist yet). A loop or an unreadable link ends the walk there.

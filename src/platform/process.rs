@@ -5,8 +5,9 @@
 //! * [`handle_termination_signals`]: when the user or the system asks the program to stop, the
 //!   caller's clean-up runs (the command line removes the temporary files being written) and the
 //!   program ends — at once on the command line, after the viewer has saved its settings in the
-//!   window. On Unix that is SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM or
-//!   SIGVTALRM (every signal whose default action ends the program, but SIGKILL and a crash's),
+//!   window. On Unix that is SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM,
+//!   SIGVTALRM, SIGXCPU, SIGPROF, or on Linux SIGIO and SIGPWR (every named signal whose default
+//!   action ends the program, but SIGKILL, SIGPIPE, which is ignored, and a crash's),
 //!   and the program ends with 128 + the signal's number, as shells report it; SIGXFSZ (a file-size limit) is caught so that the
 //!   write fails with an error instead of killing the program. On Windows it is the console's
 //!   Ctrl-C and Ctrl-Break (through the `ctrlc` crate), both reported as an interrupt: status
@@ -113,7 +114,8 @@ fn stop(signal: i32, on_signal: OnSignal, clean_up: fn()) {
 #[cfg(unix)]
 pub fn handle_termination_signals(on_signal: OnSignal, clean_up: fn()) {
     use signal_hook::consts::{
-        SIGALRM, SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGUSR1, SIGUSR2, SIGVTALRM, SIGXFSZ,
+        SIGALRM, SIGHUP, SIGINT, SIGPROF, SIGQUIT, SIGTERM, SIGUSR1, SIGUSR2, SIGVTALRM, SIGXCPU,
+        SIGXFSZ,
     };
     // A file-size limit makes writes fail (EFBIG) instead of killing the program.
     let _ =
@@ -127,9 +129,24 @@ pub fn handle_termination_signals(on_signal: OnSignal, clean_up: fn()) {
         .spawn(move || {
             // Every signal whose default action ends the program and that a user or a system
             // sends to stop one (not SIGKILL, which cannot be caught, nor a crash's).
-            let stopping = [
-                SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM,
+            // SIGXCPU is a CPU-time limit (`ulimit -t`) reached; SIGPROF a profiling timer;
+            // on Linux, where their default ends a program, SIGIO (SIGPOLL: a file descriptor
+            // ready) and SIGPWR (a power failure). SIGPIPE
+            // is ignored (Rust's runtime does it): a write to a closed pipe fails with an error
+            // the program reports, and `kill -PIPE` does nothing.
+            #[cfg_attr(
+                not(any(target_os = "linux", target_os = "android")),
+                expect(unused_mut, reason = "SIGIO and SIGPWR end a program on Linux only")
+            )]
+            let mut stopping = vec![
+                SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGXCPU,
+                SIGPROF,
             ];
+            #[cfg(any(target_os = "linux", target_os = "android"))]
+            stopping.extend([
+                signal_hook::consts::SIGIO,
+                rustix::process::Signal::POWER.as_raw(),
+            ]);
             let Ok(mut signals) = signal_hook::iterator::Signals::new(stopping) else {
                 return;
             };
