@@ -25,6 +25,18 @@ impl Drop for Mutable<'_> {
     }
 }
 
+/// Runs `-output o.tga` in `folder`, which must fail with one line, exit 1: that line.
+fn refused_writing_o_tga(folder: &std::path::Path) -> String {
+    let scene = scene_path("scene1_01.txt");
+    let output = run_in(
+        folder,
+        &["-input", scene.to_str().unwrap(), "-output", "o.tga"],
+    );
+    let text = assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(1), "{text}");
+    text
+}
+
 #[test]
 fn an_immutable_destination_is_left_as_it_was_and_nothing_false_is_said() {
     let folder = tempfile::tempdir().unwrap();
@@ -43,13 +55,7 @@ fn an_immutable_destination_is_left_as_it_was_and_nothing_false_is_said() {
         );
         return;
     }
-    let scene = scene_path("scene1_01.txt");
-    let output = run_in(
-        folder.path(),
-        &["-input", scene.to_str().unwrap(), "-output", "o.tga"],
-    );
-    let text = assert_one_line_error(&output);
-    assert_eq!(output.status.code(), Some(1), "{text}");
+    let text = refused_writing_o_tga(folder.path());
     assert!(text.contains("o.tga"), "{text}");
     assert!(!text.contains("put back"), "a false statement: {text}");
     assert!(!text.contains(".old"), "a false statement: {text}");
@@ -62,13 +68,7 @@ fn a_link_that_leads_to_itself_is_refused_and_left_as_it_was() {
     let folder = tempfile::tempdir().unwrap();
     let link = folder.path().join("o.tga");
     std::os::unix::fs::symlink("o.tga", &link).unwrap();
-    let scene = scene_path("scene1_01.txt");
-    let output = run_in(
-        folder.path(),
-        &["-input", scene.to_str().unwrap(), "-output", "o.tga"],
-    );
-    let text = assert_one_line_error(&output);
-    assert_eq!(output.status.code(), Some(1), "{text}");
+    let text = refused_writing_o_tga(folder.path());
     assert!(
         text.contains("o.tga") && text.contains("too many levels of symbolic links"),
         "{text}"
