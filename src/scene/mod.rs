@@ -199,6 +199,19 @@ pub fn load_scene_with_progress(
         Vec::with_capacity(length)
     };
     loop {
+        // Room for a whole block first, asked for so that a refusal is an error, not an abort
+        // (a pipe under a memory limit): `read_to_end` then reads into that room and never
+        // grows the list itself.
+        let room = usize::try_from(READ_BLOCK_BYTES).unwrap_or(usize::MAX) + 64;
+        if bytes.try_reserve(room).is_err() {
+            return Err(io_error(std::io::Error::new(
+                std::io::ErrorKind::OutOfMemory,
+                format!(
+                    "not enough memory to read more than {} MB of it",
+                    bytes.len() / 1_000_000
+                ),
+            )));
+        }
         // Straight into the list's spare room (one copy, not two), a block at a time for the
         // progress; `read_to_end` retries interrupted reads.
         match (&mut file).take(READ_BLOCK_BYTES).read_to_end(&mut bytes) {
