@@ -30,7 +30,7 @@ use super::background::{Poll, Task};
 use super::reload::{FileWatcher, WatchState};
 use super::status::Status;
 use crate::compare::picture::{heat_map, heat_map_highlighted, heat_map_marked};
-use crate::compare::their_image::{decode_their_image, read_their_image};
+use crate::compare::their_image::{TheirImageError, decode_their_image, read_their_image};
 use crate::explore::trace::PixelTrace;
 use crate::render::View;
 use crate::render::depth_map::DepthRange;
@@ -343,9 +343,7 @@ impl ViewerApp {
         self.compare.watched = FileWatcher::watch(&path, move || ctx.request_repaint())
             .ok()
             .map(|watcher| (path.clone(), kind, watcher));
-        self.compare_theirs(path, kind, None, |path| {
-            read_their_image(path).map_err(|error| error.to_string())
-        });
+        self.compare_theirs(path, kind, None, read_their_image);
     }
 
     /// Compares the image `bytes` named `name` (a browser page's dropped or picked file) with the
@@ -353,7 +351,7 @@ impl ViewerApp {
     pub fn compare_with_bytes(&mut self, name: &str, bytes: Arc<[u8]>, kind: ImageKind) {
         self.compare.watched = None;
         self.compare_theirs(name.into(), kind, None, move |path| {
-            decode_their_image(path, &bytes).map_err(|error| error.to_string())
+            decode_their_image(path, &bytes)
         });
     }
 
@@ -364,13 +362,14 @@ impl ViewerApp {
         path: PathBuf,
         kind: ImageKind,
         range: Option<DepthRange>,
-        read: impl FnOnce(&Path) -> Result<RgbImage, String> + Send + 'static,
+        read: impl FnOnce(&Path) -> Result<RgbImage, TheirImageError> + Send + 'static,
     ) {
         let scene = Arc::clone(&self.scene.loaded.scene);
         let fallback = self.viewing.view.depth_range;
         self.compare.kind = kind;
         let status = self.compare.start(&self.ctx, move || {
-            compare_file(&scene, &path, read(&path)?, kind, range, fallback)
+            let theirs = read(&path).map_err(|error| error.to_string())?;
+            compare_file(&scene, &path, theirs, kind, range, fallback)
         });
         self.say(status);
     }
@@ -402,9 +401,7 @@ impl ViewerApp {
         match seen {
             Some((path, kind, WatchState::Changed)) => {
                 let path = path.clone();
-                self.compare_theirs(path, kind, None, |path| {
-                    read_their_image(path).map_err(|error| error.to_string())
-                });
+                self.compare_theirs(path, kind, None, read_their_image);
                 return;
             }
             Some((_, _, WatchState::Settling(wait))) => self.ctx.request_repaint_after(wait),
