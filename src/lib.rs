@@ -29,6 +29,8 @@
 //! * [`cli`]: the flag table (parsing, usage, writing a request back), running a request,
 //!   progress bars
 //! * [`export`]: everything one export from the viewer writes, and the command that makes it again
+//! * [`grade`]: grading a class — every submission's images against the exact ones, explained,
+//!   in one report
 //! * `app` (feature `gui`): the desktop viewer
 //!
 //! Without default features the library and the binary have no UI dependency (no eframe, egui,
@@ -51,6 +53,7 @@ pub mod compare;
 pub mod explore;
 pub mod export;
 pub mod geometry;
+pub mod grade;
 #[cfg(feature = "oracle")]
 pub mod oracle;
 pub mod output;

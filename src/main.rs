@@ -88,6 +88,23 @@ fn main() -> ExitCode {
                 }
             }
         }
+        Command::Grade(request) => {
+            handle_termination_signals(OnSignal::Exit, raytracer::grade::remove_unfinished_report);
+            match raytracer::grade::grade(&request) {
+                Ok(class) => print_or_fail(
+                    &format!(
+                        "{}\nreport: {}\n",
+                        class.summary(),
+                        request.report.join("index.html").display()
+                    ),
+                    ExitCode::SUCCESS,
+                ),
+                Err(error) => {
+                    print_err(&format!("raytracer: {}\n", one_line(&error.to_string())));
+                    ExitCode::from(1)
+                }
+            }
+        }
         Command::View(mut request) => {
             request.program = std::env::current_exe().ok();
             open_viewer(request)

@@ -10,9 +10,9 @@ use std::path::{Path, PathBuf};
 
 /// The layers, bottom first. A module may use its own layer and the layers before it; `oracle`
 /// (test and study support) may use the core, and nothing but tests may use it.
-const LAYERS: [&str; 11] = [
+const LAYERS: [&str; 12] = [
     "platform", "geometry", "scene", "render", "oracle", "explore", "output", "compare", "cli",
-    "export", "app",
+    "export", "grade", "app",
 ];
 
 fn rust_files(folder: &Path, found: &mut Vec<PathBuf>) {

@@ -71,6 +71,11 @@ pub(crate) struct TheirImages {
 }
 
 impl TheirImages {
+    /// Their colour and depth images, read.
+    pub(crate) fn new(colour: Option<RgbImage>, depth: Option<RgbImage>) -> Self {
+        Self { colour, depth }
+    }
+
     /// The size of the images (all the same), if any was read.
     pub(crate) fn size_px(&self) -> Option<(u32, u32)> {
         self.colour

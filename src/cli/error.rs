@@ -2,6 +2,7 @@
 //! are named through [`Flag`], so the messages follow the flag table.
 
 use super::flags::Flag;
+use super::grade_request::{GRADE_SYNOPSIS, GRADE_WORD};
 use crate::output::{ImageFormat, RawDepthFormat};
 use crate::render::sampling::SamplingError;
 use crate::render::{MAX_PIXELS, MAX_SIDE_PX};
@@ -123,6 +124,9 @@ pub enum UsageError {
     /// Unusable sampling settings.
     #[error("{0}")]
     BadSampling(#[from] SamplingError),
+    /// The grading command's words are wrong.
+    #[error("{GRADE_WORD}: {0} (usage: raytracer {GRADE_SYNOPSIS})")]
+    Grade(String),
 }
 
 impl UsageError {

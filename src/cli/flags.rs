@@ -5,6 +5,8 @@
 
 use std::fmt::{self, Write as _};
 
+use super::grade_request::GRADE_SYNOPSIS;
+
 /// A command-line flag.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Flag {
@@ -154,7 +156,9 @@ pub fn usage() -> String {
     let mut text = format!(
         "raytracer: ray-casts 6.837 assignment-1 scenes (orthographic camera, spheres)\n\n\
          usage:\n  raytracer [{input}]   open the viewer (default scene without {input_flag})\n  \
-         raytracer {input} {render} [more outputs]\n      render without a window\n\nflags:\n",
+         raytracer {input} {render} [more outputs]\n      render without a window\n  \
+         raytracer {GRADE_SYNOPSIS}\n      grade a class: every submission's images against the exact \
+         ones, explained\n      (docs/grading.md)\n\nflags:\n",
         input_flag = Flag::Input,
     );
     for spec in FLAGS {

@@ -12,6 +12,7 @@
 pub mod compare;
 mod error;
 mod flags;
+mod grade_request;
 pub(crate) mod progress;
 mod raw_args;
 mod request;
@@ -23,6 +24,7 @@ mod to_arguments;
 
 pub use error::UsageError;
 pub use flags::{Flag, usage};
+pub use grade_request::{GRADE_SYNOPSIS, GRADE_WORD, GradeRequest};
 pub use raw_args::RawArgs;
 pub use request::{
     Command, CompareRequest, DEFAULT_SIZE_PX, DepthOutput, RenderRequest, TheirDepth,

@@ -6,6 +6,7 @@ use std::path::PathBuf;
 
 use super::error::UsageError;
 use super::flags::Flag;
+use super::grade_request::{GRADE_WORD, GradeRequest, parse_grade};
 use super::raw_args::RawArgs;
 use crate::output::{ImageFormat, RawDepthFormat};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
@@ -123,6 +124,8 @@ pub enum Command {
     Render(Box<RenderRequest>),
     /// Open the viewer.
     View(ViewerRequest),
+    /// Grade a class's images against the exact ones (`raytracer grade …`).
+    Grade(GradeRequest),
 }
 
 /// Both stages: arguments (without the program name) → [`Command`].
@@ -131,6 +134,10 @@ where
     I: IntoIterator<Item = S>,
     S: Into<OsString>,
 {
+    let arguments: Vec<OsString> = arguments.into_iter().map(Into::into).collect();
+    if arguments.first().is_some_and(|word| word == GRADE_WORD) {
+        return parse_grade(&arguments[1..]).map(Command::Grade);
+    }
     RawArgs::parse(arguments)?.validate()
 }
 

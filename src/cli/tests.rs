@@ -313,7 +313,7 @@ fn a_request_written_back_to_arguments_parses_to_the_same_request() {
 fn the_course_command_alone_is_streamed() {
     let streams = |line: &str| match parse(line).unwrap() {
         Command::Render(request) => streamed::streams(&request),
-        Command::View(_) | Command::Help => panic!("{line}: expected a render request"),
+        _ => panic!("{line}: expected a render request"),
     };
     for line in [
         "-input a.txt -output c.tga -depth 9 10 d.tga",

@@ -67,6 +67,15 @@ pub fn read_their_image(path: &Path) -> Result<RgbImage, TheirImageError> {
         source,
     };
     let file = std::fs::File::open(path).map_err(read_error)?;
+    // A regular file's length is known: one too large is not read at all.
+    if file
+        .metadata()
+        .is_ok_and(|m| m.is_file() && m.len() > MAX_FILE_BYTES)
+    {
+        return Err(TheirImageError::TooLarge {
+            path: path.display().to_string(),
+        });
+    }
     let mut bytes = Vec::new();
     file.take(MAX_FILE_BYTES + 1)
         .read_to_end(&mut bytes)

@@ -16,7 +16,7 @@
 //! "Course files" ([`course`]) write instead what the course's own command line writes for the
 //! scene file: `output1_04.tga`, `depth1_04.tga` at 200×200, and the command line that makes them.
 
-mod command;
+pub(crate) mod command;
 pub(crate) mod course;
 mod legend;
 

@@ -1,0 +1,71 @@
+//! The grading command's words: `raytracer grade ASSIGNMENT SUBMISSIONS -o REPORT` (the
+//! grading itself is [`crate::grade`]). A subcommand, not a flag: it takes two folders and a file
+//! where the course's flags take one scene, and none of the render flags apply to it.
+
+use std::ffi::OsString;
+use std::path::PathBuf;
+
+use super::error::UsageError;
+
+/// The word that starts the grading command.
+pub const GRADE_WORD: &str = "grade";
+
+/// The grading command's synopsis, for the usage text and its errors.
+pub const GRADE_SYNOPSIS: &str = "grade ASSIGNMENT SUBMISSIONS -o REPORT";
+
+/// Grading a class: the course's command lines, a folder per student, where the report goes.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct GradeRequest {
+    /// A text file of the course's command lines, one a line.
+    pub assignment: PathBuf,
+    /// A folder holding one folder per submission.
+    pub submissions: PathBuf,
+    /// The folder the report is written to (made; a previous report there is replaced).
+    pub report: PathBuf,
+}
+
+/// Parses the words after `grade`.
+pub(crate) fn parse_grade(words: &[OsString]) -> Result<GradeRequest, UsageError> {
+    let mut positional = Vec::new();
+    let mut report = None;
+    let mut words = words.iter();
+    while let Some(word) = words.next() {
+        match word.to_str() {
+            Some("-o" | "-report" | "--report") => {
+                let value = words.next().ok_or_else(|| {
+                    UsageError::Grade("-o needs the folder to write the report to".to_owned())
+                })?;
+                if report.replace(PathBuf::from(value)).is_some() {
+                    return Err(UsageError::Grade("-o is given twice".to_owned()));
+                }
+            }
+            Some(flag) if flag.starts_with('-') && flag.len() > 1 => {
+                return Err(UsageError::Grade(format!(
+                    "unknown flag '{flag}' (grading takes -o REPORT)"
+                )));
+            }
+            _ => positional.push(PathBuf::from(word)),
+        }
+    }
+    let [assignment, submissions] = <[PathBuf; 2]>::try_from(positional).map_err(|found| {
+        UsageError::Grade(format!(
+            "expected ASSIGNMENT and SUBMISSIONS, found {} word{}",
+            found.len(),
+            if found.len() == 1 { "" } else { "s" }
+        ))
+    })?;
+    let report = report.ok_or_else(|| {
+        UsageError::Grade("-o REPORT is missing: name a folder for the report".to_owned())
+    })?;
+    if [&assignment, &submissions, &report]
+        .iter()
+        .any(|path| path.as_os_str().is_empty())
+    {
+        return Err(UsageError::Grade("a path is empty".to_owned()));
+    }
+    Ok(GradeRequest {
+        assignment,
+        submissions,
+        report,
+    })
+}

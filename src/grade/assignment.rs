@@ -1,0 +1,186 @@
+//! The assignment: a text file of the course's command lines, one a line
+//! (`raytracer -input scene1_01.txt -size 200 200 -output output1_01.tga -depth 9 10
+//! depth1_01.tga`), parsed by the command line's own parser. Scene paths are relative to the
+//! file; the output names are the files each submission holds. Blank lines and `#` comments are
+//! skipped; a first word that is not a flag (the program's name) is left out.
+
+use std::path::{Component, Path, PathBuf};
+
+use crate::cli::{Command, parse_command};
+use crate::render::depth_map::DepthRange;
+
+/// The most bytes of an assignment file read (the course's is 7 lines).
+const MAX_ASSIGNMENT_BYTES: u64 = 1 << 20;
+
+/// Why an assignment file cannot be used.
+#[derive(Debug, thiserror::Error)]
+pub enum AssignmentError {
+    /// The file could not be read.
+    #[error("{path}: {message}")]
+    Read {
+        /// The file.
+        path: String,
+        /// What went wrong.
+        message: String,
+    },
+    /// A line is not a command line the grader can use.
+    #[error("{path}:{line}: {message}")]
+    Line {
+        /// The file.
+        path: String,
+        /// The line's number, from 1.
+        line: usize,
+        /// What is wrong with it.
+        message: String,
+    },
+    /// No line names an image.
+    #[error("{path}: no command line in it (one a line: raytracer -input SCENE -output FILE …)")]
+    Empty {
+        /// The file.
+        path: String,
+    },
+}
+
+/// One command line of the assignment: the images a submission holds for it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Task {
+    /// The line's number in the file, from 1.
+    pub line_number: usize,
+    /// The command line as written.
+    pub line: String,
+    /// The scene file, relative to the assignment file's folder resolved.
+    pub scene: PathBuf,
+    /// The image size, pixels.
+    pub size_px: (u32, u32),
+    /// The colour image's name (`-output`), relative to a submission's folder.
+    pub colour: Option<PathBuf>,
+    /// The depth image's range and name (`-depth`).
+    pub depth: Option<(DepthRange, PathBuf)>,
+}
+
+impl Task {
+    /// A short name for the line: its scene's file stem (`scene1_01`).
+    pub fn name(&self) -> String {
+        self.scene.file_stem().map_or_else(
+            || format!("line {}", self.line_number),
+            |s| s.to_string_lossy().into_owned(),
+        )
+    }
+}
+
+/// Reads the assignment file at `path`.
+pub fn read_assignment(path: &Path) -> Result<Vec<Task>, AssignmentError> {
+    let shown = path.display().to_string();
+    let read_error = |message: String| AssignmentError::Read {
+        path: shown.clone(),
+        message,
+    };
+    let metadata = std::fs::metadata(path).map_err(|e| read_error(e.to_string()))?;
+    if !metadata.is_file() {
+        return Err(read_error("not a regular file".to_owned()));
+    }
+    if metadata.len() > MAX_ASSIGNMENT_BYTES {
+        return Err(read_error(format!(
+            "larger than {} KiB: not a list of command lines",
+            MAX_ASSIGNMENT_BYTES >> 10
+        )));
+    }
+    let text = std::fs::read_to_string(path).map_err(|e| read_error(e.to_string()))?;
+    let folder = path.parent().unwrap_or(Path::new(""));
+    let tasks =
+        parse_assignment(&text, folder).map_err(|(line, message)| AssignmentError::Line {
+            path: shown.clone(),
+            line,
+            message,
+        })?;
+    if tasks.is_empty() {
+        return Err(AssignmentError::Empty { path: shown });
+    }
+    Ok(tasks)
+}
+
+/// Parses the assignment's text; scene paths are joined to `folder`. An error is the line's
+/// number and what is wrong with it.
+pub fn parse_assignment(text: &str, folder: &Path) -> Result<Vec<Task>, (usize, String)> {
+    let mut tasks: Vec<Task> = Vec::new();
+    for (index, line) in text.lines().enumerate() {
+        let line_number = index + 1;
+        let command = line.split('#').next().unwrap_or("").trim();
+        if command.is_empty() {
+            continue;
+        }
+        let mut words: Vec<&str> = command.split_whitespace().collect();
+        if words.first().is_some_and(|word| !word.starts_with('-')) {
+            words.remove(0);
+        }
+        let task = task_of(&words, folder, line_number, command).map_err(|m| (line_number, m))?;
+        for earlier in &tasks {
+            let named = |t: &Task| {
+                t.colour
+                    .iter()
+                    .chain(t.depth.iter().map(|d| &d.1))
+                    .map(|p| p.to_string_lossy().to_lowercase())
+                    .collect::<Vec<_>>()
+            };
+            if let Some(name) = named(&task).iter().find(|n| named(earlier).contains(n)) {
+                return Err((
+                    line_number,
+                    format!("'{name}' is also named on line {}", earlier.line_number),
+                ));
+            }
+        }
+        tasks.push(task);
+    }
+    Ok(tasks)
+}
+
+/// The task of one line's words (after the program's name).
+fn task_of(words: &[&str], folder: &Path, line_number: usize, line: &str) -> Result<Task, String> {
+    let request = match parse_command(words.iter().copied()) {
+        Ok(Command::Render(request)) => request,
+        Ok(_) => {
+            return Err(
+                "not a command line that writes images (-input SCENE -output FILE …)".to_owned(),
+            );
+        }
+        Err(error) => return Err(error.to_string()),
+    };
+    if request.compare.is_some()
+        || request.depth16_output.is_some()
+        || request.depth_raw_output.is_some()
+        || request.trace.is_some()
+    {
+        return Err(
+            "grading reads the images of -output and -depth; leave out the other flags".to_owned(),
+        );
+    }
+    if request.colour_output.is_none() && request.depth_output.is_none() {
+        return Err("names no image (-output FILE, -depth DMIN DMAX FILE)".to_owned());
+    }
+    for name in request
+        .colour_output
+        .iter()
+        .chain(request.depth_output.iter().map(|d| &d.path))
+    {
+        let inside = name
+            .components()
+            .all(|part| matches!(part, Component::Normal(_)));
+        if !inside {
+            return Err(format!(
+                "'{}': an image's name must be a path inside a submission's folder",
+                name.display()
+            ));
+        }
+    }
+    Ok(Task {
+        line_number,
+        line: line.to_owned(),
+        scene: folder.join(&request.input),
+        size_px: (request.width_px, request.height_px),
+        colour: request.colour_output.clone(),
+        depth: request
+            .depth_output
+            .as_ref()
+            .map(|d| (d.range, d.path.clone())),
+    })
+}

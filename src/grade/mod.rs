@@ -1,0 +1,161 @@
+//! Grading a class: every submission's images against the exact ones, each difference
+//! explained, in one report (`raytracer grade ASSIGNMENT SUBMISSIONS -o REPORT`).
+//!
+//! The assignment is the course's own command lines ([`assignment`]); each exact image is
+//! rendered once. Each submission folder ([`submission`]) is read for the files those lines name,
+//! each image marked as `-compare_output` / `-compare_depth` would ([`mark`]); a missing, empty,
+//! unreadable or wrong-sized file is a cell of the report, never a stop. Submissions are marked
+//! in parallel, and the report ([`report`]: an HTML table and a page per submission, with the
+//! same as JSON and CSV) is made in a folder beside the destination and moved into place when
+//! whole ([`staging`]), so a failed run leaves a previous report as it was.
+
+pub mod assignment;
+mod html;
+pub mod mark;
+pub mod report;
+mod staging;
+pub mod submission;
+mod tables;
+
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use rayon::prelude::*;
+
+use self::assignment::{AssignmentError, read_assignment};
+use self::mark::{Answers, Exact, ImageKind, Mark, mark};
+use self::report::{ClassReport, Graded};
+use self::staging::Staging;
+use self::submission::list_submissions;
+use crate::cli::GradeRequest;
+use crate::cli::progress::StepProgress;
+use crate::render::depth_map::DepthRange;
+use crate::render::{View, ViewError, render};
+use crate::scene::{LoadError, load_scene};
+
+pub use self::staging::remove_unfinished_report;
+
+/// Why a class could not be graded (a submission's problem is a cell of the report, never this).
+#[derive(Debug, thiserror::Error)]
+pub enum GradeError {
+    /// The assignment file cannot be used.
+    #[error(transparent)]
+    Assignment(#[from] AssignmentError),
+    /// A scene the assignment names cannot be read.
+    #[error("{assignment}:{line}: {source}")]
+    Scene {
+        /// The assignment file.
+        assignment: String,
+        /// The line naming the scene.
+        line: usize,
+        /// Why.
+        source: LoadError,
+    },
+    /// A command line's view cannot be rendered.
+    #[error("{assignment}:{line}: {source}")]
+    View {
+        /// The assignment file.
+        assignment: String,
+        /// The line.
+        line: usize,
+        /// Why.
+        source: ViewError,
+    },
+    /// The submissions folder cannot be listed.
+    #[error("{path}: cannot list the submissions: {source}")]
+    Submissions {
+        /// The folder.
+        path: String,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// The report cannot be written where asked.
+    #[error("{0}")]
+    Report(String),
+}
+
+/// The depth range of a line without `-depth` (nothing is drawn with it).
+const UNUSED_DEPTH_RANGE: DepthRange = DepthRange {
+    min_t: 0.0,
+    max_t: 1.0,
+};
+
+/// Grades the class of `request` and writes its report; returns what was found.
+pub fn grade(request: &GradeRequest) -> Result<ClassReport, GradeError> {
+    let tasks = read_assignment(&request.assignment)?;
+    let listed = |source| GradeError::Submissions {
+        path: request.submissions.display().to_string(),
+        source,
+    };
+    if !std::fs::metadata(&request.submissions)
+        .map_err(listed)?
+        .is_dir()
+    {
+        return Err(listed(std::io::Error::other("not a folder")));
+    }
+    let staging = Staging::begin(&request.report).map_err(GradeError::Report)?;
+    let folder = staging.folder().to_path_buf();
+    let assignment = request.assignment.display().to_string();
+    let mut exacts = Vec::new();
+    for task in tasks {
+        let line = task.line_number;
+        let scene = load_scene(&task.scene).map_err(|source| GradeError::Scene {
+            assignment: assignment.clone(),
+            line,
+            source,
+        })?;
+        let range = task.depth.as_ref().map_or(UNUSED_DEPTH_RANGE, |d| d.0);
+        let view = View::of_camera(&scene.camera, task.size_px.0, task.size_px.1, range);
+        let frame = render(&scene, &view).map_err(|source| GradeError::View {
+            assignment: assignment.clone(),
+            line,
+            source,
+        })?;
+        exacts.push(Exact { task, scene, frame });
+    }
+    report::write_exact_images(&folder, &exacts).map_err(GradeError::Report)?;
+    let submissions =
+        list_submissions(&request.submissions, Some(&request.report)).map_err(listed)?;
+    let answers = Answers::new(&folder).map_err(|e| GradeError::Report(e.to_string()))?;
+    let images: usize = exacts
+        .iter()
+        .map(|e| usize::from(e.task.colour.is_some()) + usize::from(e.task.depth.is_some()))
+        .sum();
+    let total = (submissions.len() * images).max(1);
+    let done = AtomicUsize::new(0);
+    let bar = StepProgress::start("grading");
+    let graded: Vec<Graded> = submissions
+        .into_par_iter()
+        .enumerate()
+        .map(|(number, submission)| {
+            let mut marks: Vec<(usize, Mark)> = Vec::new();
+            if submission.skipped.is_none() {
+                for (index, exact) in exacts.iter().enumerate() {
+                    for (kind, named) in [
+                        (ImageKind::Colour, exact.task.colour.is_some()),
+                        (ImageKind::Depth, exact.task.depth.is_some()),
+                    ] {
+                        if named {
+                            marks.push((
+                                index,
+                                mark(&submission.folder, index, exact, kind, &answers),
+                            ));
+                            let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
+                            bar.report(finished as f64 / total as f64);
+                        }
+                    }
+                }
+            }
+            Graded::new(number, submission, marks)
+        })
+        .collect();
+    drop(bar);
+    let class = ClassReport::new(
+        request,
+        exacts.into_iter().map(|e| e.task).collect(),
+        graded,
+        answers.distinct(),
+    );
+    report::write_report(&folder, &class).map_err(GradeError::Report)?;
+    staging.commit().map_err(GradeError::Report)?;
+    Ok(class)
+}

@@ -1,0 +1,237 @@
+//! The class's report: what each submission's images came to, the totals of the class, and
+//! writing it — `index.html` (the table), a page per submission in `pages/`, the exact images in
+//! `exact/`, the difference pictures in `pictures/`, and the same as `report.json` and
+//! `report.csv` for the course's own tools.
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+use super::assignment::Task;
+use super::html;
+use super::mark::{Exact, ImageKind, Mark, Outcome, PICTURES_FOLDER, png_bytes};
+use super::submission::Submission;
+use super::tables;
+use crate::cli::GradeRequest;
+
+/// The `format` field of `report.json`, by which a previous report is known.
+pub const REPORT_FORMAT: &str = "raytracer-grade";
+
+/// Every entry a report folder holds.
+pub const REPORT_ENTRIES: [&str; 6] = [
+    "index.html",
+    "report.json",
+    "report.csv",
+    "exact",
+    PICTURES_FOLDER,
+    "pages",
+];
+
+/// One submission, marked.
+#[derive(Debug, Clone)]
+pub struct Graded {
+    /// The submission.
+    pub submission: Submission,
+    /// Its page in the report (relative path).
+    pub page: String,
+    /// Each image: the index of its command line, and its mark.
+    pub marks: Vec<(usize, Mark)>,
+}
+
+impl Graded {
+    /// The marks of submission number `number` (from 0, in name order).
+    pub fn new(number: usize, submission: Submission, marks: Vec<(usize, Mark)>) -> Self {
+        Self {
+            submission,
+            page: format!("pages/{:04}.html", number + 1),
+            marks,
+        }
+    }
+
+    /// The deviations stated for any of its images, by word.
+    pub fn words(&self) -> Vec<String> {
+        let mut words: Vec<String> = self
+            .marks
+            .iter()
+            .filter_map(|(_, mark)| match &mark.outcome {
+                Outcome::Compared(answer) => Some(answer.statements.iter().map(|s| s.0.clone())),
+                _ => None,
+            })
+            .flatten()
+            .collect();
+        words.sort();
+        words.dedup();
+        words
+    }
+
+    /// How many of its images match.
+    pub fn matching(&self) -> usize {
+        self.marks
+            .iter()
+            .filter(|(_, mark)| status(&mark.outcome) == "match")
+            .count()
+    }
+}
+
+/// A cell's status: "match", "differs", "missing", "unreadable" or "wrong size".
+pub fn status(outcome: &Outcome) -> &'static str {
+    match outcome {
+        Outcome::Missing => "missing",
+        Outcome::Unreadable(_) => "unreadable",
+        Outcome::WrongSize { .. } => "wrong size",
+        Outcome::Compared(answer) if answer.matches => "match",
+        Outcome::Compared(_) => "differs",
+    }
+}
+
+/// A cell's text in a few words.
+pub fn short(outcome: &Outcome) -> String {
+    match outcome {
+        Outcome::Missing => "missing".to_owned(),
+        Outcome::Unreadable(why) => format!("unreadable: {why}"),
+        Outcome::WrongSize { found, expected } => format!(
+            "wrong size: {}×{}, not {}×{}",
+            found.0, found.1, expected.0, expected.1
+        ),
+        Outcome::Compared(answer) => answer.short(),
+    }
+}
+
+/// The whole class, graded.
+#[derive(Debug, Clone)]
+pub struct ClassReport {
+    /// The assignment file, as given.
+    pub assignment: String,
+    /// The submissions folder, as given.
+    pub submissions_folder: String,
+    /// The command lines.
+    pub tasks: Vec<Task>,
+    /// The submissions, in name order.
+    pub graded: Vec<Graded>,
+    /// How many distinct images were compared (the same image handed in twice is compared once).
+    pub distinct_images: usize,
+}
+
+impl ClassReport {
+    /// The class of `request`.
+    pub fn new(
+        request: &GradeRequest,
+        tasks: Vec<Task>,
+        graded: Vec<Graded>,
+        distinct_images: usize,
+    ) -> Self {
+        Self {
+            assignment: request.assignment.display().to_string(),
+            submissions_folder: request.submissions.display().to_string(),
+            tasks,
+            graded,
+            distinct_images,
+        }
+    }
+
+    /// The images of a submission, in order: (command line, kind, name).
+    pub fn columns(&self) -> Vec<(usize, ImageKind, String)> {
+        let mut columns = Vec::new();
+        for (index, task) in self.tasks.iter().enumerate() {
+            if let Some(colour) = &task.colour {
+                columns.push((index, ImageKind::Colour, colour.display().to_string()));
+            }
+            if let Some((_, depth)) = &task.depth {
+                columns.push((index, ImageKind::Depth, depth.display().to_string()));
+            }
+        }
+        columns
+    }
+
+    /// The submissions graded (not skipped).
+    pub fn graded_count(&self) -> usize {
+        self.graded
+            .iter()
+            .filter(|g| g.submission.skipped.is_none())
+            .count()
+    }
+
+    /// For each deviation stated anywhere, how many submissions it is stated for.
+    pub fn deviation_totals(&self) -> BTreeMap<String, usize> {
+        let mut totals = BTreeMap::new();
+        for graded in &self.graded {
+            for word in graded.words() {
+                *totals.entry(word).or_insert(0) += 1;
+            }
+        }
+        totals
+    }
+
+    /// For each status, how many cells have it.
+    pub fn status_totals(&self) -> BTreeMap<&'static str, usize> {
+        let mut totals = BTreeMap::new();
+        for graded in &self.graded {
+            for (_, mark) in &graded.marks {
+                *totals.entry(status(&mark.outcome)).or_insert(0) += 1;
+            }
+        }
+        totals
+    }
+
+    /// One line for the terminal.
+    pub fn summary(&self) -> String {
+        let totals = self.status_totals();
+        let cells: Vec<String> = ["match", "differs", "missing", "unreadable", "wrong size"]
+            .iter()
+            .filter_map(|s| totals.get(s).map(|n| format!("{n} {s}")))
+            .collect();
+        format!(
+            "graded {} submission{} × {} image{}: {}",
+            self.graded_count(),
+            if self.graded_count() == 1 { "" } else { "s" },
+            self.columns().len(),
+            if self.columns().len() == 1 { "" } else { "s" },
+            if cells.is_empty() {
+                "nothing to mark".to_owned()
+            } else {
+                cells.join(", ")
+            }
+        )
+    }
+}
+
+/// The exact images' file (relative path) of command line `index`.
+pub fn exact_image(index: usize, kind: ImageKind) -> String {
+    format!("exact/{}-{}.png", index + 1, kind.word())
+}
+
+/// Writes the exact images to `folder`'s `exact/`.
+pub(super) fn write_exact_images(folder: &Path, exacts: &[Exact]) -> Result<(), String> {
+    let write = |relative: String, bytes: Vec<u8>| {
+        std::fs::write(folder.join(&relative), bytes).map_err(|e| format!("{relative}: {e}"))
+    };
+    std::fs::create_dir_all(folder.join("exact")).map_err(|e| e.to_string())?;
+    for (index, exact) in exacts.iter().enumerate() {
+        if exact.task.colour.is_some() {
+            write(
+                exact_image(index, ImageKind::Colour),
+                png_bytes(&exact.frame.colour_image())?,
+            )?;
+        }
+        if let Some((range, _)) = exact.task.depth {
+            write(
+                exact_image(index, ImageKind::Depth),
+                png_bytes(&exact.frame.depth_image(range))?,
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// Writes the table, the pages and the JSON and CSV forms to `folder`.
+pub(super) fn write_report(folder: &Path, class: &ClassReport) -> Result<(), String> {
+    let write = |relative: &str, text: String| {
+        std::fs::write(folder.join(relative), text).map_err(|e| format!("{relative}: {e}"))
+    };
+    std::fs::create_dir_all(folder.join("pages")).map_err(|e| e.to_string())?;
+    for graded in &class.graded {
+        write(&graded.page, html::submission_page(class, graded))?;
+    }
+    write("index.html", html::index_page(class))?;
+    write("report.json", tables::json(class))?;
+    write("report.csv", tables::csv(class))
+}

@@ -1,0 +1,173 @@
+//! A class's submissions: one folder per student in the submissions folder, each holding the
+//! images the assignment's lines name. Submissions are untrusted: a name is found whatever its
+//! letter case and with `.tga` or `.png` (the difference is said), and only regular files inside
+//! the folder are read — a link is never followed, a named pipe or device never opened.
+
+use std::ffi::OsString;
+use std::path::{Path, PathBuf};
+
+/// One entry of the submissions folder.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Submission {
+    /// The folder's name, as the file system has it (shown escaped; never used for a report's
+    /// file name).
+    pub name: String,
+    /// The folder.
+    pub folder: PathBuf,
+    /// Why it is not graded (a link, not a folder), when it is not.
+    pub skipped: Option<String>,
+}
+
+/// The submissions in `folder`, by name; `leave_out` (the report's own folder, when it is inside)
+/// is not one.
+pub fn list_submissions(
+    folder: &Path,
+    leave_out: Option<&Path>,
+) -> std::io::Result<Vec<Submission>> {
+    let mut found = Vec::new();
+    for entry in std::fs::read_dir(folder)? {
+        let entry = entry?;
+        let path = entry.path();
+        if leave_out.is_some_and(|out| same_place(out, &path)) {
+            continue;
+        }
+        let name = entry.file_name().to_string_lossy().into_owned();
+        if name.starts_with('.') {
+            continue;
+        }
+        let kind = entry.file_type()?;
+        let skipped = if kind.is_symlink() {
+            Some("a link: not followed".to_owned())
+        } else if kind.is_dir() {
+            None
+        } else {
+            // Files beside the folders (a class list, an archive) are not submissions.
+            continue;
+        };
+        found.push(Submission {
+            name,
+            folder: path,
+            skipped,
+        });
+    }
+    found.sort_by(|a, b| a.name.cmp(&b.name));
+    Ok(found)
+}
+
+/// Whether two paths name the same folder (both exist).
+fn same_place(a: &Path, b: &Path) -> bool {
+    match (a.canonicalize(), b.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => false,
+    }
+}
+
+/// Where a named image was found in a submission.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Found {
+    /// A regular file; `renamed` when its name differs from the one asked for (letter case or
+    /// `.tga`/`.png`).
+    File {
+        /// The file.
+        path: PathBuf,
+        /// Its name in the submission, when not the name asked for.
+        renamed: Option<String>,
+    },
+    /// Nothing by that name.
+    Missing,
+    /// Something by that name that is not read, and why.
+    NotRead {
+        /// Its name in the submission.
+        name: String,
+        /// Why it is not read.
+        why: String,
+    },
+}
+
+/// Finds `wanted` (a relative path: its folders exactly, its file name with letter case and
+/// `.tga`/`.png` forgiven) in `folder`.
+pub fn find_image(folder: &Path, wanted: &Path) -> Found {
+    let Some(file_name) = wanted.file_name() else {
+        return Found::Missing;
+    };
+    let mut place = folder.to_path_buf();
+    if let Some(parent) = wanted.parent() {
+        for part in parent.components() {
+            place.push(part);
+            match std::fs::symlink_metadata(&place) {
+                Ok(metadata) if metadata.is_dir() => {}
+                Ok(_) => {
+                    return Found::NotRead {
+                        name: wanted.display().to_string(),
+                        why: format!(
+                            "'{}' is not a folder (links are not followed)",
+                            part.as_os_str().to_string_lossy()
+                        ),
+                    };
+                }
+                Err(_) => return Found::Missing,
+            }
+        }
+    }
+    let Ok(entries) = std::fs::read_dir(&place) else {
+        return Found::Missing;
+    };
+    let names: Vec<OsString> = entries
+        .filter_map(|e| e.ok().map(|e| e.file_name()))
+        .collect();
+    let wanted_text = file_name.to_string_lossy();
+    let stem_of = |name: &str| -> String {
+        let lower = name.to_lowercase();
+        for extension in [".tga", ".png"] {
+            if let Some(stem) = lower.strip_suffix(extension) {
+                return stem.to_owned();
+            }
+        }
+        lower
+    };
+    let wanted_stem = stem_of(&wanted_text);
+    let is_image = |name: &str| stem_of(name) != name.to_lowercase();
+    // The exact name first, then its letter case, then the other extension.
+    let chosen = names
+        .iter()
+        .find(|name| name.as_os_str() == file_name)
+        .or_else(|| {
+            names
+                .iter()
+                .find(|name| name.to_string_lossy().to_lowercase() == wanted_text.to_lowercase())
+        })
+        .or_else(|| {
+            let mut others: Vec<&OsString> = names
+                .iter()
+                .filter(|name| {
+                    let name = name.to_string_lossy();
+                    is_image(&name) && stem_of(&name) == wanted_stem
+                })
+                .collect();
+            others.sort();
+            others.first().copied()
+        });
+    let Some(chosen) = chosen else {
+        return Found::Missing;
+    };
+    let path = place.join(chosen);
+    let name = chosen.to_string_lossy().into_owned();
+    match std::fs::symlink_metadata(&path) {
+        Ok(metadata) if metadata.file_type().is_symlink() => Found::NotRead {
+            name,
+            why: "a link: not followed".to_owned(),
+        },
+        Ok(metadata) if !metadata.is_file() => Found::NotRead {
+            name,
+            why: "not a regular file".to_owned(),
+        },
+        Ok(_) => Found::File {
+            renamed: (chosen.as_os_str() != file_name).then_some(name),
+            path,
+        },
+        Err(error) => Found::NotRead {
+            name,
+            why: error.to_string(),
+        },
+    }
+}
