@@ -5,14 +5,14 @@
 #   bash scripts/reports.sh NAME…      only these, e.g. `accuracy tradeoff screenshot`
 # Names: accuracy performance tradeoff mistakes diagnosis diagnosis-speed compare-diff memory scaling thread-wake profile
 # command-vs-cpp dense-speedup window-frame-times window-frame-times-wgpu setup-times web
-# windows windows-viewer screenshot readme-screenshots window-sizes fuzz trace-example.
+# windows windows-viewer screenshot readme-screenshots window-sizes fuzz trace-example grading.
 # Each runs the command docs/README.md names for it; a failure stops the script.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 all=(accuracy performance tradeoff mistakes diagnosis diagnosis-speed compare-diff memory scaling thread-wake profile command-vs-cpp
      dense-speedup window-frame-times window-frame-times-wgpu setup-times web
-     windows windows-viewer screenshot readme-screenshots window-sizes fuzz trace-example)
+     windows windows-viewer screenshot readme-screenshots window-sizes fuzz trace-example grading)
 wanted=("$@")
 [ ${#wanted[@]} -eq 0 ] && wanted=("${all[@]}")
 
@@ -41,6 +41,12 @@ report() {
     screenshot) bash scripts/screenshot.sh ;;
     readme-screenshots) bash scripts/readme-screenshots.sh ;;
     window-sizes) bash scripts/window-sizes.sh ;;
+    grading)
+      # The generated class graded and checked (docs/grading-speed.md), then its report's table
+      # in headless Chromium (docs/grading.png).
+      cargo build --release && cargo run --release --example grade_class 100 docs/grading-speed.md target/grading-report &&
+        chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size=1300,900 \
+          --screenshot=docs/grading.png "file://$PWD/target/grading-report/index.html" ;;
     fuzz) bash scripts/fuzz.sh 240 docs/fuzz && bash scripts/fuzz-self-test.sh ;;
     trace-example)
       cargo build --bin raytracer && scratch=$(mktemp -d) && {

@@ -109,9 +109,13 @@ fn a_class_is_graded_cell_by_cell_and_nothing_outside_the_report_is_written() {
     std::fs::create_dir_all(&cased).unwrap();
     std::fs::copy(
         subs.join("exact/output1_01.tga"),
-        cased.join("OUTPUT1_01.TGA"),
+        cased.join("Output1_01.tga"),
     )
     .unwrap();
+    // The same name in another case is taken before the other format.
+    image::RgbImage::new(200, 200)
+        .save(cased.join("OUTPUT1_01.png"))
+        .unwrap();
     image::open(subs.join("exact/depth1_01.tga"))
         .unwrap()
         .save(cased.join("Depth1_01.png"))
@@ -186,7 +190,7 @@ fn a_class_is_graded_cell_by_cell_and_nothing_outside_the_report_is_written() {
     }
     // Letter case and format forgiven, and said.
     for (file, found) in [
-        ("output1_01.tga", "OUTPUT1_01.TGA"),
+        ("output1_01.tga", "Output1_01.tga"),
         ("depth1_01.tga", "Depth1_01.png"),
     ] {
         assert_eq!(status("cased", file), "match");
@@ -286,6 +290,20 @@ fn a_report_replaces_a_previous_one_and_never_a_folder_of_other_files() {
     assert!(grade("report").status.success());
     let again = grade("report");
     assert!(again.status.success(), "{}", stderr(&again));
+    assert_eq!(
+        command::names_in(root.path()),
+        ["report", "submissions"],
+        "the previous report is gone, not kept beside"
+    );
+
+    // A report the user has added a file to is no longer only a report.
+    std::fs::write(root.path().join("report/notes.txt"), "my notes").unwrap();
+    let refused = grade("report");
+    assert_eq!(refused.status.code(), Some(1));
+    assert_eq!(
+        std::fs::read_to_string(root.path().join("report/notes.txt")).unwrap(),
+        "my notes"
+    );
 
     std::fs::create_dir(root.path().join("mine")).unwrap();
     std::fs::write(root.path().join("mine/notes.txt"), "my notes").unwrap();
@@ -327,4 +345,54 @@ fn a_wrong_assignment_line_is_named_with_its_line_and_nothing_is_written() {
         .output()
         .unwrap();
     assert_eq!(usage.status.code(), Some(2));
+}
+
+#[test]
+fn a_stopped_run_leaves_no_report_and_no_unfinished_folder() {
+    let root = tempfile::tempdir().unwrap();
+    // Forty submissions of distinct noise: each is compared (none shares an answer).
+    for student in 0..40_u32 {
+        let folder = root.path().join(format!("submissions/s{student:02}"));
+        std::fs::create_dir_all(&folder).unwrap();
+        let noise = image::RgbImage::from_fn(200, 200, |x, y| {
+            let v = (x * 7919 + y * 104_729 + student * 15_485_863).wrapping_mul(2_654_435_761);
+            image::Rgb([(v >> 24) as u8, (v >> 16) as u8, (v >> 8) as u8])
+        });
+        noise.save(folder.join("output1_02.png")).unwrap();
+    }
+    let mut child = std::process::Command::new(binary())
+        .current_dir(root.path())
+        .args([
+            "grade",
+            assignment().to_str().unwrap(),
+            "submissions",
+            "-o",
+            "report",
+        ])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let unfinished = || {
+        command::names_in(root.path())
+            .into_iter()
+            .any(|name| name.starts_with(".report.raytracer-grade-"))
+    };
+    let started = std::time::Instant::now();
+    while !unfinished() {
+        assert!(
+            child.try_wait().unwrap().is_none(),
+            "the run ended before it was stopped"
+        );
+        assert!(started.elapsed() < std::time::Duration::from_secs(60));
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    let stopped = std::process::Command::new("kill")
+        .args(["-TERM", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(stopped.success());
+    let status = child.wait().unwrap();
+    assert_eq!(status.code(), Some(128 + 15), "{status:?}");
+    assert_eq!(command::names_in(root.path()), ["submissions"]);
 }

@@ -131,3 +131,19 @@ pub(super) fn csv(class: &ClassReport) -> String {
     }
     text
 }
+
+#[cfg(test)]
+mod tests {
+    use super::field;
+
+    #[test]
+    fn a_field_is_never_a_formula_and_stays_one_field() {
+        assert_eq!(field("alice"), "alice");
+        assert_eq!(field("=HYPERLINK(\"x\")"), "\"'=HYPERLINK(\"\"x\"\")\"");
+        assert_eq!(field("+1"), "'+1");
+        assert_eq!(field("-2"), "'-2");
+        assert_eq!(field("@SUM(A1)"), "'@SUM(A1)");
+        assert_eq!(field("a,b"), "\"a,b\"");
+        assert_eq!(field("two\nlines"), "\"two\nlines\"");
+    }
+}
