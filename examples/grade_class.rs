@@ -175,8 +175,8 @@ fn main() {
     let _ = writeln!(text, "| whole command | {seconds:.1} s |");
     let _ = writeln!(
         text,
-        "| distinct images compared | {} |",
-        report["distinct_images_compared"]
+        "| distinct comparisons (a line's two images together) | {} |",
+        report["distinct_comparisons"]
     );
     let _ = writeln!(text, "| match | {} |", get(Verdict::Match));
     let _ = writeln!(

@@ -198,7 +198,8 @@ fn a_class_is_graded_cell_by_cell_and_nothing_outside_the_report_is_written() {
     }
     assert_eq!(status("cased", "output1_02.tga"), "missing");
 
-    // The known mistake is stated, as -compare_output states it for the same file.
+    // The known mistake is stated, as -compare_output with -compare_depth states it for the same
+    // files.
     let corners = cell(&report, "corners", "output1_02.tga");
     assert_eq!(corners["status"], "differs");
     let alone = run_in(
@@ -216,6 +217,10 @@ fn a_class_is_graded_cell_by_cell_and_nothing_outside_the_report_is_written() {
             "200",
             "-compare_output",
             "submissions/corners/output1_02.png",
+            "-compare_depth",
+            "8",
+            "12",
+            "submissions/corners/depth1_02.png",
             "-compare_format",
             "json",
         ],

@@ -128,14 +128,14 @@ pub(super) fn index_page(class: &ClassReport) -> String {
             graded.marks.len()
         );
         for (cell, (_, mark)) in graded.marks.iter().enumerate() {
-            let state = status(&mark.outcome);
+            let state = status(mark);
             let _ = write!(
                 page,
                 "<td class=\"{}\" data-sort=\"{}\"><a href=\"{}#image-{cell}\">{}</a></td>",
                 class_of(state),
                 escape(state),
                 graded.page,
-                escape(&short(&mark.outcome))
+                escape(&short(mark))
             );
         }
         let _ = writeln!(page, "</tr>");
@@ -155,7 +155,7 @@ pub(super) fn index_page(class: &ClassReport) -> String {
                 .filter(|g| {
                     g.marks
                         .get(column)
-                        .is_some_and(|(_, m)| status(&m.outcome) == wanted)
+                        .is_some_and(|(_, m)| status(m) == wanted)
                 })
                 .count();
             let _ = write!(page, "<td>{count} of {graded}</td>");
@@ -209,7 +209,7 @@ pub(super) fn submission_page(class: &ClassReport, graded: &Graded) -> String {
     }
     for (cell, (index, mark)) in graded.marks.iter().enumerate() {
         let task = &class.tasks[*index];
-        let state = status(&mark.outcome);
+        let state = status(mark);
         let _ = writeln!(
             page,
             "<section id=\"image-{cell}\"><h2>{} — {} ({})</h2>\n<p>Line {} of the assignment: <code>{}</code></p>\n\
@@ -220,7 +220,7 @@ pub(super) fn submission_page(class: &ClassReport, graded: &Graded) -> String {
             task.line_number,
             escape(&task.line),
             class_of(state),
-            escape(&short(&mark.outcome)),
+            escape(&short(mark)),
         );
         if let Some(renamed) = &mark.renamed {
             let _ = writeln!(
@@ -231,10 +231,11 @@ pub(super) fn submission_page(class: &ClassReport, graded: &Graded) -> String {
         }
         match &mark.outcome {
             Outcome::Compared(answer) => {
-                if !answer.statements.is_empty() {
+                let statements: Vec<_> = answer.statements_on(mark.kind).collect();
+                if !statements.is_empty() {
                     let _ = writeln!(page, "<ul>");
-                    for (_, _, said) in &answer.statements {
-                        let _ = writeln!(page, "<li>{}</li>", escape(said));
+                    for statement in statements {
+                        let _ = writeln!(page, "<li>{}</li>", escape(&statement.said));
                     }
                     let _ = writeln!(page, "</ul>");
                 }

@@ -1,8 +1,9 @@
-//! One image of one submission marked: found (letter case and `.tga`/`.png` forgiven), read
-//! within the limits of [`read_their_image`], checked for size, and compared and explained as
-//! `-compare_output` / `-compare_depth` would (a depth image under the assignment's range, the
-//! range it was drawn over read from it where it differs). Students who make the same mistake
-//! hand in the same picture: an answer is computed once per distinct image and shared.
+//! A command line's images of one submission marked: each found (letter case and `.tga`/`.png`
+//! forgiven), read within the limits of [`read_their_image`] and checked for size; those that
+//! can be are compared and explained together, as `-compare_output` with `-compare_depth` would
+//! (one program drew both; the depth image under the line's range, the range it was drawn over
+//! read from it where it differs). Students who make the same mistake hand in the same
+//! pictures: an answer is computed once per distinct pair of images and shared.
 
 use std::collections::HashMap;
 use std::collections::hash_map::RandomState;
@@ -17,7 +18,6 @@ use super::assignment::Task;
 use super::submission::{Found, find_image};
 use crate::cli::compare::{TheirImages, compare};
 use crate::cli::{CompareRequest, TheirDepth};
-use crate::compare::Difference;
 use crate::compare::their_image::read_their_image;
 use crate::render::Frame;
 use crate::scene::Scene;
@@ -51,46 +51,85 @@ pub struct Exact {
     pub frame: Frame,
 }
 
-/// What comparing one image found.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Answer {
+/// What comparing found about one image.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ImageAnswer {
     /// Whether it matches by the course's rule.
     pub matches: bool,
     /// Pixels that differ at all.
     pub pixels_differing: usize,
     /// The largest difference of a channel, levels.
     pub max_difference: u8,
-    /// The statements: (word, the word with its values, the sentence).
-    pub statements: Vec<(String, String, String)>,
     /// Differing pixels no statement explains.
     pub unexplained_pixels: usize,
+}
+
+/// One statement of an answer.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Statement {
+    /// Its word (`pixel-corners`, `zoom`).
+    pub word: String,
+    /// The word with its values (`zoom 0.9945`).
+    pub values: String,
+    /// The sentence.
+    pub said: String,
+    /// Whether it is about how the depth image is drawn (not said in a colour image's cell).
+    pub about_depth: bool,
+}
+
+/// What comparing a command line's images found: their colour and depth images together, as
+/// `-compare_output` with `-compare_depth` would (one program drew both).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Answer {
+    /// The colour image, when compared.
+    pub colour: Option<ImageAnswer>,
+    /// The depth image, when compared.
+    pub depth: Option<ImageAnswer>,
+    /// The statements.
+    pub statements: Vec<Statement>,
     /// The whole answer as `name: value` lines.
     pub lines: String,
     /// The whole answer as JSON (docs/compare-json.md).
     pub json: serde_json::Value,
-    /// The difference picture (theirs, exact, difference, unexplained), a PNG file in the
-    /// report's folder (relative path); differing only.
+    /// The difference picture (theirs, exact, difference, unexplained; a row per image), a PNG
+    /// file in the report's folder (relative path); when an image differs.
     pub picture: Option<String>,
-    /// A name for this distinct image, shared by every submission that holds it.
-    pub key: String,
 }
 
 impl Answer {
-    /// The answer in a few words: "match", or the statements with their values.
-    pub fn short(&self) -> String {
-        if self.matches {
+    /// What was found about the `kind` image.
+    pub fn image(&self, kind: ImageKind) -> Option<&ImageAnswer> {
+        match kind {
+            ImageKind::Colour => self.colour.as_ref(),
+            ImageKind::Depth => self.depth.as_ref(),
+        }
+    }
+
+    /// The statements that bear on the `kind` image (all of them for depth; those not about how
+    /// depth is drawn for colour).
+    pub fn statements_on(&self, kind: ImageKind) -> impl Iterator<Item = &Statement> {
+        self.statements
+            .iter()
+            .filter(move |s| kind == ImageKind::Depth || !s.about_depth)
+    }
+
+    /// The `kind` image's answer in a few words: "match", or the statements with their values.
+    pub fn short(&self, kind: ImageKind) -> String {
+        let Some(image) = self.image(kind) else {
+            return String::new();
+        };
+        if image.matches {
             return "match".to_owned();
         }
         let mut text = self
-            .statements
-            .iter()
-            .map(|(_, values, _)| values.as_str())
+            .statements_on(kind)
+            .map(|s| s.values.as_str())
             .collect::<Vec<_>>()
             .join(" + ");
         if text.is_empty() {
             text = "not explained".to_owned();
-        } else if self.unexplained_pixels > 0 {
-            let _ = write!(text, " ({} px unexplained)", self.unexplained_pixels);
+        } else if image.unexplained_pixels > 0 {
+            let _ = write!(text, " ({} px unexplained)", image.unexplained_pixels);
         }
         text
     }
@@ -110,7 +149,7 @@ pub enum Outcome {
         /// The command line's size.
         expected: (u32, u32),
     },
-    /// Compared.
+    /// Compared (with the line's other image, when that one could be read too).
     Compared(Arc<Answer>),
 }
 
@@ -129,14 +168,27 @@ pub struct Mark {
     pub outcome: Outcome,
 }
 
+impl Mark {
+    /// What was found about this image, when it was compared.
+    pub fn answer(&self) -> Option<(&Answer, &ImageAnswer)> {
+        match &self.outcome {
+            Outcome::Compared(answer) => answer.image(self.kind).map(|image| (&**answer, image)),
+            _ => None,
+        }
+    }
+}
+
 /// The answers computed so far, by command line, image and picture; the difference pictures
 /// are written to the report's folder as they are made, so no image is held after its
 /// comparison.
 pub struct Answers {
-    known: Mutex<HashMap<(usize, ImageKind, u128), Arc<Answer>>>,
+    known: Mutex<HashMap<AnswerKey, Arc<Answer>>>,
     hashers: (RandomState, RandomState),
     report: PathBuf,
 }
+
+/// An answer's key: the command line, and the fingerprints of the colour and depth images.
+type AnswerKey = (usize, Option<u128>, Option<u128>);
 
 /// Where the difference pictures go, inside the report's folder.
 pub const PICTURES_FOLDER: &str = "pictures";
@@ -163,7 +215,7 @@ impl Answers {
         (u128::from(one(&self.hashers.0)) << 64) | u128::from(one(&self.hashers.1))
     }
 
-    /// How many distinct images were compared.
+    /// How many distinct comparisons were made (a line's images compared together count one).
     pub fn distinct(&self) -> usize {
         self.known
             .lock()
@@ -172,68 +224,107 @@ impl Answers {
     }
 }
 
-/// Marks the `kind` image of `exact` (command line number `index`) in the submission `folder`.
-pub fn mark(
-    folder: &Path,
-    index: usize,
-    exact: &Exact,
-    kind: ImageKind,
-    answers: &Answers,
-) -> Mark {
-    let wanted = match kind {
-        ImageKind::Colour => exact.task.colour.clone(),
-        ImageKind::Depth => exact.task.depth.as_ref().map(|d| d.1.clone()),
-    }
-    .unwrap_or_default();
-    let mut mark = Mark {
-        kind,
-        wanted: wanted.clone(),
-        renamed: None,
-        path: None,
-        outcome: Outcome::Missing,
-    };
-    let path = match find_image(folder, &wanted) {
-        Found::Missing => return mark,
-        Found::NotRead { name, why } => {
-            mark.renamed = Some(name);
-            mark.outcome = Outcome::Unreadable(why);
-            return mark;
+/// Marks the images of command line number `index` (`exact`) in the submission `folder`: each
+/// found and read; those that can be compared are compared together.
+pub fn mark_line(folder: &Path, index: usize, exact: &Exact, answers: &Answers) -> Vec<Mark> {
+    let named = [
+        (ImageKind::Colour, exact.task.colour.clone()),
+        (
+            ImageKind::Depth,
+            exact.task.depth.as_ref().map(|d| d.1.clone()),
+        ),
+    ];
+    let mut marks = Vec::new();
+    let mut images: Vec<(ImageKind, RgbImage, PathBuf)> = Vec::new();
+    for (kind, wanted) in named {
+        let Some(wanted) = wanted else { continue };
+        let mut mark = Mark {
+            kind,
+            wanted: wanted.clone(),
+            renamed: None,
+            path: None,
+            outcome: Outcome::Missing,
+        };
+        match find_image(folder, &wanted) {
+            Found::Missing => {}
+            Found::NotRead { name, why } => {
+                mark.renamed = Some(name);
+                mark.outcome = Outcome::Unreadable(why);
+            }
+            Found::File { path, renamed } => {
+                mark.renamed = renamed;
+                mark.path = Some(path.clone());
+                match read(&path, exact.task.size_px) {
+                    Ok(image) => images.push((kind, image, path)),
+                    Err(outcome) => mark.outcome = outcome,
+                }
+            }
         }
-        Found::File { path, renamed } => {
-            mark.renamed = renamed;
-            path
-        }
-    };
-    mark.path = Some(path.clone());
-    if std::fs::metadata(&path).is_ok_and(|m| m.len() == 0) {
-        mark.outcome = Outcome::Unreadable("an empty file".to_owned());
-        return mark;
+        marks.push(mark);
     }
-    mark.outcome = match read_their_image(&path) {
-        Err(error) => Outcome::Unreadable(error.reason()),
-        Ok(image) if image.dimensions() != exact.task.size_px => Outcome::WrongSize {
-            found: image.dimensions(),
-            expected: exact.task.size_px,
-        },
-        Ok(image) => match answer(index, exact, kind, image, &path, answers) {
+    if !images.is_empty() {
+        let outcome = match answer(index, exact, images, answers) {
             Ok(answer) => Outcome::Compared(answer),
             Err(why) => Outcome::Unreadable(why),
-        },
-    };
-    mark
+        };
+        for mark in &mut marks {
+            if mark.path.is_some() && mark.outcome == Outcome::Missing {
+                mark.outcome = outcome.clone();
+            }
+        }
+    }
+    marks
 }
 
-/// Compares `image`, or finds the answer for the same image given before.
+/// Reads a submission's image, which must be `size_px`.
+fn read(path: &Path, size_px: (u32, u32)) -> Result<RgbImage, Outcome> {
+    if std::fs::metadata(path).is_ok_and(|m| m.len() == 0) {
+        return Err(Outcome::Unreadable("an empty file".to_owned()));
+    }
+    match read_their_image(path) {
+        Err(error) => Err(Outcome::Unreadable(error.reason())),
+        Ok(image) if image.dimensions() != size_px => Err(Outcome::WrongSize {
+            found: image.dimensions(),
+            expected: size_px,
+        }),
+        Ok(image) => Ok(image),
+    }
+}
+
+/// Compares `images` (a line's colour and/or depth image) together, or finds the answer for
+/// the same images given before.
 fn answer(
     index: usize,
     exact: &Exact,
-    kind: ImageKind,
-    image: RgbImage,
-    path: &Path,
+    images: Vec<(ImageKind, RgbImage, PathBuf)>,
     answers: &Answers,
 ) -> Result<Arc<Answer>, String> {
-    let fingerprint = answers.fingerprint(&image);
-    let key = (index, kind, fingerprint);
+    let mut key = (index, None, None);
+    let mut request = CompareRequest {
+        colour: None,
+        depth: None,
+        diff: Some(PathBuf::new()),
+        json: false,
+    };
+    let (mut colour, mut depth) = (None, None);
+    for (kind, image, path) in images {
+        let fingerprint = Some(answers.fingerprint(&image));
+        match kind {
+            ImageKind::Colour => {
+                key.1 = fingerprint;
+                request.colour = Some(path);
+                colour = Some(image);
+            }
+            ImageKind::Depth => {
+                key.2 = fingerprint;
+                request.depth = Some(TheirDepth {
+                    range: exact.task.depth.as_ref().map(|d| d.0),
+                    path,
+                });
+                depth = Some(image);
+            }
+        }
+    }
     if let Some(known) = answers
         .known
         .lock()
@@ -242,38 +333,31 @@ fn answer(
     {
         return Ok(Arc::clone(known));
     }
-    let (request, theirs) = match kind {
-        ImageKind::Colour => (
-            CompareRequest {
-                colour: Some(path.to_path_buf()),
-                depth: None,
-                diff: Some(PathBuf::new()),
-                json: false,
-            },
-            TheirImages::new(Some(image), None),
-        ),
-        ImageKind::Depth => (
-            CompareRequest {
-                colour: None,
-                depth: Some(TheirDepth {
-                    range: exact.task.depth.as_ref().map(|d| d.0),
-                    path: path.to_path_buf(),
-                }),
-                diff: Some(PathBuf::new()),
-                json: false,
-            },
-            TheirImages::new(None, Some(image)),
-        ),
-    };
+    let theirs = TheirImages::new(colour, depth);
     let (report, picture) =
         compare(&exact.scene, &request, &theirs, &exact.frame).map_err(|e| e.to_string())?;
-    let matches = report.matches();
-    let difference = match kind {
-        ImageKind::Colour => report.colour.as_ref(),
-        ImageKind::Depth => report.depth.as_ref(),
+    let unexplained = &report.diagnosis.unexplained;
+    let count = |flags: &Option<Vec<bool>>| {
+        flags
+            .as_ref()
+            .map_or(0, |f| f.iter().filter(|&&u| u).count())
     };
-    let name = format!("{index}-{}-{fingerprint:032x}", kind.word());
-    let picture = match picture.filter(|_| !matches) {
+    let colour = report.colour.as_ref().map(|d| ImageAnswer {
+        matches: d.colour_matches(),
+        pixels_differing: d.pixels_differing(),
+        max_difference: d.max_difference(),
+        unexplained_pixels: count(&unexplained.colour),
+    });
+    let depth = report.depth.as_ref().map(|d| ImageAnswer {
+        matches: d.depth_matches(),
+        pixels_differing: d.pixels_differing(),
+        max_difference: d.max_difference(),
+        unexplained_pixels: count(&unexplained.depth),
+    });
+    let fingerprints =
+        [key.1, key.2].map(|f| f.map_or_else(|| "none".to_owned(), |f| format!("{f:032x}")));
+    let name = format!("{}-{}-{}", index + 1, fingerprints[0], fingerprints[1]);
+    let picture = match picture.filter(|_| !report.matches()) {
         Some(picture) => {
             let relative = format!("{PICTURES_FOLDER}/{name}.png");
             std::fs::write(answers.report.join(&relative), png_bytes(&picture)?)
@@ -283,20 +367,22 @@ fn answer(
         None => None,
     };
     let answer = Arc::new(Answer {
-        matches,
-        pixels_differing: difference.map_or(0, Difference::pixels_differing),
-        max_difference: difference.map_or(0, Difference::max_difference),
+        colour,
+        depth,
         statements: report
             .diagnosis
             .stated()
             .iter()
-            .map(|d| (d.word().to_owned(), d.name_and_values(), d.said()))
+            .map(|d| Statement {
+                word: d.word().to_owned(),
+                values: d.name_and_values(),
+                said: d.said(),
+                about_depth: d.is_about_depth(),
+            })
             .collect(),
-        unexplained_pixels: report.diagnosis.unexplained_pixels(),
         lines: report.lines(),
         json: serde_json::from_str(&report.json(None, None)).unwrap_or_default(),
         picture,
-        key: name,
     });
     let mut known = answers.known.lock().unwrap_or_else(PoisonError::into_inner);
     Ok(Arc::clone(known.entry(key).or_insert(answer)))

@@ -22,7 +22,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use rayon::prelude::*;
 
 use self::assignment::{AssignmentError, read_assignment};
-use self::mark::{Answers, Exact, ImageKind, Mark, mark};
+use self::mark::{Answers, Exact, Mark, mark_line};
 use self::report::{ClassReport, Graded};
 use self::staging::Staging;
 use self::submission::list_submissions;
@@ -130,19 +130,10 @@ pub fn grade(request: &GradeRequest) -> Result<ClassReport, GradeError> {
             let mut marks: Vec<(usize, Mark)> = Vec::new();
             if submission.skipped.is_none() {
                 for (index, exact) in exacts.iter().enumerate() {
-                    for (kind, named) in [
-                        (ImageKind::Colour, exact.task.colour.is_some()),
-                        (ImageKind::Depth, exact.task.depth.is_some()),
-                    ] {
-                        if named {
-                            marks.push((
-                                index,
-                                mark(&submission.folder, index, exact, kind, &answers),
-                            ));
-                            let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
-                            bar.report(finished as f64 / total as f64);
-                        }
-                    }
+                    let line = mark_line(&submission.folder, index, exact, &answers);
+                    let finished = done.fetch_add(line.len(), Ordering::Relaxed) + line.len();
+                    bar.report(finished as f64 / total as f64);
+                    marks.extend(line.into_iter().map(|mark| (index, mark)));
                 }
             }
             Graded::new(number, submission, marks)

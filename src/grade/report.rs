@@ -52,11 +52,8 @@ impl Graded {
         let mut words: Vec<String> = self
             .marks
             .iter()
-            .filter_map(|(_, mark)| match &mark.outcome {
-                Outcome::Compared(answer) => Some(answer.statements.iter().map(|s| s.0.clone())),
-                _ => None,
-            })
-            .flatten()
+            .filter_map(|(_, mark)| mark.answer())
+            .flat_map(|(answer, _)| answer.statements.iter().map(|s| s.word.clone()))
             .collect();
         words.sort();
         words.dedup();
@@ -67,32 +64,32 @@ impl Graded {
     pub fn matching(&self) -> usize {
         self.marks
             .iter()
-            .filter(|(_, mark)| status(&mark.outcome) == "match")
+            .filter(|(_, mark)| status(mark) == "match")
             .count()
     }
 }
 
 /// A cell's status: "match", "differs", "missing", "unreadable" or "wrong size".
-pub fn status(outcome: &Outcome) -> &'static str {
-    match outcome {
-        Outcome::Missing => "missing",
-        Outcome::Unreadable(_) => "unreadable",
-        Outcome::WrongSize { .. } => "wrong size",
-        Outcome::Compared(answer) if answer.matches => "match",
-        Outcome::Compared(_) => "differs",
+pub fn status(mark: &Mark) -> &'static str {
+    match (&mark.outcome, mark.answer()) {
+        (Outcome::Missing, _) => "missing",
+        (Outcome::Unreadable(_), _) => "unreadable",
+        (Outcome::WrongSize { .. }, _) => "wrong size",
+        (Outcome::Compared(_), Some((_, image))) if image.matches => "match",
+        (Outcome::Compared(_), _) => "differs",
     }
 }
 
 /// A cell's text in a few words.
-pub fn short(outcome: &Outcome) -> String {
-    match outcome {
+pub fn short(mark: &Mark) -> String {
+    match &mark.outcome {
         Outcome::Missing => "missing".to_owned(),
         Outcome::Unreadable(why) => format!("unreadable: {why}"),
         Outcome::WrongSize { found, expected } => format!(
             "wrong size: {}×{}, not {}×{}",
             found.0, found.1, expected.0, expected.1
         ),
-        Outcome::Compared(answer) => answer.short(),
+        Outcome::Compared(answer) => answer.short(mark.kind),
     }
 }
 
@@ -107,7 +104,8 @@ pub struct ClassReport {
     pub tasks: Vec<Task>,
     /// The submissions, in name order.
     pub graded: Vec<Graded>,
-    /// How many distinct images were compared (the same image handed in twice is compared once).
+    /// How many distinct comparisons were made (the same images handed in twice are compared
+    /// once).
     pub distinct_images: usize,
 }
 
@@ -166,7 +164,7 @@ impl ClassReport {
         let mut totals = BTreeMap::new();
         for graded in &self.graded {
             for (_, mark) in &graded.marks {
-                *totals.entry(status(&mark.outcome)).or_insert(0) += 1;
+                *totals.entry(status(mark)).or_insert(0) += 1;
             }
         }
         totals

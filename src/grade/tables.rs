@@ -27,11 +27,17 @@ pub(super) fn json(class: &ClassReport) -> String {
                         "kind": mark.kind.word(),
                         "file": mark.wanted.display().to_string(),
                         "found_as": mark.renamed,
-                        "status": status(&mark.outcome),
-                        "short": short(&mark.outcome),
+                        "status": status(mark),
+                        "short": short(mark),
                     });
                     match &mark.outcome {
-                        Outcome::Compared(answer) => cell["answer"] = answer.json.clone(),
+                        Outcome::Compared(answer) => {
+                            if let Some((_, image)) = mark.answer() {
+                                cell["pixels_differing"] = json!(image.pixels_differing);
+                                cell["unexplained_pixels"] = json!(image.unexplained_pixels);
+                            }
+                            cell["answer"] = answer.json.clone();
+                        }
                         Outcome::Unreadable(why) => cell["why"] = json!(why),
                         Outcome::WrongSize { found, expected } => {
                             cell["size"] = json!([found.0, found.1]);
@@ -61,7 +67,7 @@ pub(super) fn json(class: &ClassReport) -> String {
         "submissions_graded": class.graded_count(),
         "deviation_totals": class.deviation_totals(),
         "status_totals": class.status_totals(),
-        "distinct_images_compared": class.distinct_images,
+        "distinct_comparisons": class.distinct_images,
         "submissions": submissions,
     });
     let mut text = serde_json::to_string_pretty(&document).unwrap_or_default();
@@ -100,18 +106,17 @@ pub(super) fn csv(class: &ClassReport) -> String {
             continue;
         }
         for (index, mark) in &graded.marks {
-            let (differing, unexplained, words) = match &mark.outcome {
-                Outcome::Compared(answer) => (
-                    answer.pixels_differing.to_string(),
-                    answer.unexplained_pixels.to_string(),
+            let (differing, unexplained, words) = match mark.answer() {
+                Some((answer, image)) => (
+                    image.pixels_differing.to_string(),
+                    image.unexplained_pixels.to_string(),
                     answer
-                        .statements
-                        .iter()
-                        .map(|s| s.0.as_str())
+                        .statements_on(mark.kind)
+                        .map(|s| s.word.as_str())
                         .collect::<Vec<_>>()
                         .join(" "),
                 ),
-                _ => (String::new(), String::new(), String::new()),
+                None => (String::new(), String::new(), String::new()),
             };
             let row = [
                 field(&graded.submission.name),
@@ -119,11 +124,11 @@ pub(super) fn csv(class: &ClassReport) -> String {
                 mark.kind.word().to_owned(),
                 field(&mark.wanted.display().to_string()),
                 field(mark.renamed.as_deref().unwrap_or("")),
-                field(status(&mark.outcome)),
+                field(status(mark)),
                 differing,
                 unexplained,
                 field(&words),
-                field(&short(&mark.outcome)),
+                field(&short(mark)),
             ];
             text.push_str(&row.join(","));
             text.push('\n');
