@@ -59,10 +59,22 @@ fn main() {
     let assignment = root.join("scenes/assignment1.txt");
     let lines = assignment_lines(&assignment);
     let work = tempfile::tempdir().expect("a temporary folder");
+    // The command runs in the work folder on a copy of the assignment and its scenes, so the
+    // report names them as a teacher's would (`scenes/assignment1.txt`, `class`).
+    std::fs::create_dir_all(work.path().join("scenes")).expect("a scenes folder");
+    std::fs::copy(&assignment, work.path().join("scenes/assignment1.txt")).expect("a copy");
+    for (scene, ..) in &lines {
+        std::fs::copy(
+            root.join("scenes").join(scene),
+            work.path().join("scenes").join(scene),
+        )
+        .expect("a copy of a scene");
+    }
     let class = work.path().join("class");
-    let report_folder = arguments
-        .next()
-        .map_or_else(|| work.path().join("report"), std::path::PathBuf::from);
+    let report_folder = arguments.next().map_or_else(
+        || work.path().join("report"),
+        |folder| std::path::absolute(folder).expect("the report's folder"),
+    );
 
     let mut programs: BTreeMap<String, Program> = BTreeMap::new();
     let making = Instant::now();
@@ -91,9 +103,8 @@ fn main() {
 
     let started = Instant::now();
     let output = std::process::Command::new(&binary)
-        .arg("grade")
-        .arg(&assignment)
-        .arg(&class)
+        .current_dir(work.path())
+        .args(["grade", "scenes/assignment1.txt", "class"])
         .arg("-o")
         .arg(&report_folder)
         .output()

@@ -1,8 +1,7 @@
 //! [`UsageError`]: a command-line mistake; the program prints it and exits with status 2. Flags
 //! are named through [`Flag`], so the messages follow the flag table.
 
-use super::flags::Flag;
-use super::grade_request::{GRADE_SYNOPSIS, GRADE_WORD};
+use super::flags::{Flag, GRADE_SYNOPSIS, GRADE_WORD};
 use crate::output::{ImageFormat, RawDepthFormat};
 use crate::render::sampling::SamplingError;
 use crate::render::{MAX_PIXELS, MAX_SIDE_PX};

@@ -5,7 +5,11 @@
 
 use std::fmt::{self, Write as _};
 
-use super::grade_request::GRADE_SYNOPSIS;
+/// The word that starts the grading command (`raytracer grade …`).
+pub const GRADE_WORD: &str = "grade";
+
+/// The grading command's synopsis, for the usage text and its errors.
+pub const GRADE_SYNOPSIS: &str = "grade ASSIGNMENT SUBMISSIONS -o REPORT";
 
 /// A command-line flag.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]

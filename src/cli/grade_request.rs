@@ -1,17 +1,11 @@
 //! The grading command's words: `raytracer grade ASSIGNMENT SUBMISSIONS -o REPORT` (the
-//! grading itself is [`crate::grade`]). A subcommand, not a flag: it takes two folders and a file
+//! grading itself is the `grade` module). A subcommand, not a flag: it takes two folders and a file
 //! where the course's flags take one scene, and none of the render flags apply to it.
 
 use std::ffi::OsString;
 use std::path::PathBuf;
 
 use super::error::UsageError;
-
-/// The word that starts the grading command.
-pub const GRADE_WORD: &str = "grade";
-
-/// The grading command's synopsis, for the usage text and its errors.
-pub const GRADE_SYNOPSIS: &str = "grade ASSIGNMENT SUBMISSIONS -o REPORT";
 
 /// Grading a class: the course's command lines, a folder per student, where the report goes.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -23,8 +23,8 @@ mod tests;
 mod to_arguments;
 
 pub use error::UsageError;
-pub use flags::{Flag, usage};
-pub use grade_request::{GRADE_SYNOPSIS, GRADE_WORD, GradeRequest};
+pub use flags::{Flag, GRADE_SYNOPSIS, GRADE_WORD, usage};
+pub use grade_request::GradeRequest;
 pub use raw_args::RawArgs;
 pub use request::{
     Command, CompareRequest, DEFAULT_SIZE_PX, DepthOutput, RenderRequest, TheirDepth,

@@ -6,7 +6,8 @@ use std::path::PathBuf;
 
 use super::error::UsageError;
 use super::flags::Flag;
-use super::grade_request::{GRADE_WORD, GradeRequest, parse_grade};
+use super::flags::GRADE_WORD;
+use super::grade_request::{GradeRequest, parse_grade};
 use super::raw_args::RawArgs;
 use crate::output::{ImageFormat, RawDepthFormat};
 use crate::render::depth_map::{DepthColourMap, DepthRange};

@@ -239,6 +239,24 @@ pub(super) fn submission_page(class: &ClassReport, graded: &Graded) -> String {
                     }
                     let _ = writeln!(page, "</ul>");
                 }
+                if !answer.alternatives.is_empty() {
+                    let _ = writeln!(
+                        page,
+                        "<p>One of these (they draw nearly the same pixels):</p><ul>"
+                    );
+                    for set in &answer.alternatives {
+                        let said: Vec<String> = set.iter().map(|s| escape(&s.said)).collect();
+                        let _ = writeln!(page, "<li>{}</li>", said.join("<br>and "));
+                    }
+                    let _ = writeln!(page, "</ul>");
+                }
+                if !answer.partial.is_empty() {
+                    let _ = writeln!(page, "<p>In part:</p><ul>");
+                    for statement in &answer.partial {
+                        let _ = writeln!(page, "<li>{}</li>", escape(&statement.said));
+                    }
+                    let _ = writeln!(page, "</ul>");
+                }
                 if let Some(picture) = &answer.picture {
                     let _ = writeln!(
                         page,

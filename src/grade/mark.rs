@@ -18,6 +18,7 @@ use super::assignment::Task;
 use super::submission::{Found, find_image};
 use crate::cli::compare::{TheirImages, compare};
 use crate::cli::{CompareRequest, TheirDepth};
+use crate::compare::Deviation;
 use crate::compare::their_image::read_their_image;
 use crate::render::Frame;
 use crate::scene::Scene;
@@ -87,6 +88,10 @@ pub struct Answer {
     pub depth: Option<ImageAnswer>,
     /// The statements.
     pub statements: Vec<Statement>,
+    /// A near tie: one of these sets of statements is what the program does.
+    pub alternatives: Vec<Vec<Statement>>,
+    /// Statements that explain only part of the difference.
+    pub partial: Vec<Statement>,
     /// The whole answer as `name: value` lines.
     pub lines: String,
     /// The whole answer as JSON (docs/compare-json.md).
@@ -121,11 +126,28 @@ impl Answer {
         if image.matches {
             return "match".to_owned();
         }
-        let mut text = self
-            .statements_on(kind)
-            .map(|s| s.values.as_str())
-            .collect::<Vec<_>>()
-            .join(" + ");
+        let joined = |list: &mut dyn Iterator<Item = &Statement>| {
+            list.map(|s| s.values.as_str())
+                .collect::<Vec<_>>()
+                .join(" + ")
+        };
+        let mut parts = Vec::new();
+        let stated = joined(&mut self.statements_on(kind));
+        if !stated.is_empty() {
+            parts.push(stated);
+        }
+        if !self.alternatives.is_empty() {
+            let sets: Vec<String> = self
+                .alternatives
+                .iter()
+                .map(|set| joined(&mut set.iter()))
+                .collect();
+            parts.push(format!("one of: {}", sets.join(" | ")));
+        }
+        if !self.partial.is_empty() {
+            parts.push(format!("in part: {}", joined(&mut self.partial.iter())));
+        }
+        let mut text = parts.join("; ");
         if text.is_empty() {
             text = "not explained".to_owned();
         } else if image.unexplained_pixels > 0 {
@@ -369,23 +391,32 @@ fn answer(
     let answer = Arc::new(Answer {
         colour,
         depth,
-        statements: report
+        statements: statements(report.diagnosis.stated()),
+        alternatives: report
             .diagnosis
-            .stated()
+            .alternatives()
             .iter()
-            .map(|d| Statement {
-                word: d.word().to_owned(),
-                values: d.name_and_values(),
-                said: d.said(),
-                about_depth: d.is_about_depth(),
-            })
+            .map(|set| statements(set))
             .collect(),
+        partial: statements(report.diagnosis.partial()),
         lines: report.lines(),
         json: serde_json::from_str(&report.json(None, None)).unwrap_or_default(),
         picture,
     });
     let mut known = answers.known.lock().unwrap_or_else(PoisonError::into_inner);
     Ok(Arc::clone(known.entry(key).or_insert(answer)))
+}
+
+/// The diagnosis's statements, as the report keeps them.
+fn statements(list: &[Deviation]) -> Vec<Statement> {
+    list.iter()
+        .map(|d| Statement {
+            word: d.word().to_owned(),
+            values: d.name_and_values(),
+            said: d.said(),
+            about_depth: d.is_about_depth(),
+        })
+        .collect()
 }
 
 /// An image as PNG bytes.
@@ -398,4 +429,59 @@ pub(crate) fn png_bytes(image: &RgbImage) -> Result<Vec<u8>, String> {
         )
         .map_err(|e| e.to_string())?;
     Ok(bytes)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn statement(word: &str, values: &str, about_depth: bool) -> Statement {
+        Statement {
+            word: word.to_owned(),
+            values: values.to_owned(),
+            said: String::new(),
+            about_depth,
+        }
+    }
+
+    #[test]
+    fn a_cell_says_a_near_tie_and_leaves_depth_statements_out_of_colour() {
+        let differs = ImageAnswer {
+            matches: false,
+            pixels_differing: 100,
+            max_difference: 255,
+            unexplained_pixels: 0,
+        };
+        let mut answer = Answer {
+            colour: Some(differs),
+            depth: Some(ImageAnswer {
+                unexplained_pixels: 3,
+                ..differs
+            }),
+            statements: vec![],
+            alternatives: vec![
+                vec![statement("mirrored", "mirrored", false)],
+                vec![statement("flipped-vertically", "flipped-vertically", false)],
+            ],
+            partial: vec![],
+            lines: String::new(),
+            json: serde_json::Value::Null,
+            picture: None,
+        };
+        assert_eq!(
+            answer.short(ImageKind::Colour),
+            "one of: mirrored | flipped-vertically"
+        );
+        answer.alternatives.clear();
+        assert_eq!(answer.short(ImageKind::Colour), "not explained");
+        answer.statements = vec![
+            statement("zoom", "zoom 0.9", false),
+            statement("depth-range", "depth-range 8 13", true),
+        ];
+        assert_eq!(answer.short(ImageKind::Colour), "zoom 0.9");
+        assert_eq!(
+            answer.short(ImageKind::Depth),
+            "zoom 0.9 + depth-range 8 13 (3 px unexplained)"
+        );
+    }
 }

@@ -5,11 +5,12 @@
 //! rendered once. Each submission folder ([`submission`]) is read for the files those lines name,
 //! each image marked as `-compare_output` / `-compare_depth` would ([`mark`]); a missing, empty,
 //! unreadable or wrong-sized file is a cell of the report, never a stop. Submissions are marked
-//! in parallel, and the report ([`report`]: an HTML table and a page per submission, with the
-//! same as JSON and CSV) is made in a folder beside the destination and moved into place when
-//! whole ([`staging`]), so a failed run leaves a previous report as it was.
+//! in parallel, and the report ([`report`], written by [`files`]: an HTML table and a page per
+//! submission, with the same as JSON and CSV) is made in a folder beside the destination and
+//! moved into place when whole ([`staging`]), so a failed run leaves a previous report as it was.
 
 pub mod assignment;
+mod files;
 mod html;
 pub mod mark;
 pub mod report;
@@ -112,7 +113,7 @@ pub fn grade(request: &GradeRequest) -> Result<ClassReport, GradeError> {
         })?;
         exacts.push(Exact { task, scene, frame });
     }
-    report::write_exact_images(&folder, &exacts).map_err(GradeError::Report)?;
+    files::write_exact_images(&folder, &exacts).map_err(GradeError::Report)?;
     let submissions =
         list_submissions(&request.submissions, Some(&request.report)).map_err(listed)?;
     let answers = Answers::new(&folder).map_err(|e| GradeError::Report(e.to_string()))?;
@@ -146,7 +147,7 @@ pub fn grade(request: &GradeRequest) -> Result<ClassReport, GradeError> {
         graded,
         answers.distinct(),
     );
-    report::write_report(&folder, &class).map_err(GradeError::Report)?;
+    files::write_report(&folder, &class).map_err(GradeError::Report)?;
     staging.commit().map_err(GradeError::Report)?;
     Ok(class)
 }

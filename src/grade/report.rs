@@ -1,17 +1,12 @@
-//! The class's report: what each submission's images came to, the totals of the class, and
-//! writing it — `index.html` (the table), a page per submission in `pages/`, the exact images in
-//! `exact/`, the difference pictures in `pictures/`, and the same as `report.json` and
-//! `report.csv` for the course's own tools.
-
-use std::collections::BTreeMap;
-use std::path::Path;
+//! The class's report: what each submission's images came to and the totals of the class
+//! (the `files` module writes it: `index.html`, a page per submission in `pages/`, the exact
+//! images in `exact/`, the difference pictures in `pictures/`, `report.json` and `report.csv`).
 
 use super::assignment::Task;
-use super::html;
-use super::mark::{Exact, ImageKind, Mark, Outcome, PICTURES_FOLDER, png_bytes};
+use super::mark::{ImageKind, Mark, Outcome, PICTURES_FOLDER};
 use super::submission::Submission;
-use super::tables;
 use crate::cli::GradeRequest;
+use std::collections::BTreeMap;
 
 /// The `format` field of `report.json`, by which a previous report is known.
 pub const REPORT_FORMAT: &str = "raytracer-grade";
@@ -195,41 +190,4 @@ impl ClassReport {
 /// The exact images' file (relative path) of command line `index`.
 pub fn exact_image(index: usize, kind: ImageKind) -> String {
     format!("exact/{}-{}.png", index + 1, kind.word())
-}
-
-/// Writes the exact images to `folder`'s `exact/`.
-pub(super) fn write_exact_images(folder: &Path, exacts: &[Exact]) -> Result<(), String> {
-    let write = |relative: String, bytes: Vec<u8>| {
-        std::fs::write(folder.join(&relative), bytes).map_err(|e| format!("{relative}: {e}"))
-    };
-    std::fs::create_dir_all(folder.join("exact")).map_err(|e| e.to_string())?;
-    for (index, exact) in exacts.iter().enumerate() {
-        if exact.task.colour.is_some() {
-            write(
-                exact_image(index, ImageKind::Colour),
-                png_bytes(&exact.frame.colour_image())?,
-            )?;
-        }
-        if let Some((range, _)) = exact.task.depth {
-            write(
-                exact_image(index, ImageKind::Depth),
-                png_bytes(&exact.frame.depth_image(range))?,
-            )?;
-        }
-    }
-    Ok(())
-}
-
-/// Writes the table, the pages and the JSON and CSV forms to `folder`.
-pub(super) fn write_report(folder: &Path, class: &ClassReport) -> Result<(), String> {
-    let write = |relative: &str, text: String| {
-        std::fs::write(folder.join(relative), text).map_err(|e| format!("{relative}: {e}"))
-    };
-    std::fs::create_dir_all(folder.join("pages")).map_err(|e| e.to_string())?;
-    for graded in &class.graded {
-        write(&graded.page, html::submission_page(class, graded))?;
-    }
-    write("index.html", html::index_page(class))?;
-    write("report.json", tables::json(class))?;
-    write("report.csv", tables::csv(class))
 }
