@@ -1,5 +1,5 @@
 //! Grading a class at the boundary where a teacher meets it: the real binary, the course's
-//! assignment file (`scenes/assignment1.txt`) and a folder of submissions made as students make
+//! assignment file (`scenes/assignment1.commands`) and a folder of submissions made as students make
 //! them — exact images, images with a known mistake (the oracle's mistaken ray caster), names in
 //! another letter case or format, and what a careless or hostile student hands in: empty,
 //! garbage, wrong-sized and bomb images, links out of the folder, a named pipe, a folder named
@@ -24,7 +24,7 @@ use raytracer::scene::load_scene;
 use serde_json::Value;
 
 fn assignment() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/assignment1.txt")
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/assignment1.commands")
 }
 
 /// Every path under `root` (files and folders), relative to it.

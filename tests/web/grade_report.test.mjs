@@ -17,7 +17,7 @@ let report;
 
 before(async () => {
   const root = fs.mkdtempSync(path.join(os.tmpdir(), "raytracer-grade-"));
-  const assignment = path.resolve(env.scenes, "assignment1.txt");
+  const assignment = path.resolve(env.scenes, "assignment1.commands");
   const lines = fs
     .readFileSync(assignment, "utf8")
     .split("\n")
