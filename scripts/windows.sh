@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # The Windows build, checked under Wine on Linux (Debian's mingw-w64 and wine64).
+#   bash scripts/windows.sh install the Rust target, mingw-w64 and Wine, where missing
 #   bash scripts/windows.sh build   the command line's release .exe for x86_64-pc-windows-gnu
 #                                   (without the viewer) and the test scaffolding beside it
 #   bash scripts/windows.sh test    build, then tests/windows_exe.rs against the .exe under Wine
@@ -53,6 +54,9 @@ wine_prefix() {
 }
 
 case "${1:-}" in
+  install)
+    install
+    ;;
   build)
     install
     cargo build --release --target "$target" --no-default-features --features mimalloc

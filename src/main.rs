@@ -15,7 +15,7 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 #[cfg(not(target_arch = "wasm32"))]
 use raytracer::{
-    cli::{Command, parse_command, usage},
+    cli::{Command, VERSION_LINE, parse_command, usage},
     output::atomic::remove_temporary_files,
     platform::console::{PrintError, one_line, print_err, print_out},
     platform::process::{OnSignal, handle_termination_signals, start_thread_pool},
@@ -50,6 +50,7 @@ fn main() -> ExitCode {
     }
     match command {
         Command::Help => print_or_fail(&usage(), ExitCode::SUCCESS),
+        Command::Version => print_or_fail(&format!("{VERSION_LINE}\n"), ExitCode::SUCCESS),
         Command::Render(request) => {
             handle_termination_signals(OnSignal::Exit, remove_temporary_files);
             match raytracer::cli::run::run(&request) {

@@ -188,6 +188,39 @@ fn help_prints_usage_and_exits_zero() {
 }
 
 #[test]
+fn version_prints_the_version_and_the_commit_built_from() {
+    // The commit, asked of git here (the binary was built from this checkout): the test's own
+    // answer, not the build script's.
+    let head = Command::new("git")
+        .args(["rev-parse", "--short=12", "HEAD"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .ok()
+        .filter(|output| output.status.success())
+        .map(|output| String::from_utf8_lossy(&output.stdout).trim().to_owned());
+    let folder = tempfile::tempdir().unwrap();
+    for flag in ["-version", "--version"] {
+        let output = run(folder.path(), &[flag]);
+        assert!(output.status.success(), "{flag}");
+        let text = String::from_utf8(output.stdout).unwrap();
+        let prefix = format!("raytracer {} (commit ", env!("CARGO_PKG_VERSION"));
+        let commit = text
+            .strip_prefix(&prefix)
+            .and_then(|rest| rest.strip_suffix(")\n"))
+            .unwrap_or_else(|| panic!("{flag}: {text:?}"));
+        match &head {
+            // A build with uncommitted changes says so after the commit.
+            Some(head) => assert!(
+                commit == head || commit == format!("{head}+changes"),
+                "{flag}: {commit} is not {head}"
+            ),
+            None => assert_eq!(commit, "unknown", "{flag}: outside a git checkout"),
+        }
+    }
+    assert_eq!(names_in(folder.path()), Vec::<String>::new());
+}
+
+#[test]
 fn lossless_depth_files_hold_the_exact_t() {
     let folder = tempfile::tempdir().unwrap();
     let scene_file = scene_path("scene1_03.txt");

@@ -385,6 +385,9 @@ fn f1_and_question_mark_open_the_shortcuts_overlay_and_escape_closes_it() {
             .query_by_label_contains("magnify the images themselves")
             .is_some()
     );
+    // The build it is, as `raytracer -version` prints it.
+    let version = format!("raytracer {} (commit ", env!("CARGO_PKG_VERSION"));
+    assert!(harness.query_by_label_contains(&version).is_some());
     press(&mut harness, Modifiers::NONE, Key::Escape);
     assert!(!harness.state().help_open());
     harness.event(Event::Text("?".into()));

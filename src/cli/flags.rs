@@ -11,6 +11,16 @@ pub const GRADE_WORD: &str = "grade";
 /// The grading command's synopsis, for the usage text and its errors.
 pub const GRADE_SYNOPSIS: &str = "grade ASSIGNMENT SUBMISSIONS -o REPORT";
 
+/// What `raytracer -version` prints (and the viewer's help overlay shows): the version and the
+/// commit the program was built from (`+changes` where tracked files differed from it; build.rs).
+pub const VERSION_LINE: &str = concat!(
+    "raytracer ",
+    env!("CARGO_PKG_VERSION"),
+    " (commit ",
+    env!("RAYTRACER_COMMIT"),
+    ")"
+);
+
 /// A command-line flag.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Flag {
@@ -54,6 +64,8 @@ pub enum Flag {
     Trace,
     /// The usage text.
     Help,
+    /// The version and the commit built from.
+    Version,
 }
 
 /// One row of the table.
@@ -92,6 +104,7 @@ pub(crate) const FLAGS: &[FlagSpec] = &[
     FlagSpec { flag: Flag::Trace, name: "-trace", aliases: &[], values: &["X", "Y"], help: "print the computation behind pixel (X, Y), Y from the bottom: ray, each sphere's roots, hit, colour, depth grey" },
     FlagSpec { flag: Flag::Stats, name: "-stats", aliases: &[], values: &[], help: "print timings and counts after rendering" },
     FlagSpec { flag: Flag::Help, name: "-help", aliases: &["--help", "-h"], values: &[], help: "print this help" },
+    FlagSpec { flag: Flag::Version, name: "-version", aliases: &["--version"], values: &[], help: "print the version and the commit it was built from" },
 ];
 
 impl Flag {
@@ -192,7 +205,7 @@ pub fn usage() -> String {
 mod tests {
     use super::*;
 
-    const ALL: [Flag; 20] = [
+    const ALL: [Flag; 21] = [
         Flag::Input,
         Flag::Size,
         Flag::Output,
@@ -213,6 +226,7 @@ mod tests {
         Flag::Stats,
         Flag::Trace,
         Flag::Help,
+        Flag::Version,
     ];
 
     #[test]

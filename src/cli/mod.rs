@@ -23,7 +23,7 @@ mod tests;
 mod to_arguments;
 
 pub use error::UsageError;
-pub use flags::{Flag, GRADE_SYNOPSIS, GRADE_WORD, usage};
+pub use flags::{Flag, GRADE_SYNOPSIS, GRADE_WORD, VERSION_LINE, usage};
 pub use grade_request::GradeRequest;
 pub use raw_args::RawArgs;
 pub use request::{

@@ -121,6 +121,8 @@ pub struct ViewerRequest {
 pub enum Command {
     /// Print the usage text.
     Help,
+    /// Print the version line.
+    Version,
     /// Render without a window.
     Render(Box<RenderRequest>),
     /// Open the viewer.
@@ -147,6 +149,9 @@ impl RawArgs {
     pub(crate) fn validate(&self) -> Result<Command, UsageError> {
         if self.has(Flag::Help) {
             return Ok(Command::Help);
+        }
+        if self.has(Flag::Version) {
+            return Ok(Command::Version);
         }
         let input = self.value(Flag::Input, 0).map(PathBuf::from);
         if input

@@ -2,6 +2,7 @@
 // Debian's headless Chromium (WebGL through SwiftShader), the native command line, and pictures
 // as raw RGB.
 import { chromium } from "playwright-core";
+import assert from "node:assert/strict";
 import { execFileSync } from "node:child_process";
 import fs from "node:fs";
 import http from "node:http";
@@ -204,4 +205,34 @@ export async function dropServedFile(page, url) {
       canvas.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
     }
   }, url);
+}
+
+/** The native render of `scene` at the page's view: `{ colour, depth }` as raw RGB. */
+export function nativeRender(scene, view) {
+  const folder = temporaryFolder();
+  raytracer(
+    [
+      "-input", path.resolve(scene), "-size", String(view.width), String(view.height),
+      "-output", "colour.tga", "-depth", String(view.depthMin), String(view.depthMax), "depth.tga",
+    ],
+    folder,
+  );
+  return { colour: readTga(path.join(folder, "colour.tga")), depth: readTga(path.join(folder, "depth.tga")) };
+}
+
+/** Both native pictures are on screen, pixel for pixel (the depth where a ray hits). */
+export async function assertOnScreen(page, native) {
+  const screen = pngToRgb(await page.screenshot());
+  const colourAt = findIn(screen, native.colour);
+  assert.ok(colourAt, "the colour image is on screen, pixel for pixel");
+  // The viewer marks pixels no ray hits in a colour of its own; the file has them black.
+  const background = native.colour.rgb.subarray(0, 3);
+  const noHit = (i) =>
+    native.colour.rgb[3 * i] === background[0] &&
+    native.colour.rgb[3 * i + 1] === background[1] &&
+    native.colour.rgb[3 * i + 2] === background[2];
+  const depthAt = findIn(screen, native.depth, noHit);
+  assert.ok(depthAt, "the depth image is on screen, pixel for pixel where rays hit");
+  assert.ok(depthAt.x > colourAt.x, "depth beside colour");
+  return { colourAt, depthAt };
 }

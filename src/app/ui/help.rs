@@ -115,6 +115,9 @@ pub(crate) fn help_ui(ctx: &egui::Context) -> bool {
                     shortcuts_grid(ui, "keys", keys);
                 });
             }
+            // Which build this is, as `raytracer -version` says it (for a bug report).
+            ui.separator();
+            ui.label(RichText::new(crate::cli::VERSION_LINE).weak());
         });
     let escape = ctx.input(|i| i.key_pressed(egui::Key::Escape));
     open && !escape

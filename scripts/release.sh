@@ -1,0 +1,164 @@
+#!/usr/bin/env bash
+# The release artefacts: one download per system, and the page as a folder for any static host.
+#   bash scripts/release.sh build     all of them into target/artefacts/, with SHA256SUMS:
+#       raytracer-VERSION-x86_64-linux.tar.gz    raytracer (viewer and command line)
+#       raytracer-VERSION-x86_64-windows.zip     raytracer.exe (mingw-w64, icon and version info)
+#       raytracer-VERSION-web.zip                the page (index.html, the wasm, the course scenes)
+#     each with README.md, the licences (LICENSE-MIT, LICENSE-APACHE), the third-party notice
+#     (THIRD-PARTY-LICENSES.html, by cargo-about; a licence not allowed in about.toml fails the
+#     build) and the course scenes;
+#   bash scripts/release.sh linux | windows | web | macos    one of them (macos: on a Mac, as
+#     the release workflow builds it: raytracer-VERSION-universal-macos.tar.gz, one program for
+#     Apple silicon and Intel);
+#   bash scripts/release.sh test      the artefacts in target/artefacts/ as a user meets them
+#     (scripts/release-test.sh);
+#   bash scripts/release.sh sums      SHA256SUMS of what target/artefacts/ holds;
+#   bash scripts/release.sh sizes     docs/release-sizes.md: each archive's size, and the
+#     programs' sizes unpacked, from what target/artefacts/ holds.
+# The programs are built with the `dist` profile (Cargo.toml): the release profile the
+# benchmarks measure, stripped. Installs what it lacks (cargo-about, the Windows toolchain).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+version=$(sed -n 's/^version = "\(.*\)"$/\1/p' Cargo.toml | head -n 1)
+dist=target/artefacts
+tools=target/tools
+about_version=0.8.2
+
+notice() {
+  if [ "$("$tools/bin/cargo-about" --version 2>/dev/null | awk '{print $2}')" != "$about_version" ]; then
+    echo "release.sh: installing cargo-about $about_version"
+    cargo install cargo-about --version "$about_version" --locked --root "$tools" --quiet
+  fi
+  mkdir -p "$dist"
+  "$tools/bin/cargo-about" generate --fail --locked --offline --no-default-features --features gui \
+    -o "$dist/THIRD-PARTY-LICENSES.html" about.hbs
+}
+
+# The files every artefact carries beside the program, into folder $1.
+extras() {
+  local folder=$1
+  cp README.md LICENSE-MIT LICENSE-APACHE "$dist/THIRD-PARTY-LICENSES.html" "$folder/"
+  mkdir -p "$folder/scenes"
+  cp scenes/*.txt scenes/assignment1.commands scenes/README.md "$folder/scenes/"
+}
+
+# A reproducible archive: files in name order, owner and times fixed.
+tarball() {
+  local name=$1
+  tar --sort=name --owner=0 --group=0 --numeric-owner --mtime='2000-01-01 00:00Z' \
+    -C "$dist" -czf "$dist/$name.tar.gz" "$name"
+  rm -rf "${dist:?}/$name"
+}
+
+zipped() {
+  local name=$1 folder=$2
+  rm -f "$dist/$name.zip"
+  (cd "$folder" && find . -type f | LC_ALL=C sort | TZ=UTC zip -X -q -@ "$OLDPWD/$dist/$name.zip")
+}
+
+linux() {
+  [ -f "$dist/THIRD-PARTY-LICENSES.html" ] || notice
+  cargo build --profile dist --bin raytracer
+  local name="raytracer-$version-x86_64-linux"
+  rm -rf "${dist:?}/$name"
+  mkdir -p "$dist/$name"
+  cp target/dist/raytracer "$dist/$name/"
+  extras "$dist/$name"
+  tarball "$name"
+}
+
+macos() {
+  [ -f "$dist/THIRD-PARTY-LICENSES.html" ] || notice
+  local name="raytracer-$version-universal-macos" target
+  rm -rf "${dist:?}/$name"
+  mkdir -p "$dist/$name"
+  for target in aarch64-apple-darwin x86_64-apple-darwin; do
+    cargo build --profile dist --target "$target" --bin raytracer
+  done
+  # One program for Apple silicon and Intel.
+  lipo -create -output "$dist/$name/raytracer" \
+    target/aarch64-apple-darwin/dist/raytracer target/x86_64-apple-darwin/dist/raytracer
+  extras "$dist/$name"
+  tarball "$name"
+}
+
+windows() {
+  [ -f "$dist/THIRD-PARTY-LICENSES.html" ] || notice
+  bash scripts/windows.sh install
+  local target=x86_64-pc-windows-gnu
+  cargo build --profile dist --target "$target" --bin raytracer
+  local name="raytracer-$version-x86_64-windows"
+  rm -rf "${dist:?}/$name"
+  mkdir -p "$dist/$name"
+  cp "target/$target/dist/raytracer.exe" "$dist/$name/"
+  extras "$dist/$name"
+  zipped "$name" "$dist/$name"
+  rm -rf "${dist:?}/$name"
+}
+
+web() {
+  [ -f "$dist/THIRD-PARTY-LICENSES.html" ] || notice
+  bash scripts/web.sh build
+  local name="raytracer-$version-web"
+  rm -rf "${dist:?}/$name"
+  mkdir -p "$dist/$name"
+  cp -r target/web/. "$dist/$name/"
+  cp README.md LICENSE-MIT LICENSE-APACHE "$dist/THIRD-PARTY-LICENSES.html" "$dist/$name/"
+  zipped "$name" "$dist/$name"
+  rm -rf "${dist:?}/$name"
+}
+
+sums() {
+  (cd "$dist" && sha256sum -- raytracer-"$version"-* > SHA256SUMS)
+  echo "release.sh: target/artefacts/ (version $version):"
+  (cd "$dist" && for file in raytracer-"$version"-*; do
+    stat -c '%s %n' "$file"
+  done) | awk '{ printf "  %-40s %6.1f MB\n", $2, $1 / 1e6 }'
+
+}
+
+sizes() {
+  local out=docs/release-sizes.md
+  {
+    echo "# Release archives: sizes"
+    echo
+    echo "Made by \`bash scripts/release.sh build\` then \`bash scripts/release.sh sizes\`, from commit"
+    echo "$(git rev-parse --short=12 HEAD) (version $version; the target is 15 MB for each download)."
+    echo
+    echo "| archive | compressed | the program in it, unpacked |"
+    echo "|---|---|---|"
+    local file program
+    for file in "$dist"/raytracer-"$version"-*; do
+      case "$file" in
+        *.tar.gz) program=$(tar -tvzf "$file" | awk '$6 ~ /\/raytracer$/ { print $3 }') ;;
+        *web.zip) program=$(unzip -l "$file" | awk '$4 ~ /raytracer_bg.wasm$/ { print $1 }') ;;
+        *.zip) program=$(unzip -l "$file" | awk '$4 ~ /raytracer.exe$/ { print $1 }') ;;
+      esac
+      awk -v name="$(basename "$file")" -v size="$(stat -c %s "$file")" -v program="$program" \
+        'BEGIN { printf "| %s | %.1f MB | %.1f MB |\n", name, size / 1e6, program / 1e6 }'
+    done
+  } >"$out"
+  echo "release.sh: wrote $out"
+}
+
+case "${1:-}" in
+  build)
+    rm -rf "$dist"
+    notice
+    linux
+    windows
+    web
+    sums
+    ;;
+  linux | windows | web | macos | notice | sums | sizes)
+    "$1"
+    ;;
+  test)
+    bash scripts/release-test.sh
+    ;;
+  *)
+    sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'
+    [ "${1:-}" = --help ] || exit 2
+    ;;
+esac
