@@ -3,8 +3,9 @@
 #   bash scripts/windows.sh install the Rust target, mingw-w64 and Wine, where missing
 #   bash scripts/windows.sh build   the command line's release .exe for x86_64-pc-windows-gnu
 #                                   (without the viewer) and the test scaffolding beside it
-#   bash scripts/windows.sh test    build, then tests/windows_exe.rs against the .exe under Wine
-#                                   (what CI runs)
+#   bash scripts/windows.sh test    the program the Windows download ships (viewer included,
+#                                   the `dist` profile), then tests/windows_exe.rs against it
+#                                   under Wine (what CI runs)
 #   bash scripts/windows.sh unit    build, then the library's unit tests built for Windows, under
 #                                   Wine. Not in CI: their build compiles every test dependency
 #                                   (the viewer's test stack included) for Windows, more than CI's
@@ -65,7 +66,10 @@ case "${1:-}" in
     ;;
   test)
     install
-    cargo build --release --target "$target" --no-default-features --features mimalloc
+    # The program the Windows download ships (viewer included, the `dist` profile): the release
+    # archive (scripts/release.sh windows) takes this build as it is.
+    cargo build --profile dist --target "$target" --bin raytracer
+    out="target/$target/dist"
     scaffolding
     wine_prefix
     # One server for the whole run (each test starts several programs), stopped at the end.
