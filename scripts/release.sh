@@ -16,7 +16,7 @@
 #   bash scripts/release.sh sizes     docs/release-sizes.md: each archive's size, and the
 #     programs' sizes unpacked, from what target/artefacts/ holds.
 # The programs are built with the `dist` profile (Cargo.toml): the release profile the
-# benchmarks measure, stripped. Installs what it lacks (cargo-about, the Windows toolchain).
+# benchmarks measure, without debug information; the system's strip removes the symbols. Installs what it lacks (cargo-about, the Windows toolchain).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -63,7 +63,7 @@ linux() {
   local name="raytracer-$version-x86_64-linux"
   rm -rf "${dist:?}/$name"
   mkdir -p "$dist/$name"
-  cp target/dist/raytracer "$dist/$name/"
+  strip -o "$dist/$name/raytracer" target/dist/raytracer
   extras "$dist/$name"
   tarball "$name"
 }
@@ -79,6 +79,7 @@ macos() {
   # One program for Apple silicon and Intel.
   lipo -create -output "$dist/$name/raytracer" \
     target/aarch64-apple-darwin/dist/raytracer target/x86_64-apple-darwin/dist/raytracer
+  strip -x "$dist/$name/raytracer"
   extras "$dist/$name"
   tarball "$name"
 }
@@ -91,8 +92,7 @@ windows() {
   local name="raytracer-$version-x86_64-windows"
   rm -rf "${dist:?}/$name"
   mkdir -p "$dist/$name"
-  # The linker keeps a symbol table that cargo's `strip` leaves in a mingw-w64 program (8 MB of
-  # 36): mingw-w64's own strip removes it.
+  # The symbol table (8 MB of 36): mingw-w64's own strip removes it.
   x86_64-w64-mingw32-strip -o "$dist/$name/raytracer.exe" "target/$target/dist/raytracer.exe"
   extras "$dist/$name"
   zipped "$name" "$dist/$name"

@@ -35,12 +35,16 @@ test("the course scenes' menu opens a course scene", async () => {
   const { page, context, errors } = await openViewer(browser, url);
   await settled(page);
   assert.equal(await page.evaluate(() => window.raytracer.scene_name()), "default scene (embedded)");
-  // Where the 1280×720 page lays them out: the "Course scenes" button in the side panel's
-  // file section, then the menu's third row (scene1_03.txt).
-  await page.mouse.click(MENU_X, MENU_Y);
+  // The side panel scrolled to its end (the wheel over it), where the 1280×720 page lays out
+  // the "Course scenes" button (the scene file section); then the menu's third row,
+  // scene1_03.txt (page-menu.png shows both).
+  await page.mouse.move(170, 500);
+  await page.mouse.wheel(0, 2000);
+  await page.waitForTimeout(800);
+  await page.mouse.click(57, 453);
   await page.waitForTimeout(500);
   await page.screenshot({ path: path.join(shots, "page-menu.png") });
-  await page.mouse.click(ITEM_X, ITEM_Y);
+  await page.mouse.click(58, 526);
   await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_03.txt", null, { timeout: 30_000 });
   await settled(page);
   const native = nativeRender(path.join(env.scenes, "scene1_03.txt"), await viewOf(page));
