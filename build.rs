@@ -84,7 +84,10 @@ fn windows_resources() {
     resource
         .set_icon("assets/raytracer.ico")
         .set("ProductName", "raytracer")
-        .set("FileDescription", "raytracer: a ray-casting viewer for the 6.837 scene format")
+        .set(
+            "FileDescription",
+            "raytracer: a ray-casting viewer for the 6.837 scene format",
+        )
         .set("LegalCopyright", "MIT OR Apache-2.0")
         .set("Comments", &format!("commit {}", commit()));
     if let Err(error) = resource.compile() {

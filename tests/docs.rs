@@ -164,7 +164,10 @@ fn every_robustness_row_cites_tests_that_exist() {
             // A script that CI runs checks what no test function can (an archive unpacked and
             // used): it must exist.
             if name.starts_with("scripts/") {
-                assert!(root().join(name).is_file(), "no script `{name}` for the row:\n{line}");
+                assert!(
+                    root().join(name).is_file(),
+                    "no script `{name}` for the row:\n{line}"
+                );
                 continue;
             }
             let function = name.rsplit("::").next().unwrap().trim_start_matches('…');
