@@ -2,30 +2,47 @@
 //! viewer's help overlay), and on Windows the program's icon and version information in its
 //! properties.
 //!
-//! The commit is `RAYTRACER_COMMIT` where the builder sets it (a release workflow builds from a
-//! tag), else what `git` says of the checkout, with `+changes` where tracked files differ from
-//! it, else `unknown` (a build from a source archive, without git).
+//! The commit is `RAYTRACER_COMMIT` where the builder sets it, else what `git` says of the
+//! checkout, with `+changes` where tracked source files differ from it, else `unknown` (a build
+//! from a source archive, without git).
 
 use std::path::Path;
 use std::process::Command;
+
+/// The source paths whose change can change the build (and the `+changes` mark).
+const SOURCES: [&str; 7] = [
+    "build.rs",
+    "Cargo.toml",
+    "Cargo.lock",
+    "src",
+    "assets",
+    "scenes",
+    "web",
+];
 
 fn main() {
     println!("cargo:rustc-env=RAYTRACER_COMMIT={}", commit());
     println!("cargo:rerun-if-env-changed=RAYTRACER_COMMIT");
     // A new commit, a change staged or committed, and any source file: each can change the
     // answer. (Without these lines cargo reruns the script on any change in the package, which
-    // misses new commits.)
-    for path in ["build.rs", "Cargo.toml", "src", "assets", "scenes", "web"] {
-        println!("cargo:rerun-if-changed={path}");
-    }
-    if let Some(git) = git_dir() {
-        for file in ["HEAD", "index", "packed-refs"] {
-            println!("cargo:rerun-if-changed={}", git.join(file).display());
+    // misses new commits.) Only paths that exist: cargo reruns the script on every build for a
+    // path that does not (a checkout without packed refs).
+    let mut watched: Vec<std::path::PathBuf> =
+        SOURCES.iter().map(std::path::PathBuf::from).collect();
+    for name in ["HEAD", "index", "packed-refs"] {
+        if let Some(path) = git(&["rev-parse", "--git-path", name]) {
+            watched.push(path.into());
         }
-        if let Ok(head) = std::fs::read_to_string(git.join("HEAD"))
-            && let Some(reference) = head.trim().strip_prefix("ref: ")
-        {
-            println!("cargo:rerun-if-changed={}", git.join(reference).display());
+    }
+    if let Some(reference) = git(&["symbolic-ref", "-q", "HEAD"])
+        && let Some(path) = git(&["rev-parse", "--git-path", &reference])
+    {
+        watched.push(path.into());
+    }
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for path in watched {
+        if root.join(&path).exists() {
+            println!("cargo:rerun-if-changed={}", path.display());
         }
     }
     if std::env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("windows") {
@@ -43,21 +60,22 @@ fn commit() -> String {
     let Some(hash) = git(&["rev-parse", "--short=12", "HEAD"]) else {
         return "unknown".to_owned();
     };
-    // Tracked files only: the build's own outputs and a user's scratch files are not the source.
-    let changed = git(&["status", "--porcelain", "--untracked-files=no"])
-        .is_some_and(|status| !status.trim().is_empty());
+    // Tracked source files only: the build's own outputs, the docs and a user's scratch files do
+    // not change the program (and a change there would not rerun this script).
+    let mut status = vec![
+        "--no-optional-locks",
+        "status",
+        "--porcelain",
+        "--untracked-files=no",
+        "--",
+    ];
+    status.extend(SOURCES);
+    let changed = git(&status).is_some_and(|status| !status.trim().is_empty());
     if changed {
         format!("{hash}+changes")
     } else {
         hash
     }
-}
-
-/// The checkout's git folder, where there is one.
-fn git_dir() -> Option<std::path::PathBuf> {
-    let dir = git(&["rev-parse", "--absolute-git-dir"])?;
-    let dir = Path::new(dir.trim()).to_path_buf();
-    dir.is_dir().then_some(dir)
 }
 
 /// One git command's output in the package's folder, `None` where git is missing or fails.

