@@ -108,19 +108,25 @@ pub(crate) fn help_ui(ctx: &egui::Context) -> bool {
                     shortcuts_grid(&mut columns[0], "pointer", pointer);
                     shortcuts_grid(&mut columns[1], "keys", keys);
                 });
+                version_line(ui);
             } else {
-                // One column: scrolled where the window is too low for it.
+                // One column: scrolled where the window is too low for it, the version line
+                // with it (below the scrolled rows, it lay over them).
                 egui::ScrollArea::vertical().show(ui, |ui| {
                     shortcuts_grid(ui, "pointer", pointer);
                     shortcuts_grid(ui, "keys", keys);
+                    version_line(ui);
                 });
             }
-            // Which build this is, as `raytracer -version` says it (for a bug report).
-            ui.separator();
-            ui.label(RichText::new(crate::cli::VERSION_LINE).weak());
         });
     let escape = ctx.input(|i| i.key_pressed(egui::Key::Escape));
     open && !escape
+}
+
+/// Which build this is, as `raytracer -version` says it (for a bug report).
+fn version_line(ui: &mut egui::Ui) {
+    ui.separator();
+    ui.label(RichText::new(crate::cli::VERSION_LINE).weak());
 }
 
 /// One group of the overlay's rows as a striped two-column grid, each row's description wrapped
