@@ -4,7 +4,7 @@
 use std::path::Path;
 
 use super::html;
-use super::mark::{Exact, ImageKind, png_bytes};
+use super::mark::{Exact, ImageKind, make_subfolder, png_bytes};
 use super::report::{ClassReport, exact_image};
 use super::tables;
 
@@ -13,7 +13,7 @@ pub(super) fn write_exact_images(folder: &Path, exacts: &[Exact]) -> Result<(), 
     let write = |relative: String, bytes: Vec<u8>| {
         std::fs::write(folder.join(&relative), bytes).map_err(|e| format!("{relative}: {e}"))
     };
-    std::fs::create_dir_all(folder.join("exact")).map_err(|e| e.to_string())?;
+    make_subfolder(&folder.join("exact")).map_err(|e| e.to_string())?;
     for (index, exact) in exacts.iter().enumerate() {
         if exact.task.colour.is_some() {
             write(
@@ -36,7 +36,7 @@ pub(super) fn write_report(folder: &Path, class: &ClassReport) -> Result<(), Str
     let write = |relative: &str, text: String| {
         std::fs::write(folder.join(relative), text).map_err(|e| format!("{relative}: {e}"))
     };
-    std::fs::create_dir_all(folder.join("pages")).map_err(|e| e.to_string())?;
+    make_subfolder(&folder.join("pages")).map_err(|e| e.to_string())?;
     for graded in &class.graded {
         write(&graded.page, html::submission_page(class, graded))?;
     }

@@ -209,6 +209,15 @@ pub struct Answers {
     report: PathBuf,
 }
 
+/// Makes `folder`, a subfolder of the report being made; one there already is fine. Never
+/// `create_dir_all`: a report folder removed by a stop must not be made again.
+pub(super) fn make_subfolder(folder: &Path) -> std::io::Result<()> {
+    match std::fs::create_dir(folder) {
+        Err(error) if error.kind() == std::io::ErrorKind::AlreadyExists => Ok(()),
+        other => other,
+    }
+}
+
 /// An answer's key: the command line, and the fingerprints of the colour and depth images.
 type AnswerKey = (usize, Option<u128>, Option<u128>);
 
@@ -218,7 +227,7 @@ pub const PICTURES_FOLDER: &str = "pictures";
 impl Answers {
     /// No answers yet; pictures go to [`PICTURES_FOLDER`] in `report` (made here).
     pub fn new(report: &Path) -> std::io::Result<Self> {
-        std::fs::create_dir_all(report.join(PICTURES_FOLDER))?;
+        make_subfolder(&report.join(PICTURES_FOLDER))?;
         Ok(Self {
             known: Mutex::default(),
             hashers: (RandomState::new(), RandomState::new()),

@@ -16,8 +16,24 @@ static UNFINISHED: Mutex<Option<PathBuf>> = Mutex::new(None);
 /// Removes this run's unfinished report folder, if any (for the signal handler).
 pub fn remove_unfinished_report() {
     let mut unfinished = UNFINISHED.lock().unwrap_or_else(PoisonError::into_inner);
-    if let Some(folder) = unfinished.take() {
-        let _ = std::fs::remove_dir_all(folder);
+    let Some(folder) = unfinished.take() else {
+        return;
+    };
+    // The grading threads go on writing pictures while this runs: moved aside first, the folder
+    // takes no new file by its name (its subfolders are made with `create_dir`, never
+    // `create_dir_all`, so nothing makes it again), and a removal that met a file made between
+    // its listing and its last step is tried again.
+    let aside = folder.with_extension("removing");
+    let target = if std::fs::rename(&folder, &aside).is_ok() {
+        aside
+    } else {
+        folder
+    };
+    for _ in 0..50 {
+        if std::fs::remove_dir_all(&target).is_ok() || !target.exists() {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(2));
     }
 }
 
