@@ -14,7 +14,7 @@
 #     the real one);
 #   * the page: served by a plain static server (python3 -m http.server), headless Chromium shows
 #     scene1_02 (?scene=) with the native program's pixels, and the course scenes' menu opens
-#     another (tests/web/release_page.test.mjs).
+#     another (tests/web/release_page.check.mjs).
 # Each part prints a `release-test:` line; any failure stops the script with a non-zero status.
 #   bash scripts/release-test.sh [linux] [windows] [page]   (all three by default)
 set -euo pipefail
@@ -190,7 +190,7 @@ page() {
   done
   RAYTRACER_PAGE_URL="http://127.0.0.1:$port/" RAYTRACER_BIN="$oracle" \
     RAYTRACER_SCENES="$folder/scenes" RAYTRACER_CHROMIUM="$(command -v chromium)" \
-    RAYTRACER_SHOTS="$work" node --test tests/web/release_page.test.mjs \
+    RAYTRACER_SHOTS="$work" node --test tests/web/release_page.check.mjs \
     || { kill "$server"; fail "the page"; }
   kill "$server" 2>/dev/null || true
   say "the page: served by python3 -m http.server, scene1_02 and the course scenes' menu in Chromium"
