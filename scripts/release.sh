@@ -35,10 +35,16 @@ notice() {
   "$tools/bin/cargo-about" generate --fail --locked -o "$dist/THIRD-PARTY-LICENSES.html" about.hbs
 }
 
-# The files every artefact carries beside the program, into folder $1.
+# The README and the licences, which every artefact carries, into folder $1.
+papers() {
+  cp README.md LICENSE-MIT LICENSE-APACHE "$dist/THIRD-PARTY-LICENSES.html" "$1/"
+}
+
+# What the programs' archives carry beside the program, into folder $1: the papers and the
+# course scenes with their command lines.
 extras() {
   local folder=$1
-  cp README.md LICENSE-MIT LICENSE-APACHE "$dist/THIRD-PARTY-LICENSES.html" "$folder/"
+  papers "$folder"
   mkdir -p "$folder/scenes"
   cp scenes/*.txt scenes/assignment1.commands scenes/README.md "$folder/scenes/"
 }
@@ -108,7 +114,7 @@ web() {
   rm -rf "${dist:?}/$name"
   mkdir -p "$dist/$name"
   cp -r target/web/. "$dist/$name/"
-  cp README.md LICENSE-MIT LICENSE-APACHE "$dist/THIRD-PARTY-LICENSES.html" "$dist/$name/"
+  papers "$dist/$name"
   zipped "$name"
   rm -rf "${dist:?}/$name"
 }
