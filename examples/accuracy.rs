@@ -244,7 +244,7 @@ const COURSE_DEPTH_RANGES: [(f64, f64); 7] =
     [(9.0, 10.0), (8.0, 12.0), (8.0, 12.0), (12.0, 17.0), (14.5, 19.5), (3.0, 7.0), (-2.0, 2.0)];
 
 /// Each course scene at 200×200 against the course's reference images (tests/reference/): how
-/// many pixels differ and by how much (`tests/reference_images.rs` asserts the SPEC's tolerance).
+/// many pixels differ and by how much (`tests/reference_images.rs` asserts the tolerance of docs/spec.md).
 fn reference_images_report() -> Result<String, Box<dyn std::error::Error>> {
     let mut md = String::new();
     let _ = writeln!(md, "\n## Against the course's reference images\n");
@@ -252,7 +252,7 @@ fn reference_images_report() -> Result<String, Box<dyn std::error::Error>> {
         md,
         "Each course scene rendered at 200×200 with its command line's depth range (one sample \
          per pixel) and compared with the course's published images in `tests/reference/`, pixel by pixel \
-         (40,000 pixels). SPEC.md allows no colour difference and at most 0.1% (40) depth pixels \
+         (40,000 pixels). docs/spec.md allows no colour difference and at most 0.1% (40) depth pixels \
          off by one grey level; `tests/reference_images.rs` asserts that through the binary.\n"
     );
     let _ = writeln!(

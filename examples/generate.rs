@@ -1,7 +1,7 @@
 //! Writes a seeded random scene of N spheres (the benchmarks' workload) as a scene file:
 //!
 //! ```sh
-//! cargo run --release --example generate -- 1000000 scenes/generated_1e6.txt [seed]
+//! cargo run --release --example generate -- 1000000 generated_1e6.txt [seed]
 //! cargo run --release --example generate -- --dense 100000 dense_1e5.txt [seed]
 //! ```
 //!

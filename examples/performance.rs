@@ -381,7 +381,7 @@ fn report(course: &[Course], generated: &[Generated], dense: &[Dense], peak_mb: 
     }
     let _ = writeln!(
         md,
-        "\nThe whole command against a plain C++ ray caster: [command-vs-cpp.md](command-vs-cpp.md). The dense frames against an earlier revision, in one interleaved run: [dense-speedup.md](dense-speedup.md) (`scripts/dense-speedup.sh`).\n"
+        "\nThe whole command against a plain C++ ray caster: [command-vs-cpp.md](command-vs-cpp.md).\n"
     );
     md.push_str(&in_window_section());
     let _ = writeln!(md, "\n## Generated scenes at 1024×1024\n");

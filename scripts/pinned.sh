@@ -1,4 +1,4 @@
-# Sourced by scripts/scaling.sh and scripts/scaling-before-after.sh: `pinned C COMMAND…` runs a
+# Sourced by scripts/scaling.sh and scripts/thread-wake.sh: `pinned C COMMAND…` runs a
 # command on the first C cores (taskset, or Python's affinity call where util-linux is missing,
 # as on a bare measuring machine).
 pinned() {

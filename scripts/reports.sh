@@ -4,14 +4,14 @@
 #   bash scripts/reports.sh            every report (long: about an hour on two cores)
 #   bash scripts/reports.sh NAME…      only these, e.g. `accuracy tradeoff screenshot`
 # Names: accuracy performance tradeoff mistakes diagnosis diagnosis-speed compare-diff memory scaling thread-wake profile
-# command-vs-cpp dense-speedup window-frame-times window-frame-times-wgpu setup-times web
+# command-vs-cpp window-frame-times window-frame-times-wgpu setup-times web
 # windows windows-viewer screenshot readme-screenshots window-sizes fuzz trace-example grading.
 # Each runs the command docs/README.md names for it; a failure stops the script.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 all=(accuracy performance tradeoff mistakes diagnosis diagnosis-speed compare-diff memory scaling thread-wake profile command-vs-cpp
-     dense-speedup window-frame-times window-frame-times-wgpu setup-times web
+     window-frame-times window-frame-times-wgpu setup-times web
      windows windows-viewer screenshot readme-screenshots window-sizes fuzz trace-example grading)
 wanted=("$@")
 [ ${#wanted[@]} -eq 0 ] && wanted=("${all[@]}")
@@ -30,7 +30,6 @@ report() {
     thread-wake) bash scripts/thread-wake.sh ;;
     profile) bash scripts/profile.sh ;;
     command-vs-cpp) bash scripts/command-vs-cpp.sh ;;
-    dense-speedup) bash scripts/dense-speedup.sh ;;
     window-frame-times) bash scripts/window-frame-times.sh ;;
     window-frame-times-wgpu)
       RAYTRACER_RENDERER=wgpu bash scripts/window-frame-times.sh docs/window-frame-times-wgpu.md ;;

@@ -13,7 +13,7 @@
 # window is painted with OpenGL unless RAYTRACER_RENDERER=wgpu:
 # `RAYTRACER_RENDERER=wgpu bash scripts/window-frame-times.sh docs/window-frame-times-wgpu.md`
 # measures the other renderer. Mesa's software painter runs on as many threads as there are
-# cores; `LP_NUM_THREADS=1 bash scripts/window-frame-times.sh docs/window-frame-times-one-gl-thread.md`
+# cores; `LP_NUM_THREADS=1 bash scripts/window-frame-times.sh OUT.md`
 # measures it on one, to show how much it competes with the render worker.
 set -euo pipefail
 cd "$(dirname "$0")/.."

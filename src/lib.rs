@@ -9,7 +9,7 @@
 //! → 8-bit images ([`render::Frame::colour_image`], [`render::Frame::depth_image`]) → files
 //! ([`output`]).
 //!
-//! Conventions (SPEC.md): `horizontal = normalize(d × up)`, `screen_up = horizontal × d`; pixel
+//! Conventions (docs/spec.md): `horizontal = normalize(d × up)`, `screen_up = horizontal × d`; pixel
 //! (x, y), y = 0 the bottom row, samples its centre; `size` spans the longer image side; rays
 //! start at t = −∞ (a sphere behind the camera centre is seen); t is measured along the unit
 //! direction from the screen plane; ties go to the sphere first in the file.

@@ -3,7 +3,7 @@
 //! published results in `tests/reference/` (200×200); `-trace X Y` agrees with the high-precision
 //! oracle and with the files written, and beside their image says what t their grey stands for.
 //!
-//! Tolerances (SPEC.md): colour identical pixel for pixel; depth equal except for at most 0.1% of
+//! Tolerances (docs/spec.md): colour identical pixel for pixel; depth equal except for at most 0.1% of
 //! pixels, which may differ by one grey level (the course rendered in 32-bit floats, so a value on
 //! a grey-level boundary may round the other way).
 

@@ -1,5 +1,5 @@
 //! The fast disc renderer against the oracle loop, and the camera/intersection conventions of
-//! SPEC.md seen through whole frames: non-square crops, ties, cameras inside spheres, spheres
+//! docs/spec.md seen through whole frames: non-square crops, ties, cameras inside spheres, spheres
 //! behind the camera centre, determinism.
 
 use std::path::Path;

@@ -203,7 +203,7 @@ fn depth_outputs_and_colour_map() {
 /// A request with every setting, and variations of its sampling.
 fn requests_with_every_setting() -> Vec<RenderRequest> {
     let full = RenderRequest {
-        input: "scenes/my scene.txt".into(),
+        input: "class/my scene.txt".into(),
         width_px: 640,
         height_px: 360,
         size_given: true,

@@ -30,7 +30,7 @@ pub struct ProbeHit {
 pub struct Probe {
     /// Pixel column, 0 at the left.
     pub x_px: u32,
-    /// Pixel row, 0 at the **bottom** (SPEC's convention).
+    /// Pixel row, 0 at the **bottom** (the convention of docs/spec.md).
     pub y_up_px: u32,
     /// Screen coordinates (u, v) of the pixel centre relative to the camera centre, world units.
     pub(crate) screen_world: DVec2,

@@ -4,7 +4,7 @@
 //! Spaces: *world* is the scene file's space. *Camera space* has its origin at the camera centre
 //! and axes (u, v, w) = (`horizontal`, `screen_up`, `direction`); u and v are *screen
 //! coordinates* in world units, w is the signed distance along the view direction (t).
-//! Conventions (SPEC.md): `d = normalize(direction)`, `horizontal = normalize(d × up)`,
+//! Conventions (docs/spec.md): `d = normalize(direction)`, `horizontal = normalize(d × up)`,
 //! `screen_up = horizontal × d`; pixel (x, y) with y = 0 the bottom row samples its centre; the
 //! screen's `size` spans the longer side of a non-square image.
 
@@ -47,7 +47,7 @@ pub struct CameraBasis {
 }
 
 impl CameraBasis {
-    /// The basis of SPEC.md for any non-zero direction and any up not parallel to it.
+    /// The basis of docs/spec.md for any non-zero direction and any up not parallel to it.
     pub fn new(direction: DVec3, up: DVec3) -> Result<Self, CameraError> {
         let direction = unit(direction).ok_or(CameraError::ZeroDirection)?;
         let up = unit(up).ok_or(CameraError::UpParallel)?;

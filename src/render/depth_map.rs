@@ -1,7 +1,7 @@
 //! The depth mapping (t → grey) and 8-bit quantisation, in one place.
 //!
-//! SPEC.md: `grey = clamp((depth_max − t) / (depth_max − depth_min), 0, 1)`; near is white, far is
-//! black, pixels with no hit are black. Decisions where SPEC.md is silent:
+//! docs/spec.md: `grey = clamp((depth_max − t) / (depth_max − depth_min), 0, 1)`; near is white, far is
+//! black, pixels with no hit are black. Decisions where docs/spec.md is silent:
 //! * `depth_min > depth_max` is allowed and gives the **reversed ramp** the formula gives (near
 //!   black, far white) — a way to look at a scene from behind; no-hit pixels stay black.
 //! * `depth_min == depth_max` is a **step**: t ≤ depth_min is white, t > depth_min black (the limit
@@ -12,7 +12,7 @@
 //! Besides grey, the depth image can go through a perceptual colour map ([`DepthColourMap`]:
 //! turbo, viridis) applied to the same grey value (near = the map's bright/warm end). In colour
 //! maps, pixels with no hit are black, which neither map contains, so "nothing there" never looks
-//! like "far away". The course's grey image keeps no-hit black (SPEC); the viewer can mark no-hit
+//! like "far away". The course's grey image keeps no-hit black (docs/spec.md); the viewer can mark no-hit
 //! pixels on screen in a colour far from the map's ([`DepthColourMap::no_hit_mark`]).
 
 /// The range of t mapped onto the grey ramp.

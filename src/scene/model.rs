@@ -6,7 +6,7 @@
 
 use glam::{DVec3, Vec3};
 
-/// Colour used for the background when a file has no `Background` block (SPEC: 0.5 grey).
+/// Colour used for the background when a file has no `Background` block (docs/spec.md: 0.5 grey).
 pub const DEFAULT_BACKGROUND: Vec3 = Vec3::splat(0.5);
 
 /// Colour of a material without `diffuseColor`, and of spheres that no `MaterialIndex` precedes.

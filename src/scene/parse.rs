@@ -1,6 +1,6 @@
 //! Recursive-descent parser: scene text → validated [`Scene`].
 //!
-//! The grammar is SPEC.md's. Top-level blocks may come in any order, each at most once; the camera
+//! The grammar is docs/spec.md's. Top-level blocks may come in any order, each at most once; the camera
 //! is required. `MaterialIndex` applies to every following object in file order, across group
 //! boundaries. Counts are checked against what the blocks hold (no allocation is sized by a count
 //! from the file), numbers must be finite, and group nesting is capped at [`MAX_GROUP_DEPTH`].

@@ -67,7 +67,7 @@ impl KeptPositions {
 /// The discs of `kept` (per chunk, its pass list and the positions in it of the discs kept)
 /// ordered by slice, in chunk order within a slice, placed on `grid` and binned, in consecutive
 /// parts: a counting sort, in parallel (on one thread it held a dense frame's "pass discs" to 4.9×
-/// on 16 cores: docs/scaling-16-before.md). Every kept disc's slice lies in `slices`, the pass's;
+/// on 16 cores in the frame's phase table). Every kept disc's slice lies in `slices`, the pass's;
 /// the sort's tables span those alone. The slices are split into as many groups of about equal
 /// discs as there are threads; each group's task moves, chunk by chunk, the discs of its own
 /// slices (their positions ordered by slice in each chunk: [`KeptPositions`]) into its own part,
