@@ -185,6 +185,12 @@ fn help_prints_usage_and_exits_zero() {
     assert!(output.status.success());
     let text = String::from_utf8_lossy(&output.stdout);
     assert!(text.contains("-depth DMIN DMAX FILE"), "{text}");
+    // The colour maps' names come from the map's own list, never a placeholder.
+    assert!(
+        text.contains("depth image colours: grey, turbo or viridis (default grey)"),
+        "{text}"
+    );
+    assert!(!text.contains('{'), "{text}");
 }
 
 #[test]

@@ -32,7 +32,7 @@ pub struct ViewerJob {
 /// How the depth texture is coloured: the map and the colour of no-hit pixels.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct DepthStyle {
-    /// Grey, turbo or viridis.
+    /// One of [`DepthColourMap::ALL`].
     pub(crate) colour_map: DepthColourMap,
     /// Colour of pixels where no ray hits.
     pub(crate) no_hit_rgb: [u8; 3],

@@ -74,7 +74,7 @@ pub struct Settings {
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(default)]
 pub struct DepthDisplay {
-    /// Grey (the course's), turbo or viridis.
+    /// One of [`DepthColourMap::ALL`]; grey is the course's.
     pub colour_map: DepthColourMap,
     /// Show no-hit pixels in the map's mark ([`DepthColourMap::no_hit_mark`]) on screen instead
     /// of black, so they stand apart from far ones. Files keep black.

@@ -94,7 +94,7 @@ pub enum UsageError {
     #[error("{0}: the path is empty")]
     EmptyPath(Flag),
     /// A depth colour map that does not exist.
-    #[error("{flag}: expected grey, turbo or viridis, found '{0}'", flag = Flag::DepthColourMap)]
+    #[error("{flag}: expected {maps}, found '{0}'", flag = Flag::DepthColourMap, maps = crate::render::depth_map::DepthColourMap::names_listed())]
     BadColourMap(String),
     /// An argument that is not valid Unicode where text is needed.
     #[error("{0}: value is not valid text")]

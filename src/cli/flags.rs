@@ -3,6 +3,7 @@
 //! back to arguments ([`super::RenderRequest::to_arguments`]) all read it, so renaming a flag is
 //! a one-line change here; the rest of the program names flags by [`Flag`].
 
+use crate::render::depth_map::DepthColourMap;
 use std::fmt::{self, Write as _};
 
 /// The word that starts the grading command (`raytracer grade …`).
@@ -88,7 +89,7 @@ pub(crate) const FLAGS: &[FlagSpec] = &[
     FlagSpec { flag: Flag::Size, name: "-size", aliases: &[], values: &["W", "H"], help: "image size in pixels (default 200 200)" },
     FlagSpec { flag: Flag::Output, name: "-output", aliases: &[], values: &["FILE"], help: "write the colour image (.tga or .png)" },
     FlagSpec { flag: Flag::Depth, name: "-depth", aliases: &[], values: &["DMIN", "DMAX", "FILE"], help: "write the depth image: t = DMIN white … DMAX black" },
-    FlagSpec { flag: Flag::DepthColourMap, name: "-depth_colormap", aliases: &[], values: &["MAP"], help: "depth image colours: grey (default), turbo or viridis" },
+    FlagSpec { flag: Flag::DepthColourMap, name: "-depth_colormap", aliases: &[], values: &["MAP"], help: "depth image colours: {maps} (default grey)" },
     FlagSpec { flag: Flag::Depth16, name: "-depth16", aliases: &[], values: &["DMIN", "DMAX", "FILE"], help: "write the depth as a 16-bit grey PNG over DMIN … DMAX" },
     FlagSpec { flag: Flag::DepthRaw, name: "-depth_raw", aliases: &[], values: &["FILE"], help: "write raw t as 32-bit floats (.pfm or .exr), +inf = no hit" },
     FlagSpec { flag: Flag::UniformSamples, name: "-uniform_samples", aliases: &[], values: &["N"], help: "supersample on an n×n grid (N = n²)" },
@@ -180,7 +181,9 @@ pub fn usage() -> String {
     );
     for spec in FLAGS {
         let synopsis = spec.flag.synopsis();
-        let _ = writeln!(text, "  {synopsis:<24} {}", spec.help);
+        // A colour map's name is written once, in its own list.
+        let help = spec.help.replace("{maps}", &DepthColourMap::names_listed());
+        let _ = writeln!(text, "  {synopsis:<24} {help}");
     }
     let _ = write!(
         text,

@@ -74,6 +74,17 @@ impl DepthColourMap {
         }
     }
 
+    /// Every map's name, as a sentence lists them ("grey, turbo or viridis"): the usage text
+    /// and the error for a name that is none of them take it from [`Self::ALL`].
+    pub fn names_listed() -> String {
+        let names: Vec<&str> = Self::ALL.iter().map(|map| map.name()).collect();
+        match names.split_last() {
+            Some((last, [])) => (*last).to_owned(),
+            Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
+            None => String::new(),
+        }
+    }
+
     /// The map a name stands for (as [`Self::name`] spells it; `gray` is accepted too).
     pub(crate) fn from_name(name: &str) -> Option<Self> {
         match name {
