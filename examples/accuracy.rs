@@ -6,6 +6,9 @@
 //! `oracle::high_precision`: hit/miss (which sphere, if any) and depth (grey levels over the
 //! visible depth range).
 
+#[path = "support/course.rs"]
+mod course;
+
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -238,11 +241,6 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     Ok(())
 }
 
-/// The course's seven command lines' depth ranges (the README's), by scene number.
-#[rustfmt::skip]
-const COURSE_DEPTH_RANGES: [(f64, f64); 7] =
-    [(9.0, 10.0), (8.0, 12.0), (8.0, 12.0), (12.0, 17.0), (14.5, 19.5), (3.0, 7.0), (-2.0, 2.0)];
-
 /// Each course scene at 200×200 against the course's reference images (tests/reference/): how
 /// many pixels differ and by how much (`tests/reference_images.rs` asserts the tolerance of docs/spec.md).
 fn reference_images_report() -> Result<String, Box<dyn std::error::Error>> {
@@ -260,7 +258,7 @@ fn reference_images_report() -> Result<String, Box<dyn std::error::Error>> {
         "| scene | colour pixels differing | depth pixels differing | largest depth difference |"
     );
     let _ = writeln!(md, "|---|---|---|---|");
-    for (number, &(low, high)) in (1..).zip(&COURSE_DEPTH_RANGES) {
+    for (number, &(_, low, high)) in (1..).zip(course::ranges()) {
         let scene = load_scene(Path::new(&format!("scenes/scene1_0{number}.txt")))?;
         let view = View::of_camera(&scene.camera, 200, 200, DepthRange::new(low, high));
         let frame = render(&scene, &view)?;

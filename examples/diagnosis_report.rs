@@ -12,6 +12,8 @@
 
 #[path = "support/corpus.rs"]
 mod corpus;
+#[path = "support/course.rs"]
+mod course;
 #[path = "support/generated.rs"]
 mod generated;
 #[path = "support/judge.rs"]
@@ -22,7 +24,7 @@ mod student;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
-use corpus::{IMAGES, compare, has, infer_range, programs, root};
+use corpus::{compare, has, images, infer_range, programs, root};
 use judge::{JUSTIFIED_BY, Verdict};
 
 /// Totals of verdicts.
@@ -89,7 +91,7 @@ fn main() {
     let mut behaviours = String::new();
     for program in &programs {
         let truth = program.truth();
-        for image in IMAGES.iter().filter(|i| has(program, i)) {
+        for image in images().iter().filter(|i| has(program, i)) {
             let outcome = compare(&binary, program, image);
             let verdict = outcome.judged(&truth);
             real.add(verdict);

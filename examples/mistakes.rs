@@ -12,6 +12,9 @@
 //! `-diff` draws. `last-wins` needs two spheres at the same place, which no course scene has:
 //! it is shown on the test scene `tests/compare/every-mistake.txt`.
 
+#[path = "support/course.rs"]
+mod course;
+
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -21,17 +24,6 @@ use raytracer::oracle::mistaken::render_variant;
 use raytracer::render::View;
 use raytracer::render::depth_map::DepthRange;
 use raytracer::scene::{Scene, load_scene};
-
-/// The course scenes with the depth ranges of the course's reference images.
-const COURSE: [(&str, f64, f64); 7] = [
-    ("scene1_01", 9.0, 10.0),
-    ("scene1_02", 8.0, 12.0),
-    ("scene1_03", 8.0, 12.0),
-    ("scene1_04", 12.0, 17.0),
-    ("scene1_05", 14.5, 19.5),
-    ("scene1_06", 3.0, 7.0),
-    ("scene1_07", -2.0, 2.0),
-];
 
 /// One case: a scene, its file, a view.
 struct Case {
@@ -47,7 +39,7 @@ fn cases(mistake: Mistake) -> Vec<Case> {
         (200, 200)
     };
     let mut cases = Vec::new();
-    for (name, min_t, max_t) in COURSE {
+    for &(name, min_t, max_t) in course::ranges() {
         let file = format!("scenes/{name}.txt");
         let scene = load_scene(Path::new(&file)).expect("a course scene");
         let quarter = 0.25 * (max_t - min_t);

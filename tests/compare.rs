@@ -2,6 +2,9 @@
 //! agrees with the exact renderer; each known mistake, alone and with any other, is named from
 //! the images it makes; exact images and an unrelated scene's images name nothing.
 
+#[path = "../examples/support/course.rs"]
+mod course;
+
 use std::path::{Path, PathBuf};
 
 use image::RgbImage;
@@ -67,21 +70,10 @@ fn offered(diagnosis: &Diagnosis) -> Vec<MistakeSet> {
         .collect()
 }
 
-/// The course scenes with the depth ranges of the course's reference images.
-const COURSE: [(&str, f64, f64); 7] = [
-    ("scene1_01", 9.0, 10.0),
-    ("scene1_02", 8.0, 12.0),
-    ("scene1_03", 8.0, 12.0),
-    ("scene1_04", 12.0, 17.0),
-    ("scene1_05", 14.5, 19.5),
-    ("scene1_06", 3.0, 7.0),
-    ("scene1_07", -2.0, 2.0),
-];
-
 #[test]
 fn without_mistakes_the_variant_renderer_agrees_with_the_exact_renderer() {
     let mut compared = 0;
-    for (name, min_t, max_t) in COURSE {
+    for (name, min_t, max_t) in course::ranges().iter().copied() {
         let scene = scene(&format!("scenes/{name}.txt"));
         for (width, height) in [(200, 200), (160, 90), (37, 61)] {
             let view = View::of_camera(&scene.camera, width, height, DepthRange::new(min_t, max_t));
@@ -158,7 +150,7 @@ fn every_pair_of_mistakes_is_named() {
 
 #[test]
 fn exact_images_name_nothing() {
-    for (name, min_t, max_t) in COURSE {
+    for (name, min_t, max_t) in course::ranges().iter().copied() {
         let scene = scene(&format!("scenes/{name}.txt"));
         let view = View::of_camera(&scene.camera, 200, 200, DepthRange::new(min_t, max_t));
         let images = exact(&scene, &view);
@@ -172,10 +164,10 @@ fn exact_images_name_nothing() {
 fn images_of_another_scene_name_nothing() {
     // Every course scene's images against every other course scene: never a mistake named.
     let mut compared = 0;
-    for (name, min_t, max_t) in COURSE {
+    for (name, min_t, max_t) in course::ranges().iter().copied() {
         let scene = scene(&format!("scenes/{name}.txt"));
         let view = View::of_camera(&scene.camera, 200, 200, DepthRange::new(min_t, max_t));
-        for (other, other_min, other_max) in COURSE {
+        for (other, other_min, other_max) in course::ranges().iter().copied() {
             if other == name {
                 continue;
             }
@@ -253,13 +245,16 @@ fn on_the_course_scenes_each_mistake_that_shows_is_named_and_never_another() {
     // 200×200 as the course renders, 200×120 for the stretched image; the course's depth range
     // and its middle half (where depth outside the range shows).
     let mut named = Vec::new();
-    let ranges = COURSE.iter().flat_map(|&(name, min_t, max_t)| {
-        let quarter = 0.25 * (max_t - min_t);
-        [
-            (name, min_t, max_t),
-            (name, min_t + quarter, max_t - quarter),
-        ]
-    });
+    let ranges = course::ranges()
+        .iter()
+        .copied()
+        .flat_map(|(name, min_t, max_t)| {
+            let quarter = 0.25 * (max_t - min_t);
+            [
+                (name, min_t, max_t),
+                (name, min_t + quarter, max_t - quarter),
+            ]
+        });
     for (name, min_t, max_t) in ranges {
         let scene = scene_named(name);
         for mistake in Mistake::ALL {

@@ -9,6 +9,8 @@
 
 #[path = "../examples/support/corpus.rs"]
 mod corpus;
+#[path = "../examples/support/course.rs"]
+mod course;
 #[path = "../examples/support/judge.rs"]
 mod judge;
 
@@ -18,14 +20,14 @@ use std::sync::Mutex;
 
 use raytracer::compare::Mistake;
 
-use corpus::{IMAGES, Image, Outcome, Program, compare, has, infer_range, programs};
+use corpus::{Image, Outcome, Program, compare, has, images, infer_range, programs};
 use judge::{Verdict, behaviour};
 
 /// Every image of every program, compared (two at a time).
 fn compare_all(binary: &Path, programs: &[Program]) -> Vec<(String, String, Outcome)> {
     let jobs: Vec<(&Program, &Image)> = programs
         .iter()
-        .flat_map(|p| IMAGES.iter().map(move |i| (p, i)))
+        .flat_map(|p| images().iter().map(move |i| (p, i)))
         .filter(|(p, i)| has(p, i))
         .collect();
     let next = Mutex::new(0usize);
@@ -110,7 +112,7 @@ fn the_corpus_gets_no_false_statement_and_nearly_every_image_explained() {
 /// makes on the image's scene: `−(up·d̂)/|up⊥|` per unit of the screen up (`raw-up` said by its
 /// effect, when the program also scales the screen so that the word's own map is not the one).
 fn says_the_raw_up_ramp(file: &str, said: &[String]) -> bool {
-    let Some(image) = IMAGES.iter().find(|i| i.file == file) else {
+    let Some(image) = images().iter().find(|i| i.file == file) else {
         return false;
     };
     let text = std::fs::read_to_string(
@@ -154,7 +156,7 @@ fn kskun_s_scene1_07_is_named_as_its_code_makes_it() {
     let binary = Path::new(env!("CARGO_BIN_EXE_raytracer"));
     let programs = programs();
     let kskun = programs.iter().find(|p| p.name == "kskun").expect("kskun");
-    let image = IMAGES
+    let image = images()
         .iter()
         .find(|i| i.file == "output1_07.png")
         .expect("output1_07");
@@ -182,7 +184,7 @@ fn the_depth_range_read_back_is_the_one_the_program_used() {
             .iter()
             .any(|b| ["depth-per-image", "depth-quantity", "ray-march"].contains(&behaviour(b)))
     }) {
-        for image in IMAGES.iter().filter(|i| has(program, i)) {
+        for image in images().iter().filter(|i| has(program, i)) {
             let Some((min, max)) = image.depth_range else {
                 continue;
             };

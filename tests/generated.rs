@@ -5,6 +5,8 @@
 //! program's behaviours do not make true, and 99% of the differing cases must be explained to
 //! within 1% of their pixels. `docs/diagnosis.md` reports the first 300 such programs.
 
+#[path = "../examples/support/course.rs"]
+mod course;
 #[path = "../examples/support/generated.rs"]
 mod generated;
 #[path = "../examples/support/judge.rs"]

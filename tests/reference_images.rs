@@ -7,21 +7,13 @@
 //! pixels, which may differ by one grey level (the course rendered in 32-bit floats, so a value on
 //! a grey-level boundary may round the other way).
 
+#[path = "../examples/support/course.rs"]
+mod course;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use image::RgbImage;
-
-/// (scene number, depth min, depth max) as in the course's handout.
-const COURSE_RUNS: [(u32, &str, &str); 7] = [
-    (1, "9", "10"),
-    (2, "8", "12"),
-    (3, "8", "12"),
-    (4, "12", "17"),
-    (5, "14.5", "19.5"),
-    (6, "3", "7"),
-    (7, "-2", "2"),
-];
 
 fn project_path(relative: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join(relative)
@@ -60,7 +52,8 @@ fn render_course_scene(
 #[test]
 fn course_command_lines_reproduce_the_reference_images() {
     let folder = tempfile::tempdir().unwrap();
-    for (number, depth_min, depth_max) in COURSE_RUNS {
+    for (number, depth_min, depth_max) in course::runs() {
+        let (depth_min, depth_max) = (depth_min.as_str(), depth_max.as_str());
         let expected_colour = load(&project_path(&format!(
             "tests/reference/output1_0{number}.png"
         )));
@@ -120,7 +113,8 @@ fn the_pixel_trace_agrees_with_the_high_precision_oracle_and_the_files_written()
     use raytracer::render::depth_map::DepthRange;
     let folder = tempfile::tempdir().unwrap();
     let mut traced_hits = 0;
-    for (number, depth_min, depth_max) in COURSE_RUNS {
+    for (number, depth_min, depth_max) in course::runs() {
+        let (depth_min, depth_max) = (depth_min.as_str(), depth_max.as_str());
         let scene_file = project_path(&format!("scenes/scene1_0{number}.txt"));
         let scene = raytracer::scene::load_scene(&scene_file).unwrap();
         let range = DepthRange::new(depth_min.parse().unwrap(), depth_max.parse().unwrap());

@@ -14,56 +14,32 @@
 use wasm_bindgen_test::wasm_bindgen_test;
 
 use raytracer::explore::initial_depth_range;
+use raytracer::grade::assignment::course_tasks;
 use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{Frame, View, render};
+use raytracer::scene::bundled::BUNDLED_SCENES;
 use raytracer::scene::{Scene, parse_scene};
 
 const RECORD: &str = include_str!("same_pixels.txt");
 
-const COURSE_SCENES: [(&str, &str, f64, f64); 7] = [
-    (
-        "scene1_01",
-        include_str!("../scenes/scene1_01.txt"),
-        9.0,
-        10.0,
-    ),
-    (
-        "scene1_02",
-        include_str!("../scenes/scene1_02.txt"),
-        8.0,
-        12.0,
-    ),
-    (
-        "scene1_03",
-        include_str!("../scenes/scene1_03.txt"),
-        8.0,
-        12.0,
-    ),
-    (
-        "scene1_04",
-        include_str!("../scenes/scene1_04.txt"),
-        12.0,
-        17.0,
-    ),
-    (
-        "scene1_05",
-        include_str!("../scenes/scene1_05.txt"),
-        14.5,
-        19.5,
-    ),
-    (
-        "scene1_06",
-        include_str!("../scenes/scene1_06.txt"),
-        3.0,
-        7.0,
-    ),
-    (
-        "scene1_07",
-        include_str!("../scenes/scene1_07.txt"),
-        -2.0,
-        2.0,
-    ),
-];
+/// The course's seven scenes (as bundled in the program) with the depth ranges of the course's
+/// command lines (`scenes/assignment1.commands`, compiled in): in WebAssembly there are no files.
+fn course_scenes() -> Vec<(String, &'static str, f64, f64)> {
+    let tasks = course_tasks(std::path::Path::new(""));
+    assert_eq!(tasks.len(), 7, "the course's seven command lines");
+    tasks
+        .iter()
+        .map(|task| {
+            let file = format!("{}.txt", task.name());
+            let (_, text) = BUNDLED_SCENES
+                .iter()
+                .find(|(name, _)| *name == file)
+                .unwrap();
+            let (range, _) = task.depth.as_ref().unwrap();
+            (task.name(), *text, range.min_t, range.max_t)
+        })
+        .collect()
+}
 
 /// FNV-1a over the frame's colour bytes, t bits and sphere indices.
 fn digest(frame: &Frame) -> u64 {
@@ -89,7 +65,7 @@ fn digest(frame: &Frame) -> u64 {
 /// Each case's record line: `name digest`.
 fn lines() -> Vec<String> {
     let mut cases: Vec<(String, Scene, View)> = Vec::new();
-    for (name, text, min_t, max_t) in COURSE_SCENES {
+    for (name, text, min_t, max_t) in course_scenes() {
         let scene = parse_scene(text).unwrap();
         for (width, height) in [(200, 200), (203, 61)] {
             let view = View::of_camera(&scene.camera, width, height, DepthRange::new(min_t, max_t));

@@ -12,6 +12,9 @@
 #[path = "common/command.rs"]
 mod command;
 
+#[path = "../examples/support/course.rs"]
+mod course;
+
 use command::names_in;
 use std::io::{BufRead as _, BufReader};
 use std::path::{Path, PathBuf};
@@ -61,24 +64,14 @@ fn scene_in(folder: &Path, name: &str) {
     std::fs::copy(project_path(&format!("scenes/{name}")), folder.join(name)).unwrap();
 }
 
-/// (scene number, depth min, depth max) as in the course's handout.
-const COURSE_RUNS: [(u32, &str, &str); 7] = [
-    (1, "9", "10"),
-    (2, "8", "12"),
-    (3, "8", "12"),
-    (4, "12", "17"),
-    (5, "14.5", "19.5"),
-    (6, "3", "7"),
-    (7, "-2", "2"),
-];
-
 #[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
 #[test]
 fn the_course_commands_write_the_linux_binarys_bytes_and_the_courses_colours() {
     let windows = tempfile::tempdir().unwrap();
     let linux = tempfile::tempdir().unwrap();
     let sizes: [(&str, &str); 2] = [("200", "200"), ("203", "61")];
-    for (number, depth_min, depth_max) in COURSE_RUNS {
+    for (number, depth_min, depth_max) in course::runs() {
+        let (depth_min, depth_max) = (depth_min.as_str(), depth_max.as_str());
         let scene = format!("scene1_0{number}.txt");
         scene_in(windows.path(), &scene);
         scene_in(linux.path(), &scene);

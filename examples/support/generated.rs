@@ -15,17 +15,6 @@ use raytracer::scene::{Scene, load_scene};
 use crate::judge::{Verdict, judge};
 use crate::student::{Draw, Program, draw_program, render};
 
-/// The course scenes and the depth ranges of their command lines.
-const SCENES: [(&str, f64, f64); 7] = [
-    ("scene1_01", 9.0, 10.0),
-    ("scene1_02", 8.0, 12.0),
-    ("scene1_03", 8.0, 12.0),
-    ("scene1_04", 12.0, 17.0),
-    ("scene1_05", 14.5, 19.5),
-    ("scene1_06", 3.0, 7.0),
-    ("scene1_07", -2.0, 2.0),
-];
-
 /// The image sizes drawn from.
 const SIZES: [(u32, u32); 3] = [(200, 200), (160, 90), (90, 140)];
 
@@ -46,7 +35,9 @@ pub(crate) fn cases(count: u64) -> Vec<Case> {
     (0..count)
         .map(|seed| {
             let mut draw = Draw::new(seed);
-            let (scene_name, dmin, dmax) = SCENES[draw.below(SCENES.len() as u64) as usize];
+            // The course scenes and the depth ranges of their command lines.
+            let scenes = crate::course::ranges();
+            let (scene_name, dmin, dmax) = scenes[draw.below(scenes.len() as u64) as usize];
             let (width, height) = SIZES[draw.below(SIZES.len() as u64) as usize];
             let program = draw_program(&mut draw, width != height);
             let scene =

@@ -9,6 +9,17 @@ use std::path::{Component, Path, PathBuf};
 use crate::cli::{Command, parse_command};
 use crate::render::depth_map::DepthRange;
 
+/// The course's assignment 1 as shipped, `scenes/assignment1.commands`: the one table of the
+/// course's seven command lines that the tests, the examples, the grader and the release share.
+pub const COURSE_ASSIGNMENT: &str = include_str!("../../scenes/assignment1.commands");
+
+/// The course's seven tasks ([`COURSE_ASSIGNMENT`]), in order, their scenes joined to
+/// `scenes_folder` (the repository's `scenes/`, or wherever the course scenes are).
+pub fn course_tasks(scenes_folder: &Path) -> Vec<Task> {
+    // The text is compiled in and parsed by this module's unit test: it cannot fail here.
+    parse_assignment(COURSE_ASSIGNMENT, scenes_folder).unwrap_or_default()
+}
+
 /// The most bytes of an assignment file read (the course's is 7 lines).
 const MAX_ASSIGNMENT_BYTES: u64 = 1 << 20;
 
@@ -59,6 +70,18 @@ pub struct Task {
 }
 
 impl Task {
+    /// The line's arguments as written: its words after the program's name.
+    pub fn arguments(&self) -> Vec<&str> {
+        arguments_of(&self.line)
+    }
+
+    /// The depth range as the line writes it (`-depth 14.5 19.5 …`), for passing on unchanged.
+    pub fn depth_words(&self) -> Option<[&str; 2]> {
+        let words = self.arguments();
+        let at = words.iter().position(|word| *word == "-depth")?;
+        Some([*words.get(at + 1)?, *words.get(at + 2)?])
+    }
+
     /// A short name for the line: its scene's file stem (`scene1_01`).
     pub fn name(&self) -> String {
         self.scene.file_stem().map_or_else(
@@ -109,10 +132,7 @@ pub fn parse_assignment(text: &str, folder: &Path) -> Result<Vec<Task>, (usize, 
         if command.is_empty() {
             continue;
         }
-        let mut words: Vec<&str> = command.split_whitespace().collect();
-        if words.first().is_some_and(|word| !word.starts_with('-')) {
-            words.remove(0);
-        }
+        let words = arguments_of(command);
         let task = task_of(&words, folder, line_number, command).map_err(|m| (line_number, m))?;
         for earlier in &tasks {
             let named = |t: &Task| {
@@ -132,6 +152,17 @@ pub fn parse_assignment(text: &str, folder: &Path) -> Result<Vec<Task>, (usize, 
         tasks.push(task);
     }
     Ok(tasks)
+}
+
+/// A command line's words after the program's name (a first word that is not a flag), its
+/// `#` comment left out.
+fn arguments_of(line: &str) -> Vec<&str> {
+    let command = line.split('#').next().unwrap_or("");
+    let mut words: Vec<&str> = command.split_whitespace().collect();
+    if words.first().is_some_and(|word| !word.starts_with('-')) {
+        words.remove(0);
+    }
+    words
 }
 
 /// The task of one line's words (after the program's name).
@@ -183,4 +214,40 @@ fn task_of(words: &[&str], folder: &Path, line_number: usize, line: &str) -> Res
             .as_ref()
             .map(|d| (d.range, d.path.clone())),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_course_assignment_is_the_handouts_seven_command_lines() {
+        let tasks = course_tasks(Path::new("scenes"));
+        let names: Vec<String> = tasks.iter().map(Task::name).collect();
+        assert_eq!(
+            names,
+            (1..=7).map(|n| format!("scene1_0{n}")).collect::<Vec<_>>()
+        );
+        let depths: Vec<[&str; 2]> = tasks.iter().filter_map(Task::depth_words).collect();
+        assert_eq!(
+            depths,
+            [
+                ["9", "10"],
+                ["8", "12"],
+                ["8", "12"],
+                ["12", "17"],
+                ["14.5", "19.5"],
+                ["3", "7"],
+                ["-2", "2"]
+            ]
+        );
+        let fifth = &tasks[4];
+        assert_eq!(fifth.size_px, (200, 200));
+        assert_eq!(fifth.scene, Path::new("scenes/scene1_05.txt"));
+        assert_eq!(fifth.colour.as_deref(), Some(Path::new("output1_05.tga")));
+        let (range, depth_file) = fifth.depth.as_ref().unwrap();
+        assert_eq!((range.min_t, range.max_t), (14.5, 19.5));
+        assert_eq!(depth_file, Path::new("depth1_05.tga"));
+        assert_eq!(fifth.arguments()[..2], ["-input", "scene1_05.txt"]);
+    }
 }
