@@ -3,7 +3,8 @@
 //! import each other, no file (of `src/`, `tests/`, `examples/`, `benches/`, the fuzz targets;
 //! unit tests included) is longer than 500 lines and the viewer's coordinator's code stays under
 //! 300; what differs by operating system is named in
-//! `src/platform/` alone.
+//! `src/platform/` alone; a request's outputs are written out only where the flag table, their
+//! list and the run that makes them are.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -316,5 +317,56 @@ fn only_the_platform_layer_names_an_operating_system() {
     assert!(
         found.is_empty(),
         "operating-system names outside src/platform/:\n{found:#?}"
+    );
+}
+
+/// The files where a request's outputs are written out: the flag table (with each output's
+/// formats), the list of outputs, and the run that makes each file (and the command line's unit
+/// tests).
+const OUTPUT_FILES: [&str; 4] = [
+    "src/cli/flags.rs",
+    "src/cli/outputs.rs",
+    "src/cli/run.rs",
+    "src/cli/tests.rs",
+];
+
+#[test]
+fn a_requests_outputs_are_listed_in_one_place() {
+    // The outputs beyond the course's `-output` and `-depth` stand for any new one: a new output
+    // flag touches the flag table, the outputs' list and the run, nothing else.
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut found = Vec::new();
+    let mut named = 0;
+    for file in source_files() {
+        let relative = file
+            .strip_prefix(root)
+            .unwrap()
+            .to_string_lossy()
+            .replace('\\', "/");
+        let text = std::fs::read_to_string(&file).unwrap();
+        for (number, line) in text.lines().enumerate() {
+            for name in [
+                "Flag::Depth16",
+                "Flag::DepthRaw",
+                "outputs.depth16",
+                "outputs.depth_raw",
+            ] {
+                if line.contains(name) {
+                    if OUTPUT_FILES.contains(&relative.as_str()) {
+                        named += 1;
+                    } else {
+                        found.push(format!("{relative}:{}: {name}", number + 1));
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        named >= 4,
+        "the output flags were found only {named} times in their own files"
+    );
+    assert!(
+        found.is_empty(),
+        "outputs written out elsewhere:\n{found:#?}"
     );
 }

@@ -1,8 +1,7 @@
 //! [`UsageError`]: a command-line mistake; the program prints it and exits with status 2. Flags
 //! are named through [`Flag`], so the messages follow the flag table.
 
-use super::flags::{Flag, GRADE_SYNOPSIS, GRADE_WORD};
-use crate::output::{ImageFormat, RawDepthFormat};
+use super::flags::{Flag, GRADE_SYNOPSIS, GRADE_WORD, OUTPUT_FLAGS, extensions_of};
 use crate::render::sampling::SamplingError;
 use crate::render::{MAX_PIXELS, MAX_SIDE_PX};
 
@@ -102,8 +101,9 @@ pub enum UsageError {
     /// Rendering needs a scene.
     #[error(
         "{} need {}",
-        [Flag::Output, Flag::Depth, Flag::Depth16, Flag::DepthRaw, Flag::CompareOutput, Flag::CompareDepth]
-            .map(Flag::name)
+        OUTPUT_FLAGS.iter().chain(&[Flag::CompareOutput, Flag::CompareDepth])
+            .map(|flag| flag.name())
+            .collect::<Vec<_>>()
             .join(", "),
         Flag::Input.synopsis()
     )]
@@ -169,14 +169,5 @@ fn unknown_format(flag: Flag, path: &str) -> String {
         format!("'-': {what} files, not {stream}; name a file ending in one of {extensions}")
     } else {
         format!("'{path}' has an unknown format; use one of {extensions}")
-    }
-}
-
-/// The extensions an output flag accepts, for messages.
-pub(crate) fn extensions_of(flag: Flag) -> &'static str {
-    match flag {
-        Flag::DepthRaw => RawDepthFormat::EXTENSIONS,
-        Flag::Depth16 => ".png",
-        _ => ImageFormat::EXTENSIONS,
     }
 }

@@ -3,8 +3,10 @@
 //! back to arguments ([`super::RenderRequest::to_arguments`]) all read it, so renaming a flag is
 //! a one-line change here; the rest of the program names flags by [`Flag`].
 
+use crate::output::{ImageFormat, RawDepthFormat};
 use crate::render::depth_map::DepthColourMap;
 use std::fmt::{self, Write as _};
+use std::path::Path;
 
 /// The word that starts the grading command (`raytracer grade …`).
 pub const GRADE_WORD: &str = "grade";
@@ -80,6 +82,30 @@ pub(crate) struct FlagSpec {
     pub(crate) values: &'static [&'static str],
     /// What the flag does, for the usage text.
     pub(crate) help: &'static str,
+}
+
+/// The flags that name a file the request writes, in the order the outputs are listed, written
+/// back and checked ([`super::Outputs::each`]).
+pub(crate) const OUTPUT_FLAGS: [Flag; 4] =
+    [Flag::Output, Flag::Depth, Flag::Depth16, Flag::DepthRaw];
+
+/// Whether `flag` can write (or, for the comparison's flags, read) a file named `path`: its
+/// extension names a format the flag takes.
+pub(crate) fn format_known(flag: Flag, path: &Path) -> bool {
+    match flag {
+        Flag::DepthRaw => RawDepthFormat::from_path(path).is_some(),
+        Flag::Depth16 => matches!(ImageFormat::from_path(path), Ok(ImageFormat::Png)),
+        _ => ImageFormat::from_path(path).is_ok(),
+    }
+}
+
+/// The extensions `flag` takes ([`format_known`]), for messages.
+pub(crate) fn extensions_of(flag: Flag) -> &'static str {
+    match flag {
+        Flag::DepthRaw => RawDepthFormat::EXTENSIONS,
+        Flag::Depth16 => ".png",
+        _ => ImageFormat::EXTENSIONS,
+    }
 }
 
 /// The table, in the order the usage text lists the flags.

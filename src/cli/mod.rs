@@ -13,6 +13,7 @@ pub mod compare;
 mod error;
 mod flags;
 mod grade_request;
+mod outputs;
 pub(crate) mod progress;
 mod raw_args;
 mod request;
@@ -25,8 +26,9 @@ mod to_arguments;
 pub use error::UsageError;
 pub use flags::{Flag, GRADE_SYNOPSIS, GRADE_WORD, VERSION_LINE, usage};
 pub use grade_request::GradeRequest;
+pub use outputs::{DepthOutput, Outputs};
 pub use raw_args::RawArgs;
 pub use request::{
-    Command, CompareRequest, DEFAULT_SIZE_PX, DepthOutput, RenderRequest, TheirDepth,
-    ViewerRequest, parse_command,
+    Command, CompareRequest, DEFAULT_SIZE_PX, RenderRequest, TheirDepth, ViewerRequest,
+    parse_command,
 };

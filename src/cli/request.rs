@@ -2,14 +2,15 @@
 //! formats). The way back, [`RenderRequest::to_arguments`], is in `to_arguments.rs`.
 
 use std::ffi::OsString;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use super::error::UsageError;
 use super::flags::Flag;
 use super::flags::GRADE_WORD;
+use super::flags::format_known;
 use super::grade_request::{GradeRequest, parse_grade};
+use super::outputs::{DepthOutput, Outputs};
 use super::raw_args::RawArgs;
-use crate::output::{ImageFormat, RawDepthFormat};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 use crate::render::{Filter, Quality, Sampler, Sampling, check_image_size};
 
@@ -32,15 +33,6 @@ pub(super) const FILTER_FLAGS: [(Flag, MakeFilter); 3] = [
     (Flag::TentFilter, |radius| Filter::Tent { radius }),
     (Flag::GaussianFilter, |sigma| Filter::Gaussian { sigma }),
 ];
-
-/// A depth image to write.
-#[derive(Debug, Clone, PartialEq)]
-pub struct DepthOutput {
-    /// t range mapped white … black.
-    pub(crate) range: DepthRange,
-    /// Where to write it.
-    pub(crate) path: PathBuf,
-}
 
 /// Their depth image to compare, and the range it was made over when given.
 #[derive(Debug, Clone, PartialEq)]
@@ -86,16 +78,10 @@ pub struct RenderRequest {
     pub(crate) size_given: bool,
     /// Images to compare with the exact render.
     pub(crate) compare: Option<CompareRequest>,
-    /// Colour image destination.
-    pub(crate) colour_output: Option<PathBuf>,
-    /// Depth image destination and range.
-    pub(crate) depth_output: Option<DepthOutput>,
+    /// The files it writes.
+    pub(crate) outputs: Outputs,
     /// Colour map of the depth image (`-depth_colormap`; grey by default).
     pub(crate) depth_colour_map: DepthColourMap,
-    /// 16-bit grey depth PNG destination and range (`-depth16`).
-    pub(crate) depth16_output: Option<DepthOutput>,
-    /// Raw t destination (`-depth_raw`, `.pfm` or `.exr`).
-    pub(crate) depth_raw_output: Option<PathBuf>,
     /// Quality: samples per pixel.
     pub(crate) quality: Quality,
     /// Print timings and counts after rendering.
@@ -165,20 +151,16 @@ impl RawArgs {
         } else {
             None
         };
-        let colour_output = self.output_path(Flag::Output, 0)?;
-        let depth_output = self.depth_output(Flag::Depth)?;
-        let depth16_output = self.depth_output(Flag::Depth16)?;
-        let depth_raw_output = self.output_path(Flag::DepthRaw, 0)?;
+        let outputs = self.outputs()?;
         let compare = self.compare()?;
-        let outputs: Vec<&PathBuf> = colour_output
+        let written: Vec<&Path> = outputs
+            .each()
             .iter()
-            .chain(depth_output.iter().map(|d| &d.path))
-            .chain(depth16_output.iter().map(|d| &d.path))
-            .chain(depth_raw_output.iter())
-            .chain(compare.iter().flat_map(|c| c.diff.iter()))
+            .map(|output| output.path)
+            .chain(compare.iter().filter_map(|c| c.diff.as_deref()))
             .collect();
-        for (index, path) in outputs.iter().enumerate() {
-            if outputs[..index].contains(path) {
+        for (index, path) in written.iter().enumerate() {
+            if written[..index].contains(path) {
                 return Err(UsageError::SameOutput(path.display().to_string()));
             }
         }
@@ -190,7 +172,7 @@ impl RawArgs {
             DepthColourMap::Grey
         };
         let trace = self.trace()?;
-        if outputs.is_empty() && compare.is_none() && trace.is_none() {
+        if written.is_empty() && compare.is_none() && trace.is_none() {
             return Ok(Command::View(ViewerRequest {
                 input,
                 size_px,
@@ -205,11 +187,8 @@ impl RawArgs {
             height_px,
             size_given: size_px.is_some(),
             compare,
-            colour_output,
-            depth_output,
+            outputs,
             depth_colour_map,
-            depth16_output,
-            depth_raw_output,
             quality: Quality {
                 sampling: self.sampling()?,
             },
@@ -369,7 +348,7 @@ impl RawArgs {
     }
 
     /// A `-depth`-style output: DMIN DMAX FILE.
-    fn depth_output(&self, flag: Flag) -> Result<Option<DepthOutput>, UsageError> {
+    pub(super) fn depth_output(&self, flag: Flag) -> Result<Option<DepthOutput>, UsageError> {
         if !self.has(flag) {
             return Ok(None);
         }
@@ -403,17 +382,16 @@ impl RawArgs {
     }
 
     /// An output path whose extension names a format the flag writes.
-    fn output_path(&self, flag: Flag, index: usize) -> Result<Option<PathBuf>, UsageError> {
+    pub(super) fn output_path(
+        &self,
+        flag: Flag,
+        index: usize,
+    ) -> Result<Option<PathBuf>, UsageError> {
         let Some(value) = self.value(flag, index) else {
             return Ok(None);
         };
         let path = PathBuf::from(value);
-        let known = match flag {
-            Flag::DepthRaw => RawDepthFormat::from_path(&path).is_some(),
-            Flag::Depth16 => matches!(ImageFormat::from_path(&path), Ok(ImageFormat::Png)),
-            _ => ImageFormat::from_path(&path).is_ok(),
-        };
-        if !known {
+        if !format_known(flag, &path) {
             return Err(UsageError::UnknownFormat {
                 flag,
                 path: path.display().to_string(),

@@ -159,29 +159,15 @@ const UNUSED_DEPTH_RANGE: DepthRange = DepthRange {
 /// The view a request renders: the scene's camera at the requested size and depth range (of
 /// `-depth`, else of `-depth16`).
 pub(crate) fn request_view(scene: &Scene, request: &RenderRequest) -> View {
-    let range = request
-        .depth_output
-        .as_ref()
-        .or(request.depth16_output.as_ref())
-        .map_or(UNUSED_DEPTH_RANGE, |depth| depth.range);
+    let range = request.outputs.depth_range().unwrap_or(UNUSED_DEPTH_RANGE);
     View::of_camera(&scene.camera, request.width_px, request.height_px, range)
 }
 
-/// Every output of a request with its flag, in the order they are written.
+/// Every output of a request with its flag, the comparison's picture last.
 fn outputs(request: &RenderRequest) -> Vec<(Flag, &Path)> {
-    let mut outputs = Vec::new();
-    if let Some(path) = &request.colour_output {
-        outputs.push((Flag::Output, path.as_path()));
-    }
-    if let Some(depth) = &request.depth_output {
-        outputs.push((Flag::Depth, depth.path.as_path()));
-    }
-    if let Some(depth) = &request.depth16_output {
-        outputs.push((Flag::Depth16, depth.path.as_path()));
-    }
-    if let Some(path) = &request.depth_raw_output {
-        outputs.push((Flag::DepthRaw, path.as_path()));
-    }
+    let mut outputs: Vec<(Flag, &Path)> = (request.outputs.each().iter())
+        .map(|output| (output.flag, output.path))
+        .collect();
     if let Some(path) = request.compare.as_ref().and_then(|c| c.diff.as_ref()) {
         outputs.push((Flag::Diff, path.as_path()));
     }
@@ -258,22 +244,22 @@ fn write_outputs(
         {
             stage_image(&mut files, path, picture)?;
         }
-        if let Some(path) = &request.colour_output {
+        if let Some(path) = &request.outputs.colour {
             stage_image(&mut files, path, &frame.colour_image())?;
         }
         Ok::<_, WriteError>(files)
     };
     let depth_side = || {
         let mut files = FileSet::new();
-        if let Some(depth) = &request.depth_output {
+        if let Some(depth) = &request.outputs.depth {
             let map = request.depth_colour_map;
             let image = frame.depth_image_mapped(depth.range, map, DepthColourMap::FILE_NO_HIT);
             stage_image(&mut files, &depth.path, &image)?;
         }
-        if let Some(depth) = &request.depth16_output {
+        if let Some(depth) = &request.outputs.depth16 {
             stage_depth_png16(&mut files, frame, depth.range, &depth.path)?;
         }
-        if let Some(path) = &request.depth_raw_output {
+        if let Some(path) = &request.outputs.depth_raw {
             stage_raw_depth(&mut files, frame, path)?;
         }
         Ok::<_, WriteError>(files)
@@ -431,10 +417,5 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
 /// The depth range a request names: its depth output's, else the range given with their depth
 /// image.
 fn known_depth_range(request: &RenderRequest) -> Option<DepthRange> {
-    request
-        .depth_output
-        .as_ref()
-        .or(request.depth16_output.as_ref())
-        .map(|depth| depth.range)
-        .or_else(|| request.compare.as_ref()?.depth.as_ref()?.range)
+    (request.outputs.depth_range()).or_else(|| request.compare.as_ref()?.depth.as_ref()?.range)
 }

@@ -13,6 +13,7 @@ use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
+use super::flags::Flag;
 use super::progress::StepProgress;
 use crate::cli::RenderRequest;
 use crate::output::WriteError;
@@ -29,18 +30,13 @@ use crate::scene::Scene;
 /// and its only outputs an `-output` and/or `-depth` TGA.
 pub(super) fn streams(request: &RenderRequest) -> bool {
     let tga = |path: &Path| ImageFormat::from_path(path).is_ok_and(|f| f == ImageFormat::Tga);
-    let colour = request.colour_output.as_deref();
-    let depth = request
-        .depth_output
-        .as_ref()
-        .map(|depth| depth.path.as_path());
+    let outputs = request.outputs.each();
     request.quality == Quality::default()
         && request.compare.is_none()
-        && request.depth16_output.is_none()
-        && request.depth_raw_output.is_none()
-        && (colour.is_some() || depth.is_some())
-        && colour.is_none_or(tga)
-        && depth.is_none_or(tga)
+        && !outputs.is_empty()
+        && outputs
+            .iter()
+            .all(|output| matches!(output.flag, Flag::Output | Flag::Depth) && tga(output.path))
 }
 
 /// Why a streamed run failed.
@@ -121,12 +117,14 @@ pub(super) fn render_streamed(
     view: &View,
 ) -> Result<Streamed, StreamedError> {
     let colour = request
-        .colour_output
+        .outputs
+        .colour
         .as_deref()
         .map(|path| Output::begin(path, view))
         .transpose()?;
     let depth = request
-        .depth_output
+        .outputs
+        .depth
         .as_ref()
         .map(|depth| Output::begin(&depth.path, view))
         .transpose()?;

@@ -20,14 +20,16 @@ fn course_command_line_gives_a_render_request() {
             height_px: 100,
             size_given: true,
             compare: None,
-            colour_output: Some("out.tga".into()),
-            depth_output: Some(DepthOutput {
-                range: DepthRange::new(9.0, 10.0),
-                path: "depth.tga".into()
-            }),
+            outputs: Outputs {
+                colour: Some("out.tga".into()),
+                depth: Some(DepthOutput {
+                    range: DepthRange::new(9.0, 10.0),
+                    path: "depth.tga".into()
+                }),
+                depth16: None,
+                depth_raw: None,
+            },
             depth_colour_map: DepthColourMap::Grey,
-            depth16_output: None,
-            depth_raw_output: None,
             quality: Quality::default(),
             stats: false,
             trace: None,
@@ -41,7 +43,7 @@ fn negative_depth_values_are_values_not_flags() {
         panic!("expected a render request");
     };
     assert_eq!(
-        request.depth_output.unwrap().range,
+        request.outputs.depth.unwrap().range,
         DepthRange::new(-2.0, 2.0)
     );
     assert_eq!((request.width_px, request.height_px), DEFAULT_SIZE_PX);
@@ -188,16 +190,16 @@ fn depth_outputs_and_colour_map() {
     else {
         panic!("a render request");
     };
-    assert_eq!(request.depth_raw_output, Some("t.exr".into()));
+    assert_eq!(request.outputs.depth_raw, Some("t.exr".into()));
     assert_eq!(
-        request.depth16_output,
+        request.outputs.depth16,
         Some(DepthOutput {
             range: DepthRange::new(-1.0, 2.5),
             path: "d16.png".into()
         })
     );
     assert_eq!(request.depth_colour_map, DepthColourMap::Viridis);
-    assert!(request.colour_output.is_none() && request.depth_output.is_none());
+    assert!(request.outputs.colour.is_none() && request.outputs.depth.is_none());
 }
 
 /// A request with every setting, and variations of its sampling.
@@ -216,17 +218,19 @@ fn requests_with_every_setting() -> Vec<RenderRequest> {
             diff: Some("out/diff.png".into()),
             json: false,
         }),
-        colour_output: Some("out/colour.png".into()),
-        depth_output: Some(DepthOutput {
-            range: DepthRange::new(-0.1, 1.0 / 3.0),
-            path: "out/depth.tga".into(),
-        }),
+        outputs: Outputs {
+            colour: Some("out/colour.png".into()),
+            depth: Some(DepthOutput {
+                range: DepthRange::new(-0.1, 1.0 / 3.0),
+                path: "out/depth.tga".into(),
+            }),
+            depth16: Some(DepthOutput {
+                range: DepthRange::new(1e-300, 7e12),
+                path: "out/depth16.png".into(),
+            }),
+            depth_raw: Some("out/t.exr".into()),
+        },
         depth_colour_map: DepthColourMap::Viridis,
-        depth16_output: Some(DepthOutput {
-            range: DepthRange::new(1e-300, 7e12),
-            path: "out/depth16.png".into(),
-        }),
-        depth_raw_output: Some("out/t.exr".into()),
         quality: Quality {
             sampling: Some(Sampling {
                 sampler: Sampler::Jittered,
@@ -241,9 +245,10 @@ fn requests_with_every_setting() -> Vec<RenderRequest> {
     let mut requests = vec![
         full.clone(),
         RenderRequest {
-            colour_output: None,
-            depth_output: None,
-            depth16_output: None,
+            outputs: Outputs {
+                depth_raw: full.outputs.depth_raw.clone(),
+                ..Outputs::default()
+            },
             depth_colour_map: DepthColourMap::Grey,
             quality: Quality::default(),
             stats: false,
@@ -254,10 +259,7 @@ fn requests_with_every_setting() -> Vec<RenderRequest> {
             width_px: 200,
             height_px: 200,
             size_given: false,
-            colour_output: None,
-            depth_output: None,
-            depth16_output: None,
-            depth_raw_output: None,
+            outputs: Outputs::default(),
             compare: Some(CompareRequest {
                 colour: None,
                 depth: Some(TheirDepth {

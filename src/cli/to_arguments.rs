@@ -5,7 +5,7 @@
 use std::ffi::OsString;
 
 use super::flags::Flag;
-use super::request::{DepthOutput, FILTER_FLAGS, RenderRequest, SAMPLER_FLAGS};
+use super::request::{FILTER_FLAGS, RenderRequest, SAMPLER_FLAGS};
 use crate::render::Filter;
 use crate::render::depth_map::DepthColourMap;
 
@@ -29,30 +29,22 @@ impl RenderRequest {
                 ],
             );
         }
-        if let Some(path) = &self.colour_output {
-            push(Flag::Output, vec![path.clone().into()]);
-        }
-        let depth_values = |depth: &DepthOutput| -> Vec<OsString> {
-            vec![
-                depth.range.min_t.to_string().into(),
-                depth.range.max_t.to_string().into(),
-                depth.path.clone().into(),
-            ]
-        };
-        if let Some(depth) = &self.depth_output {
-            push(Flag::Depth, depth_values(depth));
+        for output in self.outputs.each() {
+            // DMIN DMAX before the file, for the outputs that map depth.
+            let mut values: Vec<OsString> = output.range.map_or_else(Vec::new, |range| {
+                vec![
+                    range.min_t.to_string().into(),
+                    range.max_t.to_string().into(),
+                ]
+            });
+            values.push(output.path.into());
+            push(output.flag, values);
         }
         if self.depth_colour_map != DepthColourMap::Grey {
             push(
                 Flag::DepthColourMap,
                 vec![self.depth_colour_map.name().into()],
             );
-        }
-        if let Some(depth) = &self.depth16_output {
-            push(Flag::Depth16, depth_values(depth));
-        }
-        if let Some(path) = &self.depth_raw_output {
-            push(Flag::DepthRaw, vec![path.clone().into()]);
         }
         if let Some(sampling) = &self.quality.sampling {
             let sampler_flag = SAMPLER_FLAGS

@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use super::{ExportFiles, ExportPlan, ExtraDepth};
-use crate::cli::{DepthOutput, RenderRequest};
+use crate::cli::{DepthOutput, Outputs, RenderRequest};
 use crate::render::{Quality, View};
 
 /// The render request that draws `files.scene` into the same colour and depth files as the
@@ -21,18 +21,23 @@ pub(crate) fn export_request(
         range: view.depth_range,
         path: name(path),
     };
+    // An output the export does not make (a new output flag) stays empty.
+    #[allow(clippy::needless_update)]
+    let outputs = Outputs {
+        colour: Some(name(&files.images.colour)),
+        depth: Some(depth_output(&files.images.depth)),
+        depth16: (plan.extra_depth == ExtraDepth::Png16).then(|| depth_output(&files.depth16)),
+        depth_raw: files.depth_raw.as_deref().map(name),
+        ..Outputs::default()
+    };
     RenderRequest {
         input: name(&files.scene),
         width_px: view.width_px,
         height_px: view.height_px,
         size_given: true,
         compare: None,
-        colour_output: Some(name(&files.images.colour)),
-        depth_output: Some(depth_output(&files.images.depth)),
+        outputs,
         depth_colour_map: plan.colour_map,
-        depth16_output: (plan.extra_depth == ExtraDepth::Png16)
-            .then(|| depth_output(&files.depth16)),
-        depth_raw_output: files.depth_raw.as_deref().map(name),
         quality: *quality,
         stats: false,
         trace: None,

@@ -7,7 +7,7 @@
 use std::path::{Path, PathBuf};
 
 use super::command::command_script;
-use crate::cli::{DepthOutput, RenderRequest};
+use crate::cli::{DepthOutput, Outputs, RenderRequest};
 use crate::output::WriteError;
 use crate::output::atomic::Stage;
 use crate::output::image_file::stage_image;
@@ -72,14 +72,15 @@ impl CourseFiles {
             height_px: COURSE_SIZE_PX,
             size_given: true,
             compare: None,
-            colour_output: Some(name(&self.colour)),
-            depth_output: Some(DepthOutput {
-                range,
-                path: name(&self.depth),
-            }),
+            outputs: Outputs {
+                colour: Some(name(&self.colour)),
+                depth: Some(DepthOutput {
+                    range,
+                    path: name(&self.depth),
+                }),
+                ..Outputs::default()
+            },
             depth_colour_map: DepthColourMap::default(),
-            depth16_output: None,
-            depth_raw_output: None,
             quality: Quality::default(),
             stats: false,
             trace: None,

@@ -6,7 +6,7 @@
 
 use std::path::{Component, Path, PathBuf};
 
-use crate::cli::{Command, parse_command};
+use crate::cli::{Command, Flag, parse_command};
 use crate::render::depth_map::DepthRange;
 
 /// The course's assignment 1 as shipped, `scenes/assignment1.commands`: the one table of the
@@ -176,23 +176,20 @@ fn task_of(words: &[&str], folder: &Path, line_number: usize, line: &str) -> Res
         }
         Err(error) => return Err(error.to_string()),
     };
+    let outputs = request.outputs.each();
+    let course_images = |flag: Flag| matches!(flag, Flag::Output | Flag::Depth);
     if request.compare.is_some()
-        || request.depth16_output.is_some()
-        || request.depth_raw_output.is_some()
         || request.trace.is_some()
+        || outputs.iter().any(|output| !course_images(output.flag))
     {
         return Err(
             "grading reads the images of -output and -depth; leave out the other flags".to_owned(),
         );
     }
-    if request.colour_output.is_none() && request.depth_output.is_none() {
+    if outputs.is_empty() {
         return Err("names no image (-output FILE, -depth DMIN DMAX FILE)".to_owned());
     }
-    for name in request
-        .colour_output
-        .iter()
-        .chain(request.depth_output.iter().map(|d| &d.path))
-    {
+    for name in outputs.iter().map(|output| output.path) {
         let inside = name
             .components()
             .all(|part| matches!(part, Component::Normal(_)));
@@ -208,9 +205,10 @@ fn task_of(words: &[&str], folder: &Path, line_number: usize, line: &str) -> Res
         line: line.to_owned(),
         scene: folder.join(&request.input),
         size_px: (request.width_px, request.height_px),
-        colour: request.colour_output.clone(),
+        colour: request.outputs.colour.clone(),
         depth: request
-            .depth_output
+            .outputs
+            .depth
             .as_ref()
             .map(|d| (d.range, d.path.clone())),
     })
