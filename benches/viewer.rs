@@ -13,8 +13,8 @@ use std::sync::Arc;
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use raytracer::app::depth_stats::DepthHistogram;
 use raytracer::app::render_job::{HISTOGRAM_BINS, ViewerJob, prepare_frame};
-use raytracer::explore::depth_stats::DepthHistogram;
 use raytracer::explore::initial_depth_range;
 use raytracer::render::View;
 use raytracer::render::depth_map::DepthRange;

@@ -19,19 +19,21 @@
 //!   memory); no other module names `std::os::unix`, `std::os::windows` or a signal
 //! * [`geometry`]: camera basis and pixel grid, the careful ray–sphere routine
 //! * [`scene`]: model, lexer, parser (typed errors with line and column), writer
-//! * [`render`]: view, frame, the disc rasteriser, sampling, depth mapping, worker
+//! * [`render`]: view, frame, the disc rasteriser, sampling, depth mapping
 //! * [`oracle`] (feature `oracle`): the straightforward loop and the double-double reference,
 //!   for tests and studies only
-//! * [`explore`]: navigation, slider and depth ranges, probe, depth statistics
-//! * [`output`]: atomic writes, image encoders, lossless depth files, text in pictures
+//! * [`explore`]: slider and depth ranges, the pixel trace
+//! * [`output`]: atomic writes, image encoders, lossless depth files, text in pictures, shell quoting
 //! * [`compare`]: the known mistakes, the variant renderer that makes them, image differences,
 //!   the diagnosis and the difference picture
 //! * [`cli`]: the flag table (parsing, usage, writing a request back), running a request,
 //!   progress bars
-//! * [`export`]: everything one export from the viewer writes, and the command that makes it again
+//! * `export` (feature `gui`): everything one export from the viewer writes, and the command that
+//!   makes it again
 //! * [`grade`]: grading a class — every submission's images against the exact ones, explained,
 //!   in one report
-//! * `app` (feature `gui`): the desktop viewer
+//! * `app` (feature `gui`): the desktop viewer, with the math only its controls use (navigation,
+//!   the probe, depth statistics) and its render worker
 //!
 //! Without default features the library and the binary have no UI dependency (no eframe, egui,
 //! rfd or notify): a headless renderer for servers and CI.
@@ -41,16 +43,16 @@
     deny(clippy::unwrap_used, clippy::expect_used, clippy::panic)
 )]
 // Items are `pub(crate)` unless a caller outside the crate (the binary, tests, benchmarks,
-// examples) needs them, so the dead-code lint finds what nothing calls. Without the viewer, the
-// viewer's support (navigation, probe, depth statistics, the export bundle, the render worker)
-// has no caller: the lint speaks for the full build.
-#![cfg_attr(not(feature = "gui"), allow(dead_code))]
+// examples) needs them, so the dead-code lint finds what nothing calls, with the viewer and
+// without it: what only the viewer uses (navigation, the probe, the depth histogram, the render
+// worker, exports) is built only with it, in `app` and `export`.
 
 #[cfg(feature = "gui")]
 pub mod app;
 pub mod cli;
 pub mod compare;
 pub mod explore;
+#[cfg(feature = "gui")]
 pub mod export;
 pub mod geometry;
 pub mod grade;

@@ -1,6 +1,6 @@
 //! Input that is not a widget's: keyboard shortcuts, files dropped on the window, the watched
 //! file changing, navigation from the keyboard, and pointer gestures on the images — all turned
-//! into [`crate::explore::navigate`] calls or [`Action`]s.
+//! into [`crate::app::navigate`] calls or [`Action`]s.
 
 use egui::{Key, KeyboardShortcut, Modifiers};
 use glam::DVec2;
@@ -10,8 +10,8 @@ use super::actions::Action;
 use super::dialogs::DialogKind;
 use super::reload::WatchState;
 use super::ui::gestures::{ImageGestures, ORBIT_RAD_PER_POINT};
-use crate::explore::navigate;
-use crate::explore::probe::point_of_probe;
+use crate::app::navigate;
+use crate::app::probe::point_of_probe;
 
 /// Keyboard pan step, as a fraction of the image's shorter side.
 pub const KEY_PAN_FRACTION: f64 = 0.1;

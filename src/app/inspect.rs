@@ -10,8 +10,8 @@ use super::ViewerApp;
 use super::loaded_scene::LoadedScene;
 use super::settings::Settings;
 use super::ui::magnifier::Magnifier;
-use crate::explore::depth_stats::DepthHistogram;
-use crate::explore::probe::{Probe, probe};
+use crate::app::depth_stats::DepthHistogram;
+use crate::app::probe::{Probe, probe};
 use crate::render::{Frame, View};
 
 impl ViewerApp {

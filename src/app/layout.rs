@@ -15,8 +15,8 @@ use super::ui::status_bar::{StatusLine, error_overlay_ui, status_bar_ui};
 use super::ui::{
     depth_section, file_sections, help, probe_text, toolbar, view_controls, views_section,
 };
-use crate::explore::probe::pixel_of_point;
-use crate::output::numbers::grouped;
+use crate::app::probe::pixel_of_point;
+use crate::export::numbers::grouped;
 use crate::render::View;
 
 /// What the side panel's fields hold between frames.
@@ -251,7 +251,7 @@ impl ViewerApp {
     fn images_ui(&mut self, ui: &mut egui::Ui) {
         let style = self.depth_style();
         let range = self.frames.shown.as_ref().map(|s| s.view.depth_range);
-        let depth_rgb = |probe: &crate::explore::probe::Probe| match (range, probe.hit) {
+        let depth_rgb = |probe: &crate::app::probe::Probe| match (range, probe.hit) {
             (Some(range), Some(hit)) => style.colour_map.rgb(&range, hit.t, style.no_hit_rgb),
             _ => style.no_hit_rgb,
         };

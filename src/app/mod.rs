@@ -5,7 +5,8 @@
 //! [`ViewerApp`] coordinates; each concern lives in a module of its own:
 //! * [`settings`]: the settings that survive a restart
 //! * [`loaded_scene`]: the scene on screen and where it came from
-//! * [`render_job`]: the render worker's job (render + texture pixels off the UI thread)
+//! * [`render_job`]: the render worker's job (render + texture pixels off the UI thread);
+//!   [`render_worker`]: the worker, which runs the newest job on a thread of its own
 //! * [`frame_log`]: per-frame figures for scripts that measure the real window
 //! * [`render_requests`]: asking the worker for frames (progressive refinement) and taking them in
 //! * [`scene_loading`]: opening and reloading scene files in the background
@@ -17,6 +18,9 @@
 //! * [`saved_views`]: undo and redo, named views, the view each scene was last seen in
 //! * [`viewing`]: auto range and follow, frame all, resets, undo and redo, named views
 //! * [`input`]: shortcuts, dropped files, keyboard and pointer navigation
+//! * [`navigate`]: pan, zoom at a point, orbit and "frame all" as math on a view
+//! * [`probe`]: what one pixel of a frame shows; [`depth_stats`]: the histogram of visible t and
+//!   the auto depth range
 //! * [`layout`]: composing the panels, the drawer and the central area
 //! * [`background`]: the one background-task type (loads, writes, dialogs)
 //! * [`status`]: the typed status-bar message
@@ -31,16 +35,20 @@ pub(crate) mod background;
 pub mod compare;
 pub(crate) mod confirm;
 pub(crate) mod course_files;
+pub mod depth_stats;
 pub(crate) mod dialogs;
 pub mod frame_log;
 pub(crate) mod input;
 pub(crate) mod inspect;
 pub(crate) mod layout;
 pub mod loaded_scene;
+pub mod navigate;
 pub(crate) mod pixel_trace;
+pub mod probe;
 pub(crate) mod reload;
 pub mod render_job;
 pub(crate) mod render_requests;
+pub(crate) mod render_worker;
 pub mod saved_views;
 pub(crate) mod scene_loading;
 pub mod settings;

@@ -7,10 +7,10 @@ use std::sync::Arc;
 use egui::{Color32, ColorImage};
 use rayon::prelude::*;
 
-use crate::explore::depth_stats::DepthHistogram;
+use super::render_worker::{RenderResult, RenderWorker};
+use crate::app::depth_stats::DepthHistogram;
 use crate::render::depth_map::DepthColourMap;
 use crate::render::phases::time;
-use crate::render::worker::{RenderResult, RenderWorker};
 use crate::render::{Frame, Quality, View, ViewError, on_the_pool, render_with};
 use crate::scene::Scene;
 

@@ -12,7 +12,7 @@ use super::frame_log::FrameLog;
 use super::render_job::ViewerWorker;
 use super::render_job::{DepthStyle, JobResult, ViewerJob};
 use super::status::{Clears, Status};
-use crate::explore::depth_stats::DepthHistogram;
+use crate::app::depth_stats::DepthHistogram;
 use crate::render::{Frame, Quality, View, ViewError};
 use crate::scene::Scene;
 

@@ -1,14 +1,11 @@
 //! Exploring a scene: the math behind the viewer's controls, free of any UI.
 //!
 //! * [`ranges`]: slider ranges and depth ranges derived from a scene
-//! * [`navigate`]: pan, zoom at a point, orbit and "frame all" as math on a view
-//! * [`depth_stats`]: the histogram of visible t and the auto depth range
-//! * [`probe`]: what one pixel of a frame shows (position, t, sphere, material)
 //! * [`trace`]: the course's computation behind one pixel, step by step, as text
+//!
+//! The math of the viewer's own controls (navigation, the probe, the depth histogram) is built
+//! with the viewer only: `src/app/` (`navigate.rs`, `probe.rs`, `depth_stats.rs`).
 
-pub mod depth_stats;
-pub mod navigate;
-pub mod probe;
 pub(crate) mod ranges;
 pub mod trace;
 

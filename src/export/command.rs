@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 
 use super::{ExportFiles, ExportPlan, ExtraDepth};
 use crate::cli::{DepthOutput, Outputs, RenderRequest};
+use crate::output::shell::shell_quote;
 use crate::render::{Quality, View};
 
 /// The render request that draws `files.scene` into the same colour and depth files as the
@@ -56,19 +57,6 @@ pub(crate) fn command_arguments(
         .into_iter()
         .map(|word| word.to_string_lossy().into_owned())
         .collect()
-}
-
-/// Quotes a word for a POSIX shell (single quotes; words of safe characters stay bare).
-pub(crate) fn shell_quote(word: &str) -> String {
-    let safe = !word.is_empty()
-        && word
-            .chars()
-            .all(|c| c.is_ascii_alphanumeric() || "-_.,/+=:".contains(c));
-    if safe {
-        word.to_owned()
-    } else {
-        format!("'{}'", word.replace('\'', r"'\''"))
-    }
 }
 
 /// The `name_command.sh` text for `arguments`.

@@ -6,7 +6,7 @@
 
 use image::{Rgb, RgbImage};
 
-use crate::output::numbers::range_ends;
+use crate::export::numbers::range_ends;
 use crate::output::text::{CHAR_PX, draw_text, text_width};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 

@@ -19,8 +19,11 @@
 pub(crate) mod command;
 pub(crate) mod course;
 mod legend;
+pub(crate) mod numbers;
 
 use std::path::{Path, PathBuf};
+
+use image::RgbImage;
 
 use crate::output::atomic::{FileSet, FilesInMemory, Stage, stage_bytes};
 use crate::output::depth_file::{RawDepthFormat, stage_depth_png16, stage_raw_depth};
@@ -218,7 +221,10 @@ impl ExportFiles {
         Self {
             depth16: sibling("depth16.png"),
             depth_raw: match plan.extra_depth {
-                ExtraDepth::Raw(format) => Some(sibling(&format!("depth.{}", format.extension()))),
+                ExtraDepth::Raw(format) => Some(sibling(match format {
+                    RawDepthFormat::Pfm => "depth.pfm",
+                    RawDepthFormat::Exr => "depth.exr",
+                })),
                 _ => None,
             },
             scene: sibling("scene.txt"),
@@ -299,11 +305,12 @@ fn stage_export(
     let files = ExportFiles::of(plan);
     let range = view.depth_range;
     let map = plan.colour_map;
-    stage_image(set, &files.images.colour, &frame.colour_image())?;
+    let colour = frame.colour_image();
+    stage_image(set, &files.images.colour, &colour)?;
     let depth = frame.depth_image_mapped(range, map, DepthColourMap::FILE_NO_HIT);
     stage_image(set, &files.images.depth, &depth)?;
     if plan.side_by_side {
-        let mut both = frame.side_by_side_mapped(range, map);
+        let mut both = side_by_side(&colour, &depth);
         if plan.legend {
             both = legend::with_legend(&both, range, map);
         }
@@ -324,6 +331,18 @@ fn stage_export(
                 path: files.command.clone(),
                 source,
             })
+    })
+}
+
+/// Colour and depth images side by side in one picture (colour left), as users share them.
+fn side_by_side(colour: &RgbImage, depth: &RgbImage) -> RgbImage {
+    let width = colour.width();
+    RgbImage::from_fn(width + depth.width(), colour.height(), |x, y| {
+        if x < width {
+            *colour.get_pixel(x, y)
+        } else {
+            *depth.get_pixel(x - width, y)
+        }
     })
 }
 

@@ -1,5 +1,4 @@
 //! The export's names, plans and files.
-use super::command::shell_quote;
 use super::*;
 use crate::render::depth_map::DepthRange;
 use crate::render::{Filter, Sampler, Sampling, render_with};
@@ -57,15 +56,6 @@ fn a_folder_export_is_named_after_the_scene_and_needs_its_folder() {
         Some(PathBuf::from("shots"))
     );
     assert_eq!(export_folder(Path::new("view.png")), None);
-}
-
-#[test]
-fn shell_quoting() {
-    assert_eq!(shell_quote("a_b-1.png"), "a_b-1.png");
-    assert_eq!(shell_quote("-0.25"), "-0.25");
-    assert_eq!(shell_quote("my view.png"), "'my view.png'");
-    assert_eq!(shell_quote("it's"), r"'it'\''s'");
-    assert_eq!(shell_quote(""), "''");
 }
 
 #[test]

@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 
 use super::mark::{ImageKind, Mark, Outcome};
 use super::report::{ClassReport, Graded, exact_image, short, status};
-use crate::export::command::shell_quote;
+use crate::output::shell::shell_quote;
 
 /// `text` with the characters HTML gives a meaning escaped.
 pub(crate) fn escape(text: &str) -> String {

@@ -39,14 +39,6 @@ impl RawDepthFormat {
             _ => None,
         }
     }
-
-    /// The file extension, without the dot.
-    pub(crate) fn extension(self) -> &'static str {
-        match self {
-            Self::Pfm => "pfm",
-            Self::Exr => "exr",
-        }
-    }
 }
 
 /// Raw depth read back from a file: t per pixel, **top row first** (as [`Frame::t`]).

@@ -13,7 +13,7 @@
 //! turbo, viridis) applied to the same grey value (near = the map's bright/warm end). In colour
 //! maps, pixels with no hit are black, which neither map contains, so "nothing there" never looks
 //! like "far away". The course's grey image keeps no-hit black (docs/spec.md); the viewer can mark no-hit
-//! pixels on screen in a colour far from the map's ([`DepthColourMap::no_hit_mark`]).
+//! pixels on screen in a colour far from the map's (the viewer's settings, `src/app/settings.rs`).
 
 /// The range of t mapped onto the grey ramp.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -127,17 +127,6 @@ impl DepthColourMap {
     /// What a no-hit pixel looks like in a written file, whatever the map: black (the course's
     /// choice for grey; in the colour maps black is no value of the map).
     pub(crate) const FILE_NO_HIT: [u8; 3] = [0, 0, 0];
-
-    /// The on-screen colour of no-hit pixels when the viewer marks them: a colour far from every
-    /// colour of this map. Grey: a dark blue (the grey ramp has no colour). Turbo and viridis:
-    /// a light grey (their colours are saturated; viridis's dark blues lie within 50 of the dark
-    /// blue in 8-bit RGB, and turbo's far end is a blue too).
-    pub(crate) fn no_hit_mark(self) -> [u8; 3] {
-        match self {
-            Self::Grey => NO_HIT_MARK,
-            Self::Turbo | Self::Viridis => NO_HIT_MARK_ON_COLOURS,
-        }
-    }
 }
 
 impl std::fmt::Display for DepthColourMap {
@@ -223,13 +212,6 @@ fn grey_level(t: f64, max_t: f64, width: f64) -> Option<u8> {
 
 /// Where on colorous's turbo gradient the far end of the depth range lies.
 const TURBO_FAR_END: f64 = 0.1;
-
-/// The on-screen colour of no-hit pixels on the grey map when the viewer marks them (a dark blue
-/// that the grey ramp never produces).
-const NO_HIT_MARK: [u8; 3] = [24, 36, 96];
-
-/// ... and on the colour maps (a light grey, which neither produces).
-const NO_HIT_MARK_ON_COLOURS: [u8; 3] = [200, 200, 200];
 
 /// 16-bit quantisation by truncation, `clamp(floor(c·65535), 0, 65535)`, for 16-bit depth PNGs.
 /// NaN maps to 0.
@@ -353,20 +335,6 @@ mod tests {
         assert!(b > r);
         let [r, g, b] = DepthColourMap::Viridis.rgb_of_grey(1.0);
         assert!(r > 200 && g > 200 && b < 100);
-        // Every map's no-hit mark lies at least as far from every colour of its map (in 8-bit
-        // RGB) as the grey map's dark blue lies from the nearest grey, 54.6. The dark blue on
-        // viridis: 49.6.
-        for map in DepthColourMap::ALL {
-            let mark = map.no_hit_mark().map(f64::from);
-            let nearest = (0..=1000)
-                .map(|step| {
-                    let colour = map.rgb_of_grey(f64::from(step) / 1000.0).map(f64::from);
-                    let d: [f64; 3] = std::array::from_fn(|c| colour[c] - mark[c]);
-                    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
-                })
-                .fold(f64::INFINITY, f64::min);
-            assert!(nearest >= 54.0, "{map}: the mark is {nearest} from the map");
-        }
         for map in DepthColourMap::ALL {
             assert_eq!(DepthColourMap::from_name(map.name()), Some(map));
         }
@@ -429,14 +397,14 @@ mod tests {
             (
                 DepthRange::new(10.0, 9.0),
                 DepthColourMap::Grey,
-                NO_HIT_MARK,
+                [24, 36, 96],
             ),
             (DepthRange::new(9.5, 9.5), DepthColourMap::Grey, [0; 3]),
             (DepthRange::new(9.0, 10.0), DepthColourMap::Turbo, [0; 3]),
             (
                 DepthRange::new(9.0, 10.0),
                 DepthColourMap::Viridis,
-                NO_HIT_MARK,
+                [24, 36, 96],
             ),
         ] {
             let painter = DepthPainter::new(range, map, no_hit);

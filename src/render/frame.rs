@@ -108,20 +108,6 @@ impl Frame {
             })
             .collect()
     }
-
-    /// Colour and depth images side by side in one picture (colour left), as users share them;
-    /// the depth through a colour map (no hit black).
-    pub(crate) fn side_by_side_mapped(&self, range: DepthRange, map: DepthColourMap) -> RgbImage {
-        let colour = self.colour_image();
-        let depth = self.depth_image_mapped(range, map, DepthColourMap::FILE_NO_HIT);
-        RgbImage::from_fn(self.width_px * 2, self.height_px, |x, y| {
-            if x < self.width_px {
-                *colour.get_pixel(x, y)
-            } else {
-                *depth.get_pixel(x - self.width_px, y)
-            }
-        })
-    }
 }
 
 /// An image of `width × height` pixels given top row first.

@@ -8,7 +8,6 @@
 //! * [`sampling`]: supersampling with the course's samplers and filters.
 //! * [`depth_map`]: t → grey and colour maps, 8- and 16-bit quantisation.
 //! * [`rng`]: the seeded generator behind random sample positions.
-//! * [`worker`]: a background worker for interactive use.
 //! * [`phases`]: a frame's phases timed, to see where its time goes.
 
 pub mod depth_map;
@@ -19,7 +18,6 @@ pub mod phases;
 pub mod rng;
 pub(crate) mod sampling;
 mod view;
-pub(crate) mod worker;
 
 pub use frame::{Frame, NO_HIT};
 pub use sampling::{Filter, Sampler, Sampling, SamplingError};

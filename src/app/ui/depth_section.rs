@@ -5,8 +5,8 @@
 use egui::Ui;
 
 use crate::app::actions::Action;
+use crate::app::depth_stats::MAX_PERCENTILE_CUT;
 use crate::app::settings::DepthDisplay;
-use crate::explore::depth_stats::MAX_PERCENTILE_CUT;
 use crate::render::depth_map::DepthColourMap;
 
 /// The side panel's depth section. Returns the actions asked for.

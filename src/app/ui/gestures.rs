@@ -14,7 +14,7 @@ const SCROLL_POINTS_PER_DOUBLING: f64 = 240.0;
 /// Orbit angle per point of drag, radians (a drag across 300 points turns about 90°).
 pub const ORBIT_RAD_PER_POINT: f64 = std::f64::consts::FRAC_PI_2 / 300.0;
 
-/// Pointer input on the images, in image pixels with y up (see [`crate::explore::navigate`]).
+/// Pointer input on the images, in image pixels with y up (see [`crate::app::navigate`]).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub(crate) struct ImageGestures {
     /// Image size in physical pixels the area asks for.

@@ -4,12 +4,12 @@
 //! t and the pixel count of the bar there. The axis fits the t visible in the frame, so it follows
 //! zoom and pan; a range end outside it sits at the edge, marked with an arrow. Counts can be
 //! drawn on a logarithmic scale. The statistics themselves are in
-//! [`crate::explore::depth_stats`].
+//! [`crate::app::depth_stats`].
 
 use egui::{Align2, Color32, CursorIcon, FontId, Pos2, Rect, Sense, Stroke, Ui, Vec2};
 
-use crate::explore::depth_stats::DepthHistogram;
-use crate::output::numbers::{decimals_for_span, grouped, range_ends, with_decimals};
+use crate::app::depth_stats::DepthHistogram;
+use crate::export::numbers::{decimals_for_span, grouped, range_ends, with_decimals};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 
 /// Height of the legend strip under the bars, in points.

@@ -12,9 +12,9 @@ use super::gestures::{ImageGestures, read_gestures};
 use super::histogram::{HistogramStyle, histogram_ui};
 use super::magnifier::{Magnifier, Region};
 use super::probe_panel::probe_ui;
+use crate::app::depth_stats::DepthHistogram;
 use crate::compare::picture::heat_colour;
-use crate::explore::depth_stats::DepthHistogram;
-use crate::output::numbers::range_ends;
+use crate::export::numbers::range_ends;
 use crate::render::MAX_SIDE_PX;
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 

@@ -1,8 +1,8 @@
 //! The probe's text: the lines describing what a pixel's ray hits (numbers as
-//! [`crate::output::numbers`] writes them).
+//! [`crate::export::numbers`] writes them).
 
-use crate::explore::probe::Probe;
-use crate::output::numbers::short_number;
+use crate::app::probe::Probe;
+use crate::export::numbers::short_number;
 
 /// Three lines describing a probe: where the pixel is, what its ray hits, and where.
 pub(crate) fn describe_probe(name: &str, probe: &Probe, depth_rgb: [u8; 3]) -> Vec<String> {

@@ -298,9 +298,18 @@ pub(crate) fn quality_ui(ui: &mut Ui, quality: &mut Quality) {
         )
         .labelled_by(label.id)
         .on_hover_text("The filter's radius (sigma for Gaussian), pixels");
-        sampling.filter = sampling.filter.with_size(size);
+        sampling.filter = with_size(sampling.filter, size);
     });
 }
 
 /// Samples-per-pixel choices offered (squares, so every sampler accepts them).
 pub(crate) const SAMPLE_CHOICES: [u32; 7] = [1, 4, 9, 16, 25, 64, 256];
+
+/// The same kind of filter as `filter` with another size, pixels.
+fn with_size(filter: Filter, size: f32) -> Filter {
+    match filter {
+        Filter::Box { .. } => Filter::Box { radius: size },
+        Filter::Tent { .. } => Filter::Tent { radius: size },
+        Filter::Gaussian { .. } => Filter::Gaussian { sigma: size },
+    }
+}

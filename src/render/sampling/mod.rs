@@ -93,15 +93,6 @@ impl Filter {
         }
     }
 
-    /// The same kind of filter with another size.
-    pub(crate) fn with_size(self, size: f32) -> Self {
-        match self {
-            Self::Box { .. } => Self::Box { radius: size },
-            Self::Tent { .. } => Self::Tent { radius: size },
-            Self::Gaussian { .. } => Self::Gaussian { sigma: size },
-        }
-    }
-
     /// How far from a pixel centre samples can have weight, pixels.
     pub fn support(self) -> f32 {
         match self {
