@@ -4,7 +4,7 @@
 //! unit tests included) is longer than 500 lines and the viewer's coordinator's code stays under
 //! 300; what differs by operating system is named in
 //! `src/platform/` alone; a request's outputs are written out only where the flag table, their
-//! list and the run that makes them are.
+//! list and the run that makes them are; the dead-code lint is never silenced for the whole crate.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -369,4 +369,19 @@ fn a_requests_outputs_are_listed_in_one_place() {
         found.is_empty(),
         "outputs written out elsewhere:\n{found:#?}"
     );
+}
+
+#[test]
+fn the_dead_code_lint_is_never_silenced_for_the_whole_crate() {
+    // Viewer-only code is built only with the viewer (`app`, `export`), so the lint speaks for
+    // the build without it too.
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for file in ["src/lib.rs", "src/main.rs"] {
+        let text = std::fs::read_to_string(root.join(file)).unwrap();
+        let silenced: Vec<&str> = text
+            .lines()
+            .filter(|line| line.trim_start().starts_with("#![") && line.contains("dead_code"))
+            .collect();
+        assert!(silenced.is_empty(), "{file}: {silenced:?}");
+    }
 }
