@@ -42,6 +42,14 @@ const SKIPPED: [&str; 7] = [
     "fuzz/target",
     "fuzz/artifacts",
 ];
+/// Paths a build or a script makes (ignored by `.gitignore`): named, but absent from a clone.
+const MADE_BY_BUILDS: [&str; 4] = [
+    "tests/web/node_modules",
+    "fuzz/target",
+    "fuzz/artifacts",
+    "fuzz/coverage",
+];
+
 /// Top-level names a written repository path starts with.
 const PATH_STARTS: [&str; 13] = [
     "src/",
@@ -198,9 +206,12 @@ fn every_path_written_in_the_code_manifests_and_pages_exists() {
         for (number, line) in text.lines().enumerate() {
             for path in written_paths(line) {
                 checked += 1;
-                // A path from the root, from the page's own folder (`fuzz/…` in docs/), or an
-                // example's name as cargo takes it (`examples/generate`).
-                let found = root().join(&path).exists()
+                // A path a build makes, a path from the root, from the page's own folder
+                // (`fuzz/…` in docs/), or an example's name as cargo takes it
+                // (`examples/generate`).
+                let made = MADE_BY_BUILDS.iter().any(|made| path.starts_with(made));
+                let found = made
+                    || root().join(&path).exists()
                     || file.parent().unwrap().join(&path).exists()
                     || root().join(format!("{path}.rs")).exists();
                 if !found {
