@@ -165,7 +165,10 @@ pub(crate) fn request_view(scene: &Scene, request: &RenderRequest) -> View {
 
 /// Every output of a request with its flag, the comparison's picture last.
 fn outputs(request: &RenderRequest) -> Vec<(Flag, &Path)> {
-    let mut outputs: Vec<(Flag, &Path)> = (request.outputs.each().iter())
+    let mut outputs: Vec<(Flag, &Path)> = request
+        .outputs
+        .each()
+        .iter()
         .map(|output| (output.flag, output.path))
         .collect();
     if let Some(path) = request.compare.as_ref().and_then(|c| c.diff.as_ref()) {
@@ -417,5 +420,8 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
 /// The depth range a request names: its depth output's, else the range given with their depth
 /// image.
 fn known_depth_range(request: &RenderRequest) -> Option<DepthRange> {
-    (request.outputs.depth_range()).or_else(|| request.compare.as_ref()?.depth.as_ref()?.range)
+    request
+        .outputs
+        .depth_range()
+        .or_else(|| request.compare.as_ref()?.depth.as_ref()?.range)
 }
