@@ -14,29 +14,29 @@
 use wasm_bindgen_test::wasm_bindgen_test;
 
 use raytracer::explore::initial_depth_range;
-use raytracer::grade::assignment::course_tasks;
 use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{Frame, View, render};
 use raytracer::scene::bundled::BUNDLED_SCENES;
 use raytracer::scene::{Scene, parse_scene};
 
+#[path = "../examples/support/course.rs"]
+mod course;
+
 const RECORD: &str = include_str!("same_pixels.txt");
 
-/// The course's seven scenes (as bundled in the program) with the depth ranges of the course's
-/// command lines (`scenes/assignment1.commands`, compiled in): in WebAssembly there are no files.
-fn course_scenes() -> Vec<(String, &'static str, f64, f64)> {
-    let tasks = course_tasks(std::path::Path::new(""));
-    assert_eq!(tasks.len(), 7, "the course's seven command lines");
-    tasks
+/// The course's seven scenes as bundled in the program, with the depth ranges of the course's
+/// command lines (`course::ranges`, from `scenes/assignment1.commands` compiled in; it reads no
+/// file, so it runs in WebAssembly too).
+fn course_scenes() -> Vec<(&'static str, &'static str, f64, f64)> {
+    course::ranges()
         .iter()
-        .map(|task| {
-            let file = format!("{}.txt", task.name());
+        .map(|&(name, min_t, max_t)| {
+            let file = format!("{name}.txt");
             let (_, text) = BUNDLED_SCENES
                 .iter()
-                .find(|(name, _)| *name == file)
+                .find(|(bundled, _)| *bundled == file)
                 .unwrap();
-            let (range, _) = task.depth.as_ref().unwrap();
-            (task.name(), *text, range.min_t, range.max_t)
+            (name, *text, min_t, max_t)
         })
         .collect()
 }
