@@ -1,8 +1,16 @@
 //! The real `raytracer` binary in a temporary folder: exit statuses (0 ok, 1 scene or file
-//! error, 2 usage), one-line messages, and nothing written when a run fails.
+//! error, 2 usage), one-line messages, and nothing written when a run fails. The cases shared
+//! with the Windows `.exe` are in `tests/common/cli_cases.rs`; this file runs them against the
+//! native binary and holds the ones only it runs.
 
+#[path = "common/cli_cases.rs"]
+mod cli_cases;
 #[path = "common/command.rs"]
 mod command;
+#[path = "common/program.rs"]
+mod program;
+
+use program::Program;
 
 use command::{names_in, stderr};
 use std::path::{Path, PathBuf};
@@ -22,175 +30,51 @@ fn run(folder: &Path, arguments: &[&str]) -> Output {
         .unwrap()
 }
 
+// The cases the Windows `.exe` runs too (`tests/common/cli_cases.rs`), against this binary.
+
 #[test]
 fn renders_and_exits_zero() {
-    let folder = tempfile::tempdir().unwrap();
-    let scene = scene_path("scene1_02.txt");
-    let output = run(
-        folder.path(),
-        &[
-            "-input",
-            scene.to_str().unwrap(),
-            "-size",
-            "64",
-            "48",
-            "-output",
-            "c.png",
-            "-depth",
-            "8",
-            "12",
-            "d.tga",
-        ],
-    );
-    assert!(output.status.success(), "{}", stderr(&output));
-    assert_eq!(names_in(folder.path()), ["c.png", "d.tga"]);
-    let colour = image::open(folder.path().join("c.png")).unwrap();
-    assert_eq!((colour.width(), colour.height()), (64, 48));
+    cli_cases::renders_and_exits_zero(&Program::native());
 }
 
 #[test]
 fn either_output_alone_is_enough() {
-    let folder = tempfile::tempdir().unwrap();
-    let scene = scene_path("scene1_01.txt");
-    let output = run(
-        folder.path(),
-        &[
-            "-input",
-            scene.to_str().unwrap(),
-            "-depth",
-            "9",
-            "10",
-            "d.png",
-        ],
-    );
-    assert!(output.status.success(), "{}", stderr(&output));
-    assert_eq!(names_in(folder.path()), ["d.png"]);
+    cli_cases::either_output_alone_is_enough(&Program::native());
 }
 
 #[test]
 fn usage_errors_exit_two_with_one_line_and_write_nothing() {
-    let folder = tempfile::tempdir().unwrap();
-    let scene = scene_path("scene1_01.txt");
-    let scene = scene.to_str().unwrap();
-    let cases: &[&[&str]] = &[
-        &["-input", scene, "-size", "200", "-output", "c.png"],
-        &["-input", scene, "-size", "200", "two", "-output", "c.png"],
-        &["-input", scene, "-output", "c.bmp"],
-        &["-input", scene, "-output", "c.png", "-bogus"],
-        &["-input", scene, "-depth", "9", "x", "d.png"],
-        &["-output", "c.png"],
-    ];
-    for arguments in cases {
-        let output = run(folder.path(), arguments);
-        assert_eq!(
-            output.status.code(),
-            Some(2),
-            "{arguments:?}: {}",
-            stderr(&output)
-        );
-        let message = stderr(&output);
-        assert!(message.starts_with("raytracer: "), "{message}");
-        // One line; an unknown flag adds the usage text after a blank line.
-        if arguments.contains(&"-bogus") {
-            assert!(message.contains("\nusage:"), "{message}");
-        } else {
-            assert_eq!(message.lines().count(), 1, "{arguments:?}: {message}");
-        }
-    }
-    assert!(names_in(folder.path()).is_empty());
+    cli_cases::usage_errors_exit_two_with_one_line_and_write_nothing(&Program::native());
 }
 
 #[test]
-fn an_unwritable_output_is_refused_before_any_file_is_written() {
-    let folder = tempfile::tempdir().unwrap();
-    let scene = scene_path("scene1_01.txt");
-    std::fs::create_dir(folder.path().join("folder.png")).unwrap();
-    for depth in ["missing/d.png", "folder.png"] {
-        let output = run(
-            folder.path(),
-            &[
-                "-input",
-                scene.to_str().unwrap(),
-                "-output",
-                "c.png",
-                "-depth",
-                "9",
-                "10",
-                depth,
-            ],
-        );
-        assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
-        assert!(
-            stderr(&output).contains("cannot write"),
-            "{}",
-            stderr(&output)
-        );
-        assert_eq!(
-            names_in(folder.path()),
-            ["folder.png"],
-            "c.png must not be written"
-        );
-    }
+fn scene_and_file_errors_exit_one_with_their_line_and_column() {
+    cli_cases::scene_and_file_errors_exit_one_with_their_line_and_column(&Program::native());
 }
 
 #[test]
-fn scene_and_file_errors_exit_one() {
-    let folder = tempfile::tempdir().unwrap();
-    std::fs::write(
-        folder.path().join("broken.txt"),
-        "OrthographicCamera {\n center 0 0 10\n direction 0 0 -1\n up 0 1 0\n}\n",
-    )
-    .unwrap();
-    let output = run(folder.path(), &["-input", "broken.txt", "-output", "c.png"]);
-    assert_eq!(output.status.code(), Some(1));
-    assert_eq!(
-        stderr(&output),
-        "raytracer: broken.txt:5:1: expected 'size', found '}'\n"
-    );
+fn an_unwritable_output_leaves_every_old_file_as_it_was() {
+    cli_cases::an_unwritable_output_leaves_every_old_file_as_it_was(&Program::native());
+}
 
-    let output = run(
-        folder.path(),
-        &["-input", "missing.txt", "-output", "c.png"],
-    );
-    assert_eq!(output.status.code(), Some(1));
-    assert!(
-        stderr(&output).starts_with("raytracer: missing.txt: "),
-        "{}",
-        stderr(&output)
-    );
+#[test]
+fn an_output_that_names_the_input_or_another_output_is_refused() {
+    cli_cases::an_output_that_names_the_input_or_another_output_is_refused(&Program::native());
+}
 
-    let scene = scene_path("scene1_01.txt");
-    let output = run(
-        folder.path(),
-        &[
-            "-input",
-            scene.to_str().unwrap(),
-            "-output",
-            "no/such/dir/c.png",
-        ],
-    );
-    assert_eq!(output.status.code(), Some(1));
-    assert!(
-        stderr(&output).contains("no/such/dir/c.png: cannot write"),
-        "{}",
-        stderr(&output)
-    );
-    assert_eq!(names_in(folder.path()), ["broken.txt"]);
+#[test]
+fn comparing_exits_zero_on_the_courses_image_and_three_on_another() {
+    cli_cases::comparing_exits_zero_on_the_courses_image_and_three_on_another(&Program::native());
 }
 
 #[test]
 fn help_prints_usage_and_exits_zero() {
-    let folder = tempfile::tempdir().unwrap();
-    let output = run(folder.path(), &["-help"]);
-    assert!(output.status.success());
-    let text = String::from_utf8_lossy(&output.stdout);
-    assert!(text.contains("-depth DMIN DMAX FILE"), "{text}");
-    // The colour maps' names come from the map's own list, never a placeholder.
-    assert!(
-        text.contains("depth image colours: grey, turbo or viridis (default grey)"),
-        "{text}"
-    );
-    assert!(!text.contains('{'), "{text}");
+    cli_cases::help_prints_usage_and_exits_zero(&Program::native());
+}
+
+#[test]
+fn a_closed_pipe_ends_the_program_quietly() {
+    cli_cases::a_closed_pipe_ends_the_program_quietly(&Program::native());
 }
 
 #[test]

@@ -4,7 +4,8 @@
 //! unit tests included) is longer than 500 lines and the viewer's coordinator's code stays under
 //! 300; what differs by operating system is named in
 //! `src/platform/` alone; a request's outputs are written out only where the flag table, their
-//! list and the run that makes them are; the dead-code lint is never silenced for the whole crate.
+//! list and the run that makes them are; the dead-code lint is never silenced for the whole crate;
+//! every shared command-line case runs against both the native binary and the Windows `.exe`.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -383,5 +384,30 @@ fn the_dead_code_lint_is_never_silenced_for_the_whole_crate() {
             .filter(|line| line.trim_start().starts_with("#![") && line.contains("dead_code"))
             .collect();
         assert!(silenced.is_empty(), "{file}: {silenced:?}");
+    }
+}
+
+#[test]
+fn every_shared_command_line_case_runs_against_both_programs() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let read = |path: &str| std::fs::read_to_string(root.join(path)).unwrap();
+    let cases: Vec<String> = read("tests/common/cli_cases.rs")
+        .lines()
+        .filter_map(|line| line.strip_prefix("pub(crate) fn "))
+        .map(|rest| rest[..rest.find('(').unwrap()].to_owned())
+        .collect();
+    assert!(cases.len() >= 5, "found {} cases", cases.len());
+    for (runner, program) in [
+        ("tests/cli.rs", "Program::native()"),
+        ("tests/windows_exe.rs", "Program::windows()"),
+    ] {
+        let text = read(runner);
+        for case in &cases {
+            let call = format!("cli_cases::{case}(&{program})");
+            assert!(
+                text.contains(&call),
+                "{runner} does not run {case}: no `{call}`"
+            );
+        }
     }
 }

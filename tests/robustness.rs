@@ -419,50 +419,7 @@ fn a_killed_run_s_temporary_files_are_removed_by_the_next_run_in_that_folder() {
     assert_eq!(left, [".raytracer-1-0.old".to_owned(), live]);
 }
 
-// --- 8. Closed pipes and full devices --------------------------------------------------------
-
-#[test]
-fn a_closed_pipe_ends_the_program_quietly() {
-    let folder = tempfile::tempdir().unwrap();
-    let scene = scene_path("scene1_02.txt");
-    for arguments in [
-        vec!["-help"],
-        vec![
-            "-input",
-            scene.to_str().unwrap(),
-            "-output",
-            "c.png",
-            "-stats",
-        ],
-    ] {
-        let (reader, writer) = std::io::pipe().unwrap();
-        drop(reader);
-        let output = Command::new(binary())
-            .current_dir(folder.path())
-            .args(&arguments)
-            .stdout(writer)
-            .stderr(Stdio::piped())
-            .output()
-            .unwrap();
-        assert_one_line_error(&output);
-        assert_eq!(
-            output.status.code(),
-            Some(0),
-            "{arguments:?}: {}",
-            stderr(&output)
-        );
-        assert_eq!(stderr(&output), "", "{arguments:?}: quiet");
-    }
-    // A usage error with stderr closed: still exit 2, no panic.
-    let (reader, writer) = std::io::pipe().unwrap();
-    drop(reader);
-    let output = Command::new(binary())
-        .arg("-bogus")
-        .stderr(writer)
-        .output()
-        .unwrap();
-    assert_eq!(output.status.code(), Some(2));
-}
+// --- 8. Full devices (closed pipes: `tests/common/cli_cases.rs`) ----------------------------------------------------
 
 #[test]
 fn a_full_device_is_a_one_line_error() {

@@ -1,58 +1,38 @@
-//! The Windows build of the command line (`raytracer.exe`, x86_64-pc-windows-gnu, built without
-//! the viewer) run under Wine: the promises of the command line that make sense on Windows. The
+//! The Windows build of the command line (`raytracer.exe`, x86_64-pc-windows-gnu) run under
+//! Wine. It runs every case of `tests/common/cli_cases.rs` (the same cases `tests/cli.rs` runs
+//! against the native binary: exit statuses, one-line messages, bad scenes with line and column,
+//! outputs that name the input or each other, with Windows' spellings and case folding, and
+//! unwritable destinations, read-only files included), and the two only Windows has: the
 //! course's seven commands write the bytes the Linux binary writes (and the course's colour
-//! images); bad scenes are refused with line and column; usage errors, comparisons, an output
-//! that names the input or another output (case aside, as Windows names files); an unwritable
-//! destination or one that another program holds open leaves every old file as it was; a
-//! closed pipe ends the program quietly.
+//! images), and a file another program holds open is not replaced.
 //!
 //! `bash scripts/windows.sh test` builds the .exe and its test scaffolding and runs these with
 //! `RAYTRACER_WINDOWS_EXE` naming it; a plain `cargo test` leaves them out (ignored).
 
+#[path = "common/cli_cases.rs"]
+mod cli_cases;
 #[path = "common/command.rs"]
 mod command;
-
 #[path = "../examples/support/course.rs"]
 mod course;
+#[path = "common/program.rs"]
+mod program;
 
 use command::names_in;
+use program::{Program, windows_exe as exe, wine};
 use std::io::{BufRead as _, BufReader};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
-/// The Windows binary under test.
-fn exe() -> PathBuf {
-    let exe = std::env::var_os("RAYTRACER_WINDOWS_EXE").expect(
-        "RAYTRACER_WINDOWS_EXE names the Windows raytracer.exe (bash scripts/windows.sh test)",
-    );
-    PathBuf::from(exe)
-}
-
-/// The program's standard error without Wine's own lines: Wine itself sometimes reports a
-/// hiccup of its client (one CI run got "wine client error:1ac: sendmsg: Socket operation on
-/// non-socket" after the program's own message), which is not the program's output.
+/// The program's standard error without Wine's own lines.
 fn stderr(output: &Output) -> String {
-    command::stderr(output)
-        .split_inclusive('\n')
-        .filter(|line| !line.starts_with("wine client error:"))
-        .collect()
-}
-
-fn wine(program: &Path) -> Command {
-    let mut command = Command::new("wine");
-    command.arg(program).env("WINEDEBUG", "-all");
-    command
+    Program::windows().stderr(output)
 }
 
 /// The .exe in `folder` with `arguments` (paths relative to the folder, as a Windows user types
 /// them).
 fn run(folder: &Path, arguments: &[&str]) -> Output {
-    wine(&exe())
-        .current_dir(folder)
-        .args(arguments)
-        .stdin(Stdio::null())
-        .output()
-        .unwrap()
+    Program::windows().run(folder, arguments)
 }
 
 fn project_path(relative: &str) -> PathBuf {
@@ -108,200 +88,6 @@ fn the_course_commands_write_the_linux_binarys_bytes_and_the_courses_colours() {
         assert!(
             ours == reference,
             "scene1_0{number}: colour differs from the course's"
-        );
-    }
-}
-
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
-#[test]
-fn a_malformed_scene_is_refused_with_its_line_and_column() {
-    let folder = tempfile::tempdir().unwrap();
-    std::fs::write(
-        folder.path().join("broken.txt"),
-        "OrthographicCamera {\r\n center 0 0 10\r\n direction 0 0 -1\r\n up 0 1 0\r\n}\r\n",
-    )
-    .unwrap();
-    let output = run(folder.path(), &["-input", "broken.txt", "-output", "c.png"]);
-    assert_eq!(output.status.code(), Some(1));
-    assert_eq!(
-        stderr(&output),
-        "raytracer: broken.txt:5:1: expected 'size', found '}'\n"
-    );
-    let output = run(
-        folder.path(),
-        &["-input", "missing.txt", "-output", "c.png"],
-    );
-    assert_eq!(output.status.code(), Some(1));
-    assert!(
-        stderr(&output).starts_with("raytracer: missing.txt: "),
-        "{}",
-        stderr(&output)
-    );
-    assert_eq!(names_in(folder.path()), ["broken.txt"]);
-}
-
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
-#[test]
-fn usage_errors_exit_two_with_one_line_and_write_nothing() {
-    let folder = tempfile::tempdir().unwrap();
-    scene_in(folder.path(), "scene1_01.txt");
-    let scene = "scene1_01.txt";
-    let cases: &[&[&str]] = &[
-        &["-input", scene, "-size", "200", "-output", "c.png"],
-        &["-input", scene, "-size", "200", "two", "-output", "c.png"],
-        &["-input", scene, "-output", "c.bmp"],
-        &["-input", scene, "-depth", "9", "x", "d.png"],
-        &["-output", "c.png"],
-    ];
-    for arguments in cases {
-        let output = run(folder.path(), arguments);
-        assert_eq!(
-            output.status.code(),
-            Some(2),
-            "{arguments:?}: {}",
-            stderr(&output)
-        );
-        let message = stderr(&output);
-        assert!(message.starts_with("raytracer: "), "{message}");
-        assert_eq!(message.lines().count(), 1, "{arguments:?}: {message}");
-    }
-    assert_eq!(names_in(folder.path()), [scene]);
-}
-
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
-#[test]
-fn comparing_exits_zero_on_the_courses_image_and_three_on_another() {
-    let folder = tempfile::tempdir().unwrap();
-    scene_in(folder.path(), "scene1_02.txt");
-    for (reference, status, matched) in [("output1_02.png", 0, "yes"), ("output1_04.png", 3, "no")]
-    {
-        std::fs::copy(
-            project_path(&format!("tests/reference/{reference}")),
-            folder.path().join(reference),
-        )
-        .unwrap();
-        let output = run(
-            folder.path(),
-            &["-input", "scene1_02.txt", "-compare_output", reference],
-        );
-        assert_eq!(
-            output.status.code(),
-            Some(status),
-            "{reference}: {}",
-            stderr(&output)
-        );
-        let text = String::from_utf8_lossy(&output.stdout);
-        assert!(
-            text.lines().any(|line| line == format!("match: {matched}")),
-            "{reference}: {text}"
-        );
-    }
-}
-
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
-#[test]
-fn an_output_that_names_the_input_or_another_output_is_refused() {
-    let folder = tempfile::tempdir().unwrap();
-    scene_in(folder.path(), "scene1_02.txt");
-    std::fs::copy(
-        folder.path().join("scene1_02.txt"),
-        folder.path().join("s.tga"),
-    )
-    .unwrap();
-    std::fs::hard_link(folder.path().join("s.tga"), folder.path().join("hard.png")).unwrap();
-    std::fs::create_dir(folder.path().join("sub")).unwrap();
-    let original = std::fs::read(folder.path().join("s.tga")).unwrap();
-    for arguments in [
-        vec!["-input", "s.tga", "-output", ".\\s.tga"],
-        vec!["-input", "s.tga", "-output", "S.TGA"],
-        vec!["-input", "s.tga", "-depth", "8", "12", "hard.png"],
-        vec![
-            "-input",
-            "scene1_02.txt",
-            "-output",
-            "out.tga",
-            "-depth",
-            "8",
-            "12",
-            "sub\\..\\out.tga",
-        ],
-        vec![
-            "-input",
-            "scene1_02.txt",
-            "-output",
-            "out.tga",
-            "-depth",
-            "8",
-            "12",
-            "OUT.tga",
-        ],
-    ] {
-        let output = run(folder.path(), &arguments);
-        assert_eq!(
-            output.status.code(),
-            Some(2),
-            "{arguments:?}: {}",
-            stderr(&output)
-        );
-        assert!(
-            stderr(&output).contains("same file"),
-            "{arguments:?}: {}",
-            stderr(&output)
-        );
-        assert_eq!(
-            std::fs::read(folder.path().join("s.tga")).unwrap(),
-            original
-        );
-    }
-    assert_eq!(
-        names_in(folder.path()),
-        ["hard.png", "s.tga", "scene1_02.txt", "sub"]
-    );
-}
-
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
-#[test]
-fn an_unwritable_destination_leaves_every_old_file_as_it_was() {
-    let folder = tempfile::tempdir().unwrap();
-    scene_in(folder.path(), "scene1_01.txt");
-    std::fs::create_dir(folder.path().join("folder.png")).unwrap();
-    std::fs::write(folder.path().join("c.png"), b"old colour").unwrap();
-    // A read-only file: Windows does not replace it.
-    let read_only = folder.path().join("read-only.png");
-    std::fs::write(&read_only, b"old depth").unwrap();
-    let mut permissions = std::fs::metadata(&read_only).unwrap().permissions();
-    permissions.set_readonly(true);
-    std::fs::set_permissions(&read_only, permissions).unwrap();
-    for depth in ["missing\\d.png", "folder.png", "read-only.png"] {
-        let output = run(
-            folder.path(),
-            &[
-                "-input",
-                "scene1_01.txt",
-                "-output",
-                "c.png",
-                "-depth",
-                "9",
-                "10",
-                depth,
-            ],
-        );
-        assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
-        let message = stderr(&output);
-        assert!(
-            message.starts_with(&format!("raytracer: {depth}: cannot write")),
-            "{message}"
-        );
-        assert_eq!(message.lines().count(), 1, "{message}");
-        assert_eq!(
-            std::fs::read(folder.path().join("c.png")).unwrap(),
-            b"old colour",
-            "{depth}"
-        );
-        assert_eq!(std::fs::read(&read_only).unwrap(), b"old depth");
-        assert_eq!(
-            names_in(folder.path()),
-            ["c.png", "folder.png", "read-only.png", "scene1_01.txt"]
         );
     }
 }
@@ -374,31 +160,58 @@ fn a_file_another_program_holds_open_is_not_replaced_and_the_error_says_why() {
     }
 }
 
+// The cases the native binary runs too (`tests/common/cli_cases.rs`), against the `.exe`.
+
+#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
+fn renders_and_exits_zero() {
+    cli_cases::renders_and_exits_zero(&Program::windows());
+}
+
+#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
+fn either_output_alone_is_enough() {
+    cli_cases::either_output_alone_is_enough(&Program::windows());
+}
+
+#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
+fn usage_errors_exit_two_with_one_line_and_write_nothing() {
+    cli_cases::usage_errors_exit_two_with_one_line_and_write_nothing(&Program::windows());
+}
+
+#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
+fn scene_and_file_errors_exit_one_with_their_line_and_column() {
+    cli_cases::scene_and_file_errors_exit_one_with_their_line_and_column(&Program::windows());
+}
+
+#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
+fn an_unwritable_output_leaves_every_old_file_as_it_was() {
+    cli_cases::an_unwritable_output_leaves_every_old_file_as_it_was(&Program::windows());
+}
+
+#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
+fn an_output_that_names_the_input_or_another_output_is_refused() {
+    cli_cases::an_output_that_names_the_input_or_another_output_is_refused(&Program::windows());
+}
+
+#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
+fn comparing_exits_zero_on_the_courses_image_and_three_on_another() {
+    cli_cases::comparing_exits_zero_on_the_courses_image_and_three_on_another(&Program::windows());
+}
+
+#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[test]
+fn help_prints_usage_and_exits_zero() {
+    cli_cases::help_prints_usage_and_exits_zero(&Program::windows());
+}
+
 #[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
 #[test]
 fn a_closed_pipe_ends_the_program_quietly() {
-    let folder = tempfile::tempdir().unwrap();
-    scene_in(folder.path(), "scene1_02.txt");
-    for arguments in [
-        vec!["-help"],
-        vec!["-input", "scene1_02.txt", "-output", "c.png", "-stats"],
-    ] {
-        let (reader, writer) = std::io::pipe().unwrap();
-        drop(reader);
-        let output = wine(&exe())
-            .current_dir(folder.path())
-            .args(&arguments)
-            .stdout(writer)
-            .stderr(Stdio::piped())
-            .output()
-            .unwrap();
-        assert_eq!(
-            output.status.code(),
-            Some(0),
-            "{arguments:?}: {}",
-            stderr(&output)
-        );
-        assert_eq!(stderr(&output), "", "{arguments:?}: quiet");
-    }
-    assert!(folder.path().join("c.png").is_file(), "the render went on");
+    cli_cases::a_closed_pipe_ends_the_program_quietly(&Program::windows());
 }
