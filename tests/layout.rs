@@ -5,10 +5,19 @@
 //! 300; what differs by operating system is named in
 //! `src/platform/` alone; a request's outputs are written out only where the flag table, their
 //! list and the run that makes them are; the dead-code lint is never silenced for the whole crate;
-//! every shared command-line case runs against both the native binary and the Windows `.exe`.
+//! every shared command-line case runs against both the native binary and the Windows `.exe`;
+//! inside `src/app` and `src/render` no file imports an item from a module above it (a module's
+//! `mod.rs` declares and re-exports; its children import each other by their own names).
 
+#[path = "common/source_tree.rs"]
+mod source_tree;
+
+use source_tree::{
+    crate_references, expanded_paths, files_under, module_path, source_files, used_modules,
+    without_tests,
+};
 use std::collections::{BTreeMap, BTreeSet};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// The layers, bottom first. A module may use its own layer and the layers before it; `oracle`
 /// (test and study support) may use the core, and nothing but tests may use it.
@@ -16,104 +25,6 @@ const LAYERS: [&str; 12] = [
     "platform", "geometry", "scene", "render", "oracle", "explore", "output", "compare", "cli",
     "export", "grade", "app",
 ];
-
-fn rust_files(folder: &Path, found: &mut Vec<PathBuf>) {
-    for entry in std::fs::read_dir(folder).unwrap() {
-        let path = entry.unwrap().path();
-        if path.is_dir() {
-            rust_files(&path, found);
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            found.push(path);
-        }
-    }
-}
-
-fn source_files() -> Vec<PathBuf> {
-    files_under(&["src"])
-}
-
-/// The Rust files under these folders of the project.
-fn files_under(folders: &[&str]) -> Vec<PathBuf> {
-    let mut files = Vec::new();
-    for folder in folders {
-        let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join(folder);
-        if folder.is_dir() {
-            rust_files(&folder, &mut files);
-        }
-    }
-    files.sort();
-    files
-}
-
-/// `src/render/disc/raster.rs` → ["render", "disc", "raster"]; `mod.rs` names its folder.
-fn module_path(file: &Path) -> Vec<String> {
-    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
-    let relative = file.strip_prefix(&src).unwrap().with_extension("");
-    let mut parts: Vec<String> = relative
-        .iter()
-        .map(|p| p.to_string_lossy().into_owned())
-        .collect();
-    if parts.last().is_some_and(|last| last == "mod") {
-        parts.pop();
-    }
-    parts
-}
-
-/// The code of a file without its unit tests (a `#[cfg(test)] mod tests { … }` block at the
-/// end). A `mod tests;` declaration (the tests in a file of their own) cuts nothing: what
-/// follows it is code.
-fn without_tests(text: &str) -> &str {
-    text.find("#[cfg(test)]\nmod tests {")
-        .map_or(text, |start| &text[..start])
-}
-
-/// The modules a file refers to as `crate::a::b…`, as far as `depth` segments, grouped imports
-/// (`crate::{a::b, c}`) included.
-fn crate_references(text: &str, depth: usize) -> BTreeSet<Vec<String>> {
-    let mut found = BTreeSet::new();
-    for (start, _) in text.match_indices("crate::") {
-        let rest = &text[start + "crate::".len()..];
-        // A group: each of its top-level items is a path from the crate's root.
-        let paths: Vec<String> = if let Some(group) = rest.strip_prefix('{') {
-            let mut items = vec![String::new()];
-            let mut nesting = 0;
-            for c in group.chars() {
-                match c {
-                    '{' => nesting += 1,
-                    '}' if nesting == 0 => break,
-                    '}' => nesting -= 1,
-                    ',' if nesting == 0 => items.push(String::new()),
-                    _ => {}
-                }
-                if let Some(item) = items.last_mut() {
-                    item.push(c);
-                }
-            }
-            items
-                .iter()
-                .map(|item| item.trim_start_matches([',', ' ', '\n', '\t']).to_owned())
-                .collect()
-        } else {
-            vec![rest.to_owned()]
-        };
-        for path in paths {
-            let path: String = path
-                .chars()
-                .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':')
-                .collect();
-            let parts: Vec<String> = path
-                .split("::")
-                .filter(|p| !p.is_empty())
-                .take(depth)
-                .map(str::to_owned)
-                .collect();
-            if !parts.is_empty() {
-                found.insert(parts);
-            }
-        }
-    }
-    found
-}
 
 #[test]
 fn the_checks_read_test_declarations_and_grouped_imports() {
@@ -165,50 +76,6 @@ fn imports_run_downward_through_the_layers() {
         upward.is_empty(),
         "imports against the layers:\n{upward:#?}"
     );
-}
-
-/// The modules a file in module `own` uses: `crate::…` and `super::…` paths, each cut to the
-/// longest prefix that is a module of the tree.
-fn used_modules(
-    text: &str,
-    own: &[String],
-    modules: &BTreeSet<Vec<String>>,
-) -> BTreeSet<Vec<String>> {
-    let mut used = BTreeSet::new();
-    for (start, _) in text
-        .match_indices("crate::")
-        .chain(text.match_indices("super::"))
-    {
-        let before = text[..start].chars().last();
-        if before.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == ':') {
-            continue; // part of a longer path (super::super::, raytracer::crate…)
-        }
-        let path: String = text[start..]
-            .chars()
-            .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':')
-            .collect();
-        let mut parts: Vec<String> = Vec::new();
-        for (index, part) in path.split("::").filter(|p| !p.is_empty()).enumerate() {
-            match part {
-                "crate" if index == 0 => parts.clear(),
-                "super" if index == 0 || parts.len() < own.len() => {
-                    if parts.is_empty() {
-                        parts = own.to_vec();
-                    }
-                    // A file's `super` is its parent module.
-                    parts.pop();
-                }
-                _ => parts.push(part.to_owned()),
-            }
-        }
-        while !parts.is_empty() && !modules.contains(&parts) {
-            parts.pop();
-        }
-        if !parts.is_empty() {
-            used.insert(parts);
-        }
-    }
-    used
 }
 
 #[test]
@@ -410,4 +277,96 @@ fn every_shared_command_line_case_runs_against_both_programs() {
             );
         }
     }
+}
+
+/// The files that still reach up to the viewer's coordinator, `ViewerApp` in `src/app/mod.rs`:
+/// its `impl` blocks spread over the features, and the two seams that open it. The list may only
+/// shrink: a file that no longer needs it must leave it. When the coordinator's behaviour is in
+/// one file of its own, the list is empty.
+const STILL_ON_THE_COORDINATOR: [&str; 13] = [
+    "actions.rs",
+    "compare/mod.rs",
+    "confirm.rs",
+    "course_files.rs",
+    "input.rs",
+    "inspect.rs",
+    "layout.rs",
+    "pixel_trace.rs",
+    "render_requests.rs",
+    "scene_loading.rs",
+    "viewing.rs",
+    "web.rs",
+    "window.rs",
+];
+
+#[test]
+fn no_file_in_the_viewer_or_the_renderer_imports_from_a_module_above_it() {
+    let files = source_files();
+    let modules: BTreeSet<Vec<String>> = files.iter().map(|f| module_path(f)).collect();
+    let mut upward = Vec::new();
+    let mut reaching_up = BTreeSet::new();
+    for file in &files {
+        let own = module_path(file);
+        let in_scope = matches!(own.first().map(String::as_str), Some("app" | "render"));
+        // A unit-test file (`*_tests.rs`) is its module's `tests`, not a module of the tree.
+        if !in_scope || own.last().is_some_and(|name| name.ends_with("_tests")) {
+            continue;
+        }
+        let text = std::fs::read_to_string(file).unwrap();
+        let code = without_tests(&text);
+        for (start, word) in code
+            .match_indices("crate::")
+            .chain(code.match_indices("super::"))
+        {
+            let before = code[..start].chars().last();
+            if before.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == ':') {
+                continue;
+            }
+            let mut base = Vec::new();
+            if word == "super::" {
+                base = own.clone();
+                base.pop();
+            }
+            for path in expanded_paths(&base, &code[start + word.len()..]) {
+                // The longest prefix that is a module; an item follows it.
+                let mut module = path.clone();
+                while !module.is_empty() && !modules.contains(&module) {
+                    module.pop();
+                }
+                let names_an_item = path.len() > module.len();
+                let above =
+                    !module.is_empty() && module.len() < own.len() && own.starts_with(&module);
+                let listed = path == ["app", "ViewerApp"]
+                    && STILL_ON_THE_COORDINATOR
+                        .iter()
+                        .any(|name| file.ends_with(format!("src/app/{name}")));
+                if names_an_item && above && !listed {
+                    upward.push(format!("{}: {}", file.display(), path.join("::")));
+                }
+                if listed {
+                    reaching_up.insert(file.clone());
+                }
+            }
+        }
+    }
+    assert!(
+        upward.is_empty(),
+        "imports of an item from a module above the file:\n{upward:#?}"
+    );
+    for name in STILL_ON_THE_COORDINATOR {
+        assert!(
+            reaching_up
+                .iter()
+                .any(|file| file.ends_with(format!("src/app/{name}"))),
+            "src/app/{name} no longer reaches up to ViewerApp: take it off the list"
+        );
+    }
+}
+
+#[test]
+fn the_upward_import_check_reads_groups_and_globs() {
+    let none: [String; 0] = [];
+    let paths = expanded_paths(&none, "a::{b, c::{d, e}, f::*};");
+    let names: Vec<String> = paths.iter().map(|p| p.join("::")).collect();
+    assert_eq!(names, ["a::b", "a::c::d", "a::c::e", "a::f::*"]);
 }

@@ -17,7 +17,7 @@
 //! Loading a scene file is bounded separately: the file's bytes and the spheres parsed from them.
 //! So is comparing the user's images with the exact ones ([`compare_bound_bytes`]).
 
-use super::Sampling;
+use super::sampling::Sampling;
 use super::sampling::working_bytes;
 
 /// The program's own memory (code, libraries, thread stacks, allocator), generously.
@@ -72,9 +72,9 @@ pub const HITS_BYTES_PER_PIXEL: u64 = 13;
 /// (3), twice (a thread that starts another strip while its own waits takes fresh ones).
 pub const STRIP_BYTES_PER_PIXEL: u64 = 30;
 
-/// The bound, in bytes, of the streamed command ([`super::render_strips`]) for a
+/// The bound, in bytes, of the streamed command (`render_strips`) for a
 /// `width_px × height_px` picture of `sphere_count` spheres on `threads` threads; `whole_frame`
-/// when the frame is dense and drawn whole first ([`super::renders_strip_by_strip`] says).
+/// when the frame is dense and drawn whole first (`renders_strip_by_strip` says).
 pub fn streamed_bound_bytes(
     width_px: u32,
     height_px: u32,

@@ -10,7 +10,7 @@ use crate::scene::OrthographicCamera;
 /// Largest accepted image side, in pixels.
 pub const MAX_SIDE_PX: u32 = 16_384;
 
-/// Largest accepted pixel count of one image: 64 Mpx. A [`crate::render::Frame`] costs 24 bytes a
+/// Largest accepted pixel count of one image: 64 Mpx. A frame costs 24 bytes a
 /// pixel (colour, t, sphere index), so this bounds a frame at about 1.5 GiB.
 pub const MAX_PIXELS: u64 = 64 * 1024 * 1024;
 

@@ -50,10 +50,14 @@ impl Program {
     /// hiccup of its client (one CI run got "wine client error:1ac: sendmsg: Socket operation
     /// on non-socket" after the program's own message), which is not the program's output.
     pub(crate) fn stderr(&self, output: &Output) -> String {
-        String::from_utf8_lossy(&output.stderr)
-            .split_inclusive('\n')
-            .filter(|line| !line.starts_with("wine client error:"))
-            .collect()
+        let text = String::from_utf8_lossy(&output.stderr);
+        match self {
+            Self::Native => text.into_owned(),
+            Self::Windows(_) => text
+                .split_inclusive('\n')
+                .filter(|line| !line.starts_with("wine client error:"))
+                .collect(),
+        }
     }
 
     /// A relative path from its parts, spelled with the platform's separator.

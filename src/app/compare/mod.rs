@@ -21,7 +21,8 @@ use egui::{ColorImage, TextureHandle, TextureOptions};
 use image::RgbImage;
 
 pub use pixels::{
-    CompareSource, ComparisonPixels, QualityFigures, RangeSource, compare_file, compare_quality,
+    CompareSource, ComparisonPixels, ImageKind, QualityFigures, RangeSource, compare_file,
+    compare_quality,
 };
 pub(crate) use pixels::{OFF_LEVELS, REFERENCE_SAMPLES};
 
@@ -34,26 +35,6 @@ use crate::compare::their_image::{TheirImageError, decode_their_image, read_thei
 use crate::explore::trace::PixelTrace;
 use crate::render::View;
 use crate::render::depth_map::DepthRange;
-
-/// Which of the two images is compared.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum ImageKind {
-    /// The colour image.
-    #[default]
-    Colour,
-    /// The depth image (grey, the view's depth range).
-    Depth,
-}
-
-impl ImageKind {
-    /// The index of the image on screen (0 colour, 1 depth).
-    pub(crate) fn index(self) -> usize {
-        match self {
-            Self::Colour => 0,
-            Self::Depth => 1,
-        }
-    }
-}
 
 /// What the compared image shows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

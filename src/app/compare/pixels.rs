@@ -7,13 +7,32 @@ use std::path::{Path, PathBuf};
 use image::RgbImage;
 use web_time::Instant;
 
-use super::ImageKind;
 use crate::compare::judge::{NoDepthRange, explained_by_each, judge};
 use crate::compare::{Deviation, Difference, Theirs};
 use crate::render::depth_map::DepthRange;
 use crate::render::sampling::Sampling;
 use crate::render::{Quality, View, render_with};
 use crate::scene::Scene;
+
+/// Which of the two images is compared.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ImageKind {
+    /// The colour image.
+    #[default]
+    Colour,
+    /// The depth image (grey, the view's depth range).
+    Depth,
+}
+
+impl ImageKind {
+    /// The index of the image on screen (0 colour, 1 depth).
+    pub(crate) fn index(self) -> usize {
+        match self {
+            Self::Colour => 0,
+            Self::Depth => 1,
+        }
+    }
+}
 
 /// Samples per pixel of the high-sample reference an anti-aliased picture is measured against.
 pub(crate) const REFERENCE_SAMPLES: u32 = 256;

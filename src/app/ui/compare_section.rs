@@ -92,7 +92,7 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
     };
     let mut pointed = None;
     let Some(current) = &state.current else {
-        super::hint(
+        super::hint::hint(
             ui,
             "their image is compared with the exact render of the scene's own camera at its \
              size: the view is held there while it is open",

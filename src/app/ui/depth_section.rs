@@ -58,6 +58,6 @@ pub(crate) fn depth_tools_ui(ui: &mut Ui, display: &mut DepthDisplay) -> Vec<Act
             actions.push(Action::ResetDepth);
         }
     });
-    super::hint(ui, "drag the lines on the histogram to set the range");
+    super::hint::hint(ui, "drag the lines on the histogram to set the range");
     actions
 }

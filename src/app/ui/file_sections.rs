@@ -156,7 +156,7 @@ pub(crate) fn export_ui(
         Some("tga") => settings.format = ExportFormat::Tga,
         _ => {}
     }
-    super::hint(
+    super::hint::hint(
         ui,
         "writes <name>_colour, <name>_depth (in the colour map on screen), <name>_both, \
          <name>_scene.txt (the current camera) and <name>_command.sh (the command line \
@@ -176,7 +176,7 @@ pub(crate) fn export_ui(
     if let Some(note) = dialog_note {
         ui.label(
             RichText::new(note)
-                .size(super::HINT_POINTS)
+                .size(super::hint::HINT_POINTS)
                 .color(ui.visuals().warn_fg_color),
         );
     }

@@ -1,5 +1,5 @@
 //! The viewer's drawing: each part a `*_ui` function over plain state that reports what the user
-//! asked for; the coordinator ([`super::ViewerApp`]) applies it.
+//! asked for; the coordinator (`ViewerApp`) applies it.
 //!
 //! * [`toolbar`]: the buttons along the top
 //! * [`view_controls`]: camera and depth-range sliders, the quality section
@@ -13,12 +13,14 @@
 //! * [`views_section`]: named views; [`help`]: the shortcuts overlay
 //! * [`probe_text`]: what the probe says about a pixel
 //! * [`status_bar`]: the status bar and the error banner
+//! * [`hint`]: the small text under a control
 
 pub(crate) mod compare_section;
 pub(crate) mod depth_section;
 pub(crate) mod file_sections;
 pub mod gestures;
 pub mod help;
+pub(crate) mod hint;
 pub mod histogram;
 pub mod images;
 pub mod magnifier;
@@ -28,19 +30,3 @@ pub(crate) mod status_bar;
 pub(crate) mod toolbar;
 pub mod view_controls;
 pub(crate) mod views_section;
-
-/// The size of hint text (what a control does, what to try), points: egui's small text (9 points)
-/// was hard to read.
-pub(crate) const HINT_POINTS: f32 = 12.0;
-
-/// A hint under a control: italic, at [`HINT_POINTS`], in the normal text colour (egui's weak
-/// colour had too little contrast against the panel).
-pub(crate) fn hint(ui: &mut egui::Ui, text: &str) -> egui::Response {
-    let colour = ui.visuals().text_color().gamma_multiply(0.85);
-    ui.label(
-        egui::RichText::new(text)
-            .italics()
-            .size(HINT_POINTS)
-            .color(colour),
-    )
-}

@@ -63,7 +63,7 @@ pub(crate) fn probe_ui(ui: &mut Ui, lines: &[String], has_pin: bool, height: f32
     // under the pointer, and the lines looked cut).
     text.spacing_mut().scroll = egui::style::ScrollStyle::solid();
     if lines.is_empty() {
-        super::hint(
+        super::hint::hint(
             &mut text,
             "hover an image to probe a pixel; click to pin it",
         );

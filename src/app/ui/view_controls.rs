@@ -4,7 +4,7 @@
 use egui::Ui;
 
 use crate::explore::{Reach, SIZE_REACH_FACTOR, SliderRanges, window_around};
-use crate::render::sampling::MAX_FILTER_SIZE;
+use crate::render::sampling::settings::MAX_FILTER_SIZE;
 use crate::render::{Filter, Quality, Sampler, Sampling, View};
 
 fn widened(range: &std::ops::RangeInclusive<f64>, value: f64) -> std::ops::RangeInclusive<f64> {

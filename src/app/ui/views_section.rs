@@ -16,7 +16,7 @@ pub(crate) fn views_ui(
     let mut actions = Vec::new();
     ui.heading("Named views");
     if !has_file {
-        super::hint(ui, "views are kept per scene file: open one to name views");
+        super::hint::hint(ui, "views are kept per scene file: open one to name views");
         return actions;
     }
     ui.horizontal(|ui| {

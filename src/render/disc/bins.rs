@@ -4,7 +4,7 @@
 
 use rayon::prelude::*;
 
-use super::Disc;
+use super::screen_disc::Disc;
 use crate::geometry::camera::PixelGrid;
 
 /// Rows per band: the unit of binning and of parallel work.

@@ -1,8 +1,8 @@
 //! What the rasterisers share besides the hit test ([`super::hit`]): where a disc's chord
 //! lies on a row, and a band's discs gathered once. All in f64.
 
-use super::Disc;
 use super::bins::column_span;
+use super::screen_disc::Disc;
 use crate::geometry::camera::PixelGrid;
 
 /// One row's outputs.

@@ -5,7 +5,7 @@
 
 use rayon::prelude::*;
 
-use super::Disc;
+use super::screen_disc::Disc;
 use crate::geometry::camera::PixelGrid;
 
 /// The larger of `far` and `t` (NaN: `far`).

@@ -12,10 +12,10 @@ use std::ops::Range;
 
 use rayon::prelude::*;
 
-use super::Disc;
 use super::coarse_depth::{Cells, CoarseDepth};
 use super::depth_sort::{Kept, KeptPositions, sort_place_and_bin};
 use super::placed::PlacedPart;
+use super::screen_disc::Disc;
 use crate::geometry::camera::PixelGrid;
 
 /// Slices of the depth range the front-to-back order sorts discs into.

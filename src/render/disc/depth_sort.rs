@@ -5,8 +5,8 @@ use std::ops::Range;
 
 use rayon::prelude::*;
 
-use super::Disc;
 use super::placed::PlacedPart;
+use super::screen_disc::Disc;
 use crate::geometry::camera::PixelGrid;
 
 /// One chunk's discs of a pass: each disc's slice, the discs, and the positions of those kept.

@@ -8,7 +8,7 @@ use std::ops::{Add, Mul, Sub};
 
 use wide::f64x4;
 
-use super::Disc;
+use super::screen_disc::Disc;
 
 /// Numbers the test runs on: one pixel (`f64`, its masks `bool`) or four (`f64x4`, its masks
 /// lanes of all ones or all zeros).
@@ -159,6 +159,30 @@ pub(super) fn take_ties(
             t_new[lane] = t_of(lane);
         }
     }
+}
+
+impl Disc {
+    /// t of the front surface at screen (u, v), or `None` outside the disc. Tangent points hit.
+    #[inline]
+    pub fn hit_t(&self, u: f64, v: f64) -> Option<f64> {
+        let (du, dv) = (u - self.u, v - self.v);
+        let hit = test(self, du * du, dv * dv, f64::INFINITY);
+        hit.inside.then_some(hit.t)
+    }
+}
+
+/// The visible hit at screen (u, v) among `discs`: (t, sphere), smallest t, first in file order
+/// on a tie.
+pub fn nearest_hit(discs: &[Disc], u: f64, v: f64) -> Option<(f64, u32)> {
+    let mut best: Option<(f64, u32)> = None;
+    for disc in discs {
+        if let Some(t) = disc.hit_t(u, v)
+            && best.is_none_or(|(best_t, _)| t < best_t)
+        {
+            best = Some((t, disc.sphere));
+        }
+    }
+    best
 }
 
 #[cfg(test)]

@@ -5,8 +5,8 @@
 
 use rayon::prelude::*;
 
-use super::Disc;
 use super::bins::{ChunkBands, band_count, bin_chunk_len, bin_part, column_span, rows_of};
+use super::screen_disc::Disc;
 use crate::geometry::camera::PixelGrid;
 
 /// A disc placed on the image: its nearest t and the image rows (top first) and columns its

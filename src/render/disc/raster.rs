@@ -4,17 +4,18 @@
 
 use rayon::prelude::*;
 
-use super::Disc;
 use super::bins::{BAND_ROWS, bin_discs};
 use super::chord::{BandDisc, Chord, Columns, RowOut, chord_on_row, gather_band_discs};
 use super::coarse_depth::CoarseDepth;
 use super::depth_order::{Depths, Plan};
 use super::hit::test;
+use super::screen_disc::Disc;
 use super::shade::frame_from_hits;
 use super::tiles::{rasterise_discs_in_tiles, rasterise_placed_in_tiles};
 use crate::geometry::camera::PixelGrid;
+use crate::render::frame::{Frame, NO_HIT};
 use crate::render::phases::time;
-use crate::render::{Frame, NO_HIT, View};
+use crate::render::view::View;
 use crate::scene::Scene;
 
 /// Fills one band (rows `first_row..first_row + rows`, top first) of t and sphere indices;

@@ -5,14 +5,15 @@
 use rayon::prelude::*;
 
 use crate::render::depth_map::quantize_f32;
-use crate::render::{Frame, View};
+use crate::render::frame::Frame;
+use crate::render::view::View;
 use crate::scene::{Scene, Sphere};
 
 /// Pixels per sphere from which a frame colours its spheres once, in a table, rather than
 /// reading each pixel's sphere.
 const MIN_PIXELS_PER_SPHERE_FOR_TABLE: usize = 4;
 
-/// The 8-bit colour of every sphere index a pixel can hold ([`crate::render::NO_HIT`]: the
+/// The 8-bit colour of every sphere index a pixel can hold ([`NO_HIT`](crate::render::frame::NO_HIT): the
 /// background).
 pub(crate) struct Palette<'a> {
     spheres: &'a [Sphere],
@@ -58,7 +59,7 @@ impl<'a> Palette<'a> {
             .unwrap_or(self.default_rgb)
     }
 
-    /// The colour of a pixel whose visible sphere is `sphere` ([`crate::render::NO_HIT`]: none).
+    /// The colour of a pixel whose visible sphere is `sphere` ([`NO_HIT`](crate::render::frame::NO_HIT): none).
     /// Whether the table is there is the same for every pixel, so that branch is always
     /// predicted.
     #[inline]

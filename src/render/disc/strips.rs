@@ -6,7 +6,7 @@
 //! a frame holds 15 bytes per pixel and each 8-bit image 3 more, 84 MB at 2000×2000. A strip's
 //! buffers are a few hundred kilobytes, one set per thread, reused from strip to strip. The
 //! strips go in parallel and in no fixed order, each drawn and handed on by the same thread while
-//! it is in that thread's cache. The pixels are the ones [`super::rasterise_frame`] draws — each
+//! it is in that thread's cache. The pixels are the ones [`rasterise_frame`](super::raster::rasterise_frame) draws — each
 //! band is the same band, drawn by the same code — so the files are the same bytes.
 //!
 //! Frames drawn in file order (the course scenes, sparse scenes) go strip by strip. Dense
@@ -17,12 +17,12 @@ use std::cell::RefCell;
 
 use rayon::prelude::*;
 
-use super::Disc;
 use super::bins::{BAND_ROWS, bin_discs};
 use super::depth_order::{Depths, Plan};
 use super::raster::{FIRST_PASS_LAYERS, rasterise_band, rasterise_hits};
+use super::screen_disc::Disc;
 use crate::geometry::camera::PixelGrid;
-use crate::render::NO_HIT;
+use crate::render::frame::NO_HIT;
 
 /// Rows per strip: four bands (of 2, 4 and 8 bands, none was measurably quicker for the course
 /// command at 2000×2000).

@@ -19,11 +19,11 @@
 use rayon::prelude::*;
 use wide::{f64x4, u32x4};
 
-use super::Disc;
 use super::bins::BAND_ROWS;
 use super::chord::Columns;
 use super::hit::{take_ties, takes_pixel, test};
 use super::placed::{Placed, PlacedPart, place_in_parts};
+use super::screen_disc::Disc;
 use crate::geometry::camera::PixelGrid;
 use crate::render::phases::time;
 

@@ -8,7 +8,7 @@
 use glam::Vec3;
 use rayon::prelude::*;
 
-use super::{Filter, Sampling};
+use super::settings::{Filter, Sampling};
 use crate::geometry::camera::PixelGrid;
 use crate::render::depth_map::{DepthRange, quantize_f32};
 use crate::render::disc::{Disc, nearest_hit, pixel_span};

@@ -1,0 +1,165 @@
+//! Reading the source tree for the structure checks (`tests/layout.rs`): the Rust files under a
+//! folder, a file's module path, its code without its unit tests, and the module paths its
+//! imports and paths name, groups and globs expanded.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+
+pub(crate) fn rust_files(folder: &Path, found: &mut Vec<PathBuf>) {
+    for entry in std::fs::read_dir(folder).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            rust_files(&path, found);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            found.push(path);
+        }
+    }
+}
+
+pub(crate) fn source_files() -> Vec<PathBuf> {
+    files_under(&["src"])
+}
+
+/// The Rust files under these folders of the project.
+pub(crate) fn files_under(folders: &[&str]) -> Vec<PathBuf> {
+    let mut files = Vec::new();
+    for folder in folders {
+        let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join(folder);
+        if folder.is_dir() {
+            rust_files(&folder, &mut files);
+        }
+    }
+    files.sort();
+    files
+}
+
+/// `src/render/disc/raster.rs` → ["render", "disc", "raster"]; `mod.rs` names its folder.
+pub(crate) fn module_path(file: &Path) -> Vec<String> {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let relative = file.strip_prefix(&src).unwrap().with_extension("");
+    let mut parts: Vec<String> = relative
+        .iter()
+        .map(|p| p.to_string_lossy().into_owned())
+        .collect();
+    if parts.last().is_some_and(|last| last == "mod") {
+        parts.pop();
+    }
+    parts
+}
+
+/// The code of a file without its unit tests (a `#[cfg(test)] mod tests { … }` block at the
+/// end). A `mod tests;` declaration (the tests in a file of their own) cuts nothing: what
+/// follows it is code.
+pub(crate) fn without_tests(text: &str) -> &str {
+    text.find("#[cfg(test)]\nmod tests {")
+        .map_or(text, |start| &text[..start])
+}
+
+/// The modules a file refers to as `crate::a::b…`, as far as `depth` segments, grouped imports
+/// (`crate::{a::b, c}`) included.
+pub(crate) fn crate_references(text: &str, depth: usize) -> BTreeSet<Vec<String>> {
+    let mut found = BTreeSet::new();
+    for (start, _) in text.match_indices("crate::") {
+        for mut parts in expanded_paths(&[], &text[start + "crate::".len()..]) {
+            parts.truncate(depth);
+            if !parts.is_empty() {
+                found.insert(parts);
+            }
+        }
+    }
+    found
+}
+
+/// The modules a file in module `own` uses: `crate::…` and `super::…` paths, each cut to the
+/// longest prefix that is a module of the tree.
+pub(crate) fn used_modules(
+    text: &str,
+    own: &[String],
+    modules: &BTreeSet<Vec<String>>,
+) -> BTreeSet<Vec<String>> {
+    let mut used = BTreeSet::new();
+    for (start, _) in text
+        .match_indices("crate::")
+        .chain(text.match_indices("super::"))
+    {
+        let before = text[..start].chars().last();
+        if before.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == ':') {
+            continue; // part of a longer path (super::super::, raytracer::crate…)
+        }
+        let path: String = text[start..]
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':')
+            .collect();
+        let mut parts: Vec<String> = Vec::new();
+        for (index, part) in path.split("::").filter(|p| !p.is_empty()).enumerate() {
+            match part {
+                "crate" if index == 0 => parts.clear(),
+                "super" if index == 0 || parts.len() < own.len() => {
+                    if parts.is_empty() {
+                        parts = own.to_vec();
+                    }
+                    // A file's `super` is its parent module.
+                    parts.pop();
+                }
+                _ => parts.push(part.to_owned()),
+            }
+        }
+        while !parts.is_empty() && !modules.contains(&parts) {
+            parts.pop();
+        }
+        if !parts.is_empty() {
+            used.insert(parts);
+        }
+    }
+    used
+}
+
+/// The paths a `use` (or a path in code) starting at `rest` names, its groups expanded: `a::{b,
+/// c::{d, e}}` → `a::b`, `a::c::d`, `a::c::e`; a glob ends in `*`.
+pub(crate) fn expanded_paths(prefix: &[String], rest: &str) -> Vec<Vec<String>> {
+    let mut parts = prefix.to_vec();
+    let mut rest = rest.trim_start();
+    loop {
+        let name: String = rest
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect();
+        if name.is_empty() {
+            break;
+        }
+        rest = &rest[name.len()..];
+        parts.push(name);
+        match rest.strip_prefix("::") {
+            Some(more) => rest = more.trim_start(),
+            None => return vec![parts],
+        }
+    }
+    if let Some(group) = rest.strip_prefix('{') {
+        let mut items = vec![String::new()];
+        let mut nesting = 0;
+        for c in group.chars() {
+            match c {
+                '{' => nesting += 1,
+                '}' if nesting == 0 => break,
+                '}' => nesting -= 1,
+                ',' if nesting == 0 => {
+                    items.push(String::new());
+                    continue;
+                }
+                _ => {}
+            }
+            if let Some(item) = items.last_mut() {
+                item.push(c);
+            }
+        }
+        return items
+            .iter()
+            .filter(|item| !item.trim().is_empty())
+            .flat_map(|item| expanded_paths(&parts, item))
+            .collect();
+    }
+    if rest.starts_with('*') {
+        parts.push("*".to_owned());
+    }
+    vec![parts]
+}
