@@ -5,6 +5,7 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
+use super::course_files::course_files_stage;
 #[cfg(not(target_arch = "wasm32"))]
 use super::dialogs::spawn_dialog;
 use super::dialogs::{DialogAnswer, DialogKind};
@@ -275,13 +276,37 @@ impl ViewerApp {
             };
             let written = write_export(&job.scene, &view, &quality, &frame, &plan)
                 .map_err(|e| e.to_string())?;
-            // The full path of each file written, so the message says where they are.
-            let names: Vec<String> = written
-                .iter()
-                .map(|p| std::fs::canonicalize(p).unwrap_or_else(|_| p.clone()))
-                .map(|p| p.display().to_string())
-                .collect();
-            Ok(format!("exported {}", names.join(", ")))
+            Ok(format!("exported {}", full_names(&written)))
+        });
+    }
+
+    /// Writes the course files (the user has agreed to replace what they replace): downloaded in
+    /// a page, written in the background on the desktop.
+    fn export_course_files(&mut self) {
+        let stage = course_files_stage(
+            &self.scene.loaded,
+            &self.settings.export.path,
+            self.viewing.view.depth_range,
+            self.writes.program.clone(),
+        );
+        #[cfg(target_arch = "wasm32")]
+        {
+            let mut memory = crate::output::atomic::FilesInMemory::default();
+            let files = stage(&mut memory).map(|()| {
+                memory
+                    .files
+                    .into_iter()
+                    .map(|(path, bytes)| (download_name(&path), bytes))
+                    .collect()
+            });
+            self.download_files(files);
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        self.write_in_background("writing the course files…", move || {
+            let mut set = crate::output::atomic::FileSet::new();
+            stage(&mut set)?;
+            let written = set.commit().map_err(|e| e.to_string())?;
+            Ok(format!("wrote the course files {}", full_names(&written)))
         });
     }
 
@@ -443,4 +468,15 @@ pub(super) fn download_name(path: &Path) -> String {
         || "raytracer".to_owned(),
         |name| name.to_string_lossy().into_owned(),
     )
+}
+
+/// The full path of each file written, so that a message says where they are.
+#[cfg(not(target_arch = "wasm32"))]
+fn full_names(written: &[PathBuf]) -> String {
+    let names: Vec<String> = written
+        .iter()
+        .map(|p| std::fs::canonicalize(p).unwrap_or_else(|_| p.clone()))
+        .map(|p| p.display().to_string())
+        .collect();
+    names.join(", ")
 }

@@ -9,6 +9,7 @@ use egui::RichText;
 
 use super::ViewerApp;
 use super::actions::Action;
+use super::course_files::course_files;
 use crate::export::{ExportFiles, ExportPlan};
 use crate::platform::files::same_file;
 
@@ -40,7 +41,9 @@ impl ViewerApp {
                 None => Vec::new(),
             },
             Action::SaveViewTo(path) => vec![path.clone()],
-            Action::ExportCourseFiles => self.course_files().all(),
+            Action::ExportCourseFiles => {
+                course_files(&self.settings.export.path, &self.scene.loaded).all()
+            }
             _ => Vec::new(),
         }
     }

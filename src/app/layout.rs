@@ -129,7 +129,7 @@ impl ViewerApp {
             self.scene.error = None;
         }
         self.confirm_ui(&ctx);
-        self.trace_ui(&ctx);
+        super::pixel_trace::trace_ui(&ctx, &mut self.panels.trace);
         if self.panels.help_open {
             self.panels.help_open = help::help_ui(&ctx);
         }

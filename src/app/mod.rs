@@ -179,6 +179,34 @@ impl ViewerApp {
         }
     }
 
+    /// Traces the pinned pixel of the frame on screen into the trace window.
+    fn open_trace(&mut self) {
+        let view = self.frames.shown.as_ref().map(|shown| &shown.view);
+        match pixel_trace::trace_text(
+            &self.scene.loaded.scene,
+            view,
+            self.pinned_px(),
+            &self.compare,
+        ) {
+            Ok(text) => self.panels.trace = Some(text),
+            Err(status) => self.status = Some(status),
+        }
+    }
+
+    /// "Auto range" on the frame on screen (the settings' cut at each ends).
+    pub fn auto_range(&mut self) {
+        let shown = self.frames.shown.as_ref().map(|shown| &*shown.frame);
+        let status = self
+            .viewing
+            .auto_range(shown, self.settings.depth.auto_cut_percent);
+        self.say(status);
+    }
+
+    /// "Frame all" on the open scene.
+    pub fn frame_all(&mut self) {
+        self.viewing.frame_all(&self.scene.loaded.scene);
+    }
+
     /// Remembers the view the open scene is in, to restore when it is opened again.
     fn remember_view(&mut self) {
         if let Some(path) = &self.scene.loaded.path {

@@ -6,7 +6,6 @@ use std::path::Path;
 
 use glam::{DVec2, DVec3};
 
-use super::ViewerApp;
 use super::render_requests::Shown;
 use super::saved_views::{History, NamedView, SavedView, SceneViews};
 use super::status::Status;
@@ -182,21 +181,5 @@ pub(crate) fn forget_view(saved: &mut SceneViews, path: Option<&Path>, index: us
         && index < named.len()
     {
         named.remove(index);
-    }
-}
-
-impl ViewerApp {
-    /// "Auto range" on the frame on screen (the settings' cut at each ends).
-    pub fn auto_range(&mut self) {
-        let shown = self.frames.shown.as_ref().map(|shown| &*shown.frame);
-        let status = self
-            .viewing
-            .auto_range(shown, self.settings.depth.auto_cut_percent);
-        self.say(status);
-    }
-
-    /// "Frame all" on the open scene.
-    pub fn frame_all(&mut self) {
-        self.viewing.frame_all(&self.scene.loaded.scene);
     }
 }
