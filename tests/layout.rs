@@ -7,7 +7,9 @@
 //! list and the run that makes them are; the dead-code lint is never silenced for the whole crate;
 //! every shared command-line case runs against both the native binary and the Windows `.exe`;
 //! inside `src/app` and `src/render` no file imports an item from a module above it (a module's
-//! `mod.rs` declares and re-exports; its children import each other by their own names).
+//! `mod.rs` declares and re-exports; its children import each other by their own names); what a
+//! browser page does otherwise is switched (`target_arch = "wasm32"`) only in `src/platform/` and
+//! the viewer's seams, with the switches still elsewhere counted down.
 
 #[path = "common/source_tree.rs"]
 mod source_tree;
@@ -280,13 +282,14 @@ fn every_shared_command_line_case_runs_against_both_programs() {
 }
 
 /// The files that still reach up to the viewer's coordinator, `ViewerApp` in `src/app/mod.rs`:
-/// its `impl` blocks spread over the features, and the two seams that open it. The list may only
+/// its `impl` blocks spread over the features and the seams (page and desktop). The list may only
 /// shrink: a file that no longer needs it must leave it. When the coordinator's behaviour is in
 /// one file of its own, the list is empty.
-const STILL_ON_THE_COORDINATOR: [&str; 10] = [
+const STILL_ON_THE_COORDINATOR: [&str; 11] = [
     "actions.rs",
     "compare/mod.rs",
     "confirm.rs",
+    "desktop.rs",
     "input.rs",
     "inspect.rs",
     "layout.rs",
@@ -366,4 +369,56 @@ fn the_upward_import_check_reads_groups_and_globs() {
     let paths = expanded_paths(&none, "a::{b, c::{d, e}, f::*};");
     let names: Vec<String> = paths.iter().map(|p| p.join("::")).collect();
     assert_eq!(names, ["a::b", "a::c::d", "a::c::e", "a::f::*"]);
+}
+
+/// Where a browser page's differences may be switched on `target_arch = "wasm32"`: the platform
+/// layer, the viewer's page and desktop seams, and the program's entry.
+const SEAMS: [&str; 5] = [
+    "src/platform/",
+    "src/app/web.rs",
+    "src/app/desktop.rs",
+    "src/app/window.rs",
+    "src/main.rs",
+];
+
+/// The switches still outside the seams, file by file (`src/app/mod.rs`'s include the seams'
+/// own declarations). A count may only fall: a file with fewer must have its count lowered here.
+const SWITCHES_LEFT: [(&str, usize); 7] = [
+    ("src/app/confirm.rs", 1),
+    ("src/app/dialogs.rs", 1),
+    ("src/app/input.rs", 2),
+    ("src/app/mod.rs", 12),
+    ("src/app/render_worker.rs", 12),
+    ("src/app/scene_loading.rs", 1),
+    ("src/app/writes.rs", 1),
+];
+
+#[test]
+fn a_browser_pages_differences_are_switched_in_the_seams() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut wrong = Vec::new();
+    for file in source_files() {
+        let name = file
+            .strip_prefix(root)
+            .unwrap()
+            .to_string_lossy()
+            .replace('\\', "/");
+        if SEAMS.iter().any(|seam| name.starts_with(seam)) {
+            continue;
+        }
+        let text = std::fs::read_to_string(&file).unwrap();
+        let count = text.matches("target_arch = \"wasm32\"").count();
+        let allowed = SWITCHES_LEFT
+            .iter()
+            .find(|(left, _)| *left == name)
+            .map_or(0, |(_, left)| *left);
+        if count != allowed {
+            wrong.push(format!("{name}: {count} switches, {allowed} allowed"));
+        }
+    }
+    assert!(
+        wrong.is_empty(),
+        "switches on wasm32 outside the seams (move them there; a count that fell is lowered in \
+         SWITCHES_LEFT):\n{wrong:#?}"
+    );
 }

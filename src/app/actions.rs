@@ -6,18 +6,14 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use super::course_files::course_files_stage;
-#[cfg(not(target_arch = "wasm32"))]
-use super::dialogs::spawn_dialog;
 use super::dialogs::{DialogAnswer, DialogKind};
 use super::render_job::{DepthStyle, ViewerJob, prepare_frame};
 use super::settings::ExportFormat;
 use super::status::Status;
 use super::{ViewerApp, viewing};
 use crate::export::ExportPlan;
-#[cfg(not(target_arch = "wasm32"))]
-use crate::export::{save_view_as_scene, write_export};
+use crate::export::{stage_export, stage_view_as_scene};
 use crate::output::ImageFormat;
-#[cfg(not(target_arch = "wasm32"))]
 use crate::platform::files::same_file;
 use crate::render::{View, check_image_size};
 
@@ -100,11 +96,7 @@ impl ViewerApp {
     fn carry_out(&mut self, action: Action) {
         match action {
             Action::OpenDialog(kind) => self.open_dialog(kind),
-            // In a browser page, the path field holds an address on the page's site.
-            #[cfg(target_arch = "wasm32")]
-            Action::Open(path) => self.page.fetch_scene(&path.to_string_lossy(), &self.ctx),
-            #[cfg(not(target_arch = "wasm32"))]
-            Action::Open(path) => self.open(&path),
+            Action::Open(path) => self.open_path(&path),
             Action::OpenBundled(index) => {
                 if let Some((name, text)) = crate::scene::bundled::BUNDLED_SCENES.get(index) {
                     self.open_bytes(name, std::sync::Arc::from(text.as_bytes()));
@@ -247,36 +239,12 @@ impl ViewerApp {
             quality,
             depth_style: DepthStyle::default(),
         };
-        // A browser page downloads the same files, named as the export would name them.
-        #[cfg(target_arch = "wasm32")]
-        {
-            let files = match ready {
-                Some(frame) => Ok(frame),
-                None => prepare_frame(&job)
-                    .map(|p| p.frame)
-                    .map_err(|e| e.to_string()),
-            }
-            .and_then(|frame| {
-                crate::export::export_in_memory(&job.scene, &view, &quality, &frame, &plan)
-                    .map_err(|e| e.to_string())
-            })
-            .map(|files| {
-                files
-                    .into_iter()
-                    .map(|(path, bytes)| (download_name(&path), bytes))
-                    .collect()
-            });
-            self.download_files(files);
-        }
-        #[cfg(not(target_arch = "wasm32"))]
-        self.write_in_background("exporting…", move || {
+        self.write_files("exporting…", "exported", move |set| {
             let frame = match ready {
                 Some(frame) => frame,
                 None => prepare_frame(&job).map_err(|e| e.to_string())?.frame,
             };
-            let written = write_export(&job.scene, &view, &quality, &frame, &plan)
-                .map_err(|e| e.to_string())?;
-            Ok(format!("exported {}", full_names(&written)))
+            stage_export(set, &job.scene, &view, &quality, &frame, &plan).map_err(|e| e.to_string())
         });
     }
 
@@ -289,47 +257,12 @@ impl ViewerApp {
             self.viewing.view.depth_range,
             self.writes.program.clone(),
         );
-        #[cfg(target_arch = "wasm32")]
-        {
-            let mut memory = crate::output::atomic::FilesInMemory::default();
-            let files = stage(&mut memory).map(|()| {
-                memory
-                    .files
-                    .into_iter()
-                    .map(|(path, bytes)| (download_name(&path), bytes))
-                    .collect()
-            });
-            self.download_files(files);
-        }
-        #[cfg(not(target_arch = "wasm32"))]
-        self.write_in_background("writing the course files…", move || {
-            let mut set = crate::output::atomic::FileSet::new();
-            stage(&mut set)?;
-            let written = set.commit().map_err(|e| e.to_string())?;
-            Ok(format!("wrote the course files {}", full_names(&written)))
-        });
+        self.write_files("writing the course files…", "wrote the course files", stage);
     }
 
-    /// "Save view as scene": writes the scene with the current camera to `path` (in the
-    /// background; the outcome appears in the status bar).
-    #[cfg_attr(target_arch = "wasm32", allow(clippy::needless_pass_by_value))]
+    /// "Save view as scene": writes the scene with the current camera to `path` (downloaded in a
+    /// page, written in the background on the desktop; the outcome appears in the status bar).
     fn save_view_to(&mut self, path: PathBuf) {
-        // A browser page downloads the scene.
-        #[cfg(target_arch = "wasm32")]
-        {
-            let text = crate::scene::scene_to_text(&crate::export::scene_with_view(
-                &self.scene.loaded.scene,
-                &self.viewing.view,
-            ));
-            self.download_files(Ok(vec![(download_name(&path), text.into_bytes())]));
-        }
-        #[cfg(not(target_arch = "wasm32"))]
-        self.write_scene(path);
-    }
-
-    /// Writes the scene with the current camera to `path` in the background.
-    #[cfg(not(target_arch = "wasm32"))]
-    fn write_scene(&mut self, path: PathBuf) {
         // Saving over the open scene reloads it; the message should stay the save's.
         self.scene.saving_over = self
             .scene
@@ -339,89 +272,9 @@ impl ViewerApp {
             .is_some_and(|open| same_file(open, &path));
         let scene = Arc::clone(&self.scene.loaded.scene);
         let view = self.viewing.view;
-        self.write_in_background("saving the view…", move || {
-            save_view_as_scene(&scene, &view, &path).map_err(|e| e.to_string())?;
-            let full = std::fs::canonicalize(&path).unwrap_or(path);
-            Ok(format!("saved the view as {}", full.display()))
+        self.write_files("saving the view…", "saved the view as", move |set| {
+            stage_view_as_scene(set, &scene, &view, &path).map_err(|e| e.to_string())
         });
-    }
-
-    /// Runs `write` as a task (`Writes::start`); its message lands in the status bar.
-    #[cfg(not(target_arch = "wasm32"))]
-    pub(super) fn write_in_background(
-        &mut self,
-        running: &str,
-        write: impl FnOnce() -> Result<String, String> + Send + 'static,
-    ) {
-        self.status = Some(self.writes.start(running, write, &self.ctx));
-    }
-
-    /// In a browser page: the browser's file chooser to open a scene or an image; export and save
-    /// download at once (the browser asks where, or saves to its downloads folder).
-    #[cfg(target_arch = "wasm32")]
-    fn open_dialog(&mut self, kind: DialogKind) {
-        use super::web::Purpose;
-        let chosen = match kind {
-            DialogKind::Open => self.page.pick(Purpose::Open, ".txt,text/plain", &self.ctx),
-            DialogKind::CompareImage(kind) => {
-                self.page
-                    .pick(Purpose::Compare(kind), ".png,.tga,image/png", &self.ctx)
-            }
-            DialogKind::Export => {
-                let base = PathBuf::from(self.settings.export.path.trim());
-                self.write_or_ask(Action::ExportTo(base));
-                Ok(())
-            }
-            DialogKind::SaveScene => {
-                let path = PathBuf::from(self.settings.export.scene_path.trim());
-                self.write_or_ask(Action::SaveViewTo(path));
-                Ok(())
-            }
-        };
-        if let Err(error) = chosen {
-            self.status = Some(Status::error(format!("cannot choose a file: {error}")));
-        }
-    }
-
-    /// Shows a native file dialog, or says why none can be shown.
-    #[cfg(not(target_arch = "wasm32"))]
-    fn open_dialog(&mut self, kind: DialogKind) {
-        if let Some(reason) = self.writes.dialog_note {
-            self.without_dialog(kind, reason);
-            return;
-        }
-        if self.writes.dialog.is_some() {
-            return;
-        }
-        let suggested = match kind {
-            DialogKind::SaveScene => &self.settings.export.scene_path,
-            _ => &self.settings.export.path,
-        };
-        match spawn_dialog(kind, &self.ctx, suggested) {
-            Ok(dialog) => self.writes.dialog = Some(dialog),
-            Err(error) => {
-                self.status = Some(Status::error(format!("cannot open a file dialog: {error}")));
-            }
-        }
-    }
-
-    /// Where no file dialog can be shown: export and save go to the side panel's typed paths (the
-    /// section says so under them, and replacing a file is asked first); open and compare say
-    /// that no dialog is available and do nothing else (reopening the typed scene would reset
-    /// the view and its history).
-    #[cfg(not(target_arch = "wasm32"))]
-    fn without_dialog(&mut self, kind: DialogKind, reason: &'static str) {
-        let export = &self.settings.export;
-        let typed = |text: &str| (!text.trim().is_empty()).then(|| PathBuf::from(text.trim()));
-        let action = match kind {
-            DialogKind::Export => typed(&export.path).map(Action::ExportTo),
-            DialogKind::SaveScene => typed(&export.scene_path).map(Action::SaveViewTo),
-            DialogKind::Open | DialogKind::CompareImage(_) => None,
-        };
-        match action {
-            Some(action) => self.apply(action),
-            None => self.status = Some(Status::error(reason)),
-        }
     }
 
     /// Takes a dialog's answer and a finished write.
@@ -459,24 +312,4 @@ impl ViewerApp {
         }
         self.status = Some(finished);
     }
-}
-
-/// The name a browser page downloads `path` as: its last part.
-#[cfg(target_arch = "wasm32")]
-pub(super) fn download_name(path: &Path) -> String {
-    path.file_name().map_or_else(
-        || "raytracer".to_owned(),
-        |name| name.to_string_lossy().into_owned(),
-    )
-}
-
-/// The full path of each file written, so that a message says where they are.
-#[cfg(not(target_arch = "wasm32"))]
-fn full_names(written: &[PathBuf]) -> String {
-    let names: Vec<String> = written
-        .iter()
-        .map(|p| std::fs::canonicalize(p).unwrap_or_else(|_| p.clone()))
-        .map(|p| p.display().to_string())
-        .collect();
-    names.join(", ")
 }

@@ -51,7 +51,6 @@ pub(crate) struct Task<T> {
 
 impl<T: Send + 'static> Task<T> {
     /// Runs `work` on a thread named `name`; `ctx` is asked for a repaint when it is done.
-    #[cfg_attr(target_arch = "wasm32", allow(clippy::unnecessary_wraps))]
     pub(crate) fn spawn(
         name: &str,
         ctx: &egui::Context,
@@ -61,21 +60,12 @@ impl<T: Send + 'static> Task<T> {
         let progress = Progress::default();
         let shared = progress.clone();
         let ctx = ctx.clone();
-        // A browser page starts no thread: the work runs now, and its answer waits in the channel.
-        #[cfg(target_arch = "wasm32")]
-        {
-            let _ = name;
+        // In a browser page the work runs now, and its answer waits in the channel.
+        crate::platform::threads::run_in_background(name, move || {
+            // The viewer may have closed or dropped the task; then nobody listens.
             let _ = sender.send(work(&shared));
             ctx.request_repaint();
-        }
-        #[cfg(not(target_arch = "wasm32"))]
-        std::thread::Builder::new()
-            .name(name.to_owned())
-            .spawn(move || {
-                // The viewer may have closed or dropped the task; then nobody listens.
-                let _ = sender.send(work(&shared));
-                ctx.request_repaint();
-            })?;
+        })?;
         Ok(Self {
             answer,
             progress,

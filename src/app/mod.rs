@@ -27,7 +27,8 @@
 //! * [`dialogs`]: native file dialogs; [`reload`]: watching the open file
 //! * [`inspect`]: read access for tests and tools
 //! * [`window`]: opening the window (or saying why none can be opened)
-//! * [`web`]: in a browser page, files in as bytes and out as downloads
+//! * [`web`]: in a browser page, files in as bytes and out as downloads; [`desktop`]: on the
+//!   desktop, files out into the file system
 //! * [`ui`]: the drawing, one `*_ui` function per part
 
 pub(crate) mod actions;
@@ -36,6 +37,8 @@ pub mod compare;
 pub(crate) mod confirm;
 pub(crate) mod course_files;
 pub mod depth_stats;
+#[cfg(not(target_arch = "wasm32"))]
+mod desktop;
 pub(crate) mod dialogs;
 pub mod frame_log;
 pub(crate) mod input;

@@ -18,9 +18,15 @@ use wasm_bindgen::JsCast as _;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen_futures::JsFuture;
 
+use crate::platform::browser::{download, fetch_bytes, js_error, same_site_url, window};
+pub(crate) use crate::platform::browser::{scene_parameter, set_title};
+
 use super::ViewerApp;
+use super::actions::Action;
 use super::compare::ImageKind;
+use super::dialogs::DialogKind;
 use super::status::Status;
+use crate::output::atomic::{FilesInMemory, Stage};
 
 /// What a file that came in is for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -170,96 +176,6 @@ fn file_name(path: &Path) -> String {
     )
 }
 
-fn window() -> Result<web_sys::Window, String> {
-    web_sys::window().ok_or_else(|| "not in a browser window".to_owned())
-}
-
-fn js_error(value: &JsValue) -> String {
-    value
-        .dyn_ref::<js_sys::Error>()
-        .map(|error| String::from(error.message()))
-        .or_else(|| value.as_string())
-        .unwrap_or_else(|| format!("{value:?}"))
-}
-
-/// `address` resolved against the page's address, when it is on the page's own site.
-fn same_site_url(address: &str) -> Result<String, String> {
-    let location = window()?.location();
-    let page = location.href().map_err(|e| js_error(&e))?;
-    let origin = location.origin().map_err(|e| js_error(&e))?;
-    let url = web_sys::Url::new_with_base(address, &page)
-        .map_err(|_| format!("{address}: not an address"))?;
-    if url.origin() != origin {
-        return Err(format!(
-            "{address}: only scenes on this page's own site ({origin}) can be opened by address; \
-             download the file and drop it on the page instead"
-        ));
-    }
-    Ok(url.href())
-}
-
-/// The bytes at `url`, or why not (an HTTP status, a network error).
-async fn fetch_bytes(url: &str) -> Result<Vec<u8>, String> {
-    let response: web_sys::Response = JsFuture::from(window()?.fetch_with_str(url))
-        .await
-        .map_err(|error| format!("cannot fetch {url}: {}", js_error(&error)))?
-        .dyn_into()
-        .map_err(|_| format!("cannot fetch {url}"))?;
-    if !response.ok() {
-        return Err(format!(
-            "{url}: the server answered {} {}",
-            response.status(),
-            response.status_text()
-        ));
-    }
-    let buffer = JsFuture::from(response.array_buffer().map_err(|e| js_error(&e))?)
-        .await
-        .map_err(|e| js_error(&e))?;
-    Ok(js_sys::Uint8Array::new(&buffer).to_vec())
-}
-
-/// Offers `bytes` as a download named `name`.
-pub(crate) fn download(name: &str, bytes: &[u8]) -> Result<(), String> {
-    let document = window()?.document().ok_or("the page has no document")?;
-    let parts = js_sys::Array::of1(&js_sys::Uint8Array::from(bytes));
-    let options = web_sys::BlobPropertyBag::new();
-    options.set_type("application/octet-stream");
-    let blob = web_sys::Blob::new_with_u8_array_sequence_and_options(&parts, &options)
-        .map_err(|e| js_error(&e))?;
-    let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(|e| js_error(&e))?;
-    let anchor: web_sys::HtmlAnchorElement = document
-        .create_element("a")
-        .map_err(|e| js_error(&e))?
-        .dyn_into()
-        .map_err(|_| "cannot make a link")?;
-    anchor.set_href(&url);
-    anchor.set_download(name);
-    anchor.click();
-    // The download has its bytes once it started; the address is released a minute later.
-    let release = Closure::once_into_js(move || {
-        let _ = web_sys::Url::revoke_object_url(&url);
-    });
-    let _ = window()?
-        .set_timeout_with_callback_and_timeout_and_arguments_0(release.unchecked_ref(), 60_000);
-    Ok(())
-}
-
-/// The page address's `scene` parameter (`?scene=scenes/scene1_02.txt`), if any.
-pub(crate) fn scene_parameter() -> Option<String> {
-    let search = window().ok()?.location().search().ok()?;
-    web_sys::UrlSearchParams::new_with_str(&search)
-        .ok()?
-        .get("scene")
-        .filter(|scene| !scene.trim().is_empty())
-}
-
-/// Sets the page's title.
-pub(crate) fn set_title(title: &str) {
-    if let Some(document) = window().ok().and_then(|w| w.document()) {
-        document.set_title(title);
-    }
-}
-
 impl ViewerApp {
     /// Takes in the files that came to the page since the last frame.
     pub(crate) fn poll_page(&mut self) {
@@ -292,6 +208,56 @@ impl ViewerApp {
     }
 
     /// Downloads the files `written` holds; the status bar names them.
+    /// Opens the scene at `path`: in a page, the path field holds an address on the page's
+    /// site, fetched.
+    pub(super) fn open_path(&mut self, path: &std::path::Path) {
+        self.page.fetch_scene(&path.to_string_lossy(), &self.ctx);
+    }
+
+    /// In a browser page: the browser's file chooser to open a scene or an image; export and save
+    /// download at once (the browser asks where, or saves to its downloads folder).
+    pub(super) fn open_dialog(&mut self, kind: DialogKind) {
+        let chosen = match kind {
+            DialogKind::Open => self.page.pick(Purpose::Open, ".txt,text/plain", &self.ctx),
+            DialogKind::CompareImage(kind) => {
+                self.page
+                    .pick(Purpose::Compare(kind), ".png,.tga,image/png", &self.ctx)
+            }
+            DialogKind::Export => {
+                let base = std::path::PathBuf::from(self.settings.export.path.trim());
+                self.write_or_ask(Action::ExportTo(base));
+                Ok(())
+            }
+            DialogKind::SaveScene => {
+                let path = std::path::PathBuf::from(self.settings.export.scene_path.trim());
+                self.write_or_ask(Action::SaveViewTo(path));
+                Ok(())
+            }
+        };
+        if let Err(error) = chosen {
+            self.status = Some(Status::error(format!("cannot choose a file: {error}")));
+        }
+    }
+
+    /// The page's way to write the files `stage` stages: each downloaded now, named by its last
+    /// part (the desktop writes them: `app::desktop`).
+    pub(super) fn write_files(
+        &mut self,
+        _running: &str,
+        _done: &'static str,
+        stage: impl FnOnce(&mut dyn Stage) -> Result<(), String>,
+    ) {
+        let mut memory = FilesInMemory::default();
+        let files = stage(&mut memory).map(|()| {
+            memory
+                .files
+                .into_iter()
+                .map(|(path, bytes)| (download_name(&path), bytes))
+                .collect()
+        });
+        self.download_files(files);
+    }
+
     pub(crate) fn download_files(&mut self, written: Result<Vec<(String, Vec<u8>)>, String>) {
         let outcome = written.and_then(|files| {
             for (name, bytes) in &files {
@@ -493,4 +459,12 @@ impl WebHandle {
     fn with_app<T>(&self, read: impl FnOnce(&ViewerApp) -> T) -> Option<T> {
         self.runner.app_mut::<ViewerApp>().map(|app| read(&app))
     }
+}
+
+/// The name a browser page downloads `path` as: its last part.
+fn download_name(path: &std::path::Path) -> String {
+    path.file_name().map_or_else(
+        || "raytracer".to_owned(),
+        |name| name.to_string_lossy().into_owned(),
+    )
 }

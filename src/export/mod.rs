@@ -25,10 +25,10 @@ use std::path::{Path, PathBuf};
 
 use image::RgbImage;
 
-use crate::output::atomic::{FileSet, FilesInMemory, Stage, stage_bytes};
+use crate::output::atomic::{Stage, stage_bytes};
 use crate::output::depth_file::{RawDepthFormat, stage_depth_png16, stage_raw_depth};
 use crate::output::image_file::stage_image;
-use crate::output::{ImageFormat, WriteError, write_atomically};
+use crate::output::{ImageFormat, WriteError};
 use crate::render::depth_map::DepthColourMap;
 use crate::render::{Frame, Quality, View};
 
@@ -96,7 +96,6 @@ pub(crate) fn export_path_following(
 /// The folder an export to `base_path` writes into, when it must exist first: `base_path`
 /// itself when it names a folder, else its parent (`None` for a bare file name, which goes into
 /// the working folder).
-#[cfg_attr(target_arch = "wasm32", allow(dead_code))]
 pub(crate) fn export_folder(base_path: &Path) -> Option<PathBuf> {
     if names_a_folder(base_path) {
         return Some(base_path.to_path_buf());
@@ -248,53 +247,27 @@ pub(crate) fn scene_with_view(scene: &Scene, view: &View) -> Scene {
     }
 }
 
-/// "Save view as scene": writes `scene` with `view`'s camera to `path` (atomically), numbers in
+/// "Save view as scene": stages `scene` with `view`'s camera as the file `path`, numbers in
 /// Rust's shortest round-trip form so parsing it gives exactly this camera back.
-#[cfg_attr(target_arch = "wasm32", allow(dead_code))]
-pub(crate) fn save_view_as_scene(
+pub(crate) fn stage_view_as_scene(
+    set: &mut dyn Stage,
     scene: &Scene,
     view: &View,
     path: &Path,
 ) -> Result<(), WriteError> {
-    write_atomically(
+    stage_bytes(
+        set,
         path,
         scene_to_text(&scene_with_view(scene, view)).as_bytes(),
     )
 }
 
-/// Writes every file of `plan` for `frame`, rendered from `scene` through `view` at `quality`,
-/// all or nothing: every file is complete in a temporary file before any is renamed over its
-/// destination. Returns the paths written.
-#[cfg_attr(target_arch = "wasm32", allow(dead_code))]
-pub(crate) fn write_export(
-    scene: &Scene,
-    view: &View,
-    quality: &Quality,
-    frame: &Frame,
-    plan: &ExportPlan,
-) -> Result<Vec<PathBuf>, WriteError> {
-    let mut set = FileSet::new();
-    stage_export(&mut set, scene, view, quality, frame, plan)?;
-    set.commit()
-}
-
-/// The files of `plan` as [`write_export`] writes them, kept in memory (a browser page's
-/// downloads): each file's name and bytes.
-#[cfg_attr(not(target_arch = "wasm32"), allow(dead_code))]
-pub(crate) fn export_in_memory(
-    scene: &Scene,
-    view: &View,
-    quality: &Quality,
-    frame: &Frame,
-    plan: &ExportPlan,
-) -> Result<Vec<(PathBuf, Vec<u8>)>, WriteError> {
-    let mut files = FilesInMemory::default();
-    stage_export(&mut files, scene, view, quality, frame, plan)?;
-    Ok(files.files)
-}
-
-/// Stages every file of `plan` in `set`.
-fn stage_export(
+/// Stages every file of `plan` for `frame`, rendered from `scene` through `view` at `quality`, in
+/// `set`: a [`FileSet`](crate::output::atomic::FileSet) writes them all or nothing (every file complete in a temporary file
+/// before any is renamed over its destination), a
+/// [`FilesInMemory`](crate::output::atomic::FilesInMemory) keeps them for a page's
+/// downloads.
+pub(crate) fn stage_export(
     set: &mut dyn Stage,
     scene: &Scene,
     view: &View,

@@ -67,7 +67,9 @@ fn saved_view_parses_back_to_the_same_camera() {
     view.direction_world = glam::DVec3::new(0.3, -0.2, -1.0 / 7.0);
     let folder = tempfile::tempdir().unwrap();
     let path = folder.path().join("view.txt");
-    save_view_as_scene(&scene, &view, &path).unwrap();
+    let mut set = crate::output::atomic::FileSet::new();
+    stage_view_as_scene(&mut set, &scene, &view, &path).unwrap();
+    set.commit().unwrap();
     let back = load_scene(&path).unwrap();
     assert_eq!(back, scene_with_view(&scene, &view));
     assert_eq!(back.camera.center_world, view.center_world);
@@ -155,7 +157,9 @@ fn export_writes_every_file_and_the_command_reproduces_them() {
             extra_depth,
             program: None,
         };
-        let written = write_export(&scene, &view, &quality, &frame, &plan).unwrap();
+        let mut set = crate::output::atomic::FileSet::new();
+        stage_export(&mut set, &scene, &view, &quality, &frame, &plan).unwrap();
+        let written = set.commit().unwrap();
         assert_eq!(written.len(), 6, "{written:?}");
         assert!(written.iter().all(|p| p.exists()));
         // Run the command's arguments (from the export folder) into a second folder.

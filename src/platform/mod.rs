@@ -7,12 +7,20 @@
 //!   ask for, the wake that tells the viewer, and rayon's thread pool;
 //! * [`console`]: standard output and error that a closed pipe ends quietly;
 //! * [`memory`]: the memory the program may still use, and its peak so far;
-//! * [`display`]: whether there is a display server to open a window on.
+//! * [`display`]: whether there is a display server to open a window on;
+//! * [`threads`]: work in the background, on a thread where there are threads;
+//! * [`watch`]: watching a file for changes (the viewer);
+//! * `browser`: in a browser page (`wasm32`), the page's window, address, fetches and downloads.
 //!
 //! This is the bottom layer: it knows nothing of scenes, pictures or the command line.
 
+#[cfg(target_arch = "wasm32")]
+pub mod browser;
 pub mod console;
 pub mod display;
 pub mod files;
 pub mod memory;
 pub mod process;
+pub mod threads;
+#[cfg(feature = "gui")]
+pub mod watch;

@@ -1,0 +1,86 @@
+//! The desktop's side of what a browser page does its own way ([`super::web`]): a path opens the
+//! file; the file dialogs are the system's (or, where none can be shown, the typed paths); the
+//! files the viewer writes go into the file system, all or nothing, on a thread of their own.
+
+use std::path::PathBuf;
+
+use std::path::Path;
+
+use super::ViewerApp;
+use super::actions::Action;
+use super::dialogs::{DialogKind, spawn_dialog};
+use super::status::Status;
+use crate::output::atomic::{FileSet, Stage};
+
+impl ViewerApp {
+    /// Opens the scene file at `path` (typed in the side panel or given on the command line).
+    pub(super) fn open_path(&mut self, path: &Path) {
+        self.open(path);
+    }
+
+    /// Shows a native file dialog, or says why none can be shown.
+    pub(super) fn open_dialog(&mut self, kind: DialogKind) {
+        if let Some(reason) = self.writes.dialog_note {
+            self.without_dialog(kind, reason);
+            return;
+        }
+        if self.writes.dialog.is_some() {
+            return;
+        }
+        let suggested = match kind {
+            DialogKind::SaveScene => &self.settings.export.scene_path,
+            _ => &self.settings.export.path,
+        };
+        match spawn_dialog(kind, &self.ctx, suggested) {
+            Ok(dialog) => self.writes.dialog = Some(dialog),
+            Err(error) => {
+                self.status = Some(Status::error(format!("cannot open a file dialog: {error}")));
+            }
+        }
+    }
+
+    /// Where no file dialog can be shown: export and save go to the side panel's typed paths (the
+    /// section says so under them, and replacing a file is asked first); open and compare say
+    /// that no dialog is available and do nothing else (reopening the typed scene would reset
+    /// the view and its history).
+    fn without_dialog(&mut self, kind: DialogKind, reason: &'static str) {
+        let export = &self.settings.export;
+        let typed = |text: &str| (!text.trim().is_empty()).then(|| PathBuf::from(text.trim()));
+        let action = match kind {
+            DialogKind::Export => typed(&export.path).map(Action::ExportTo),
+            DialogKind::SaveScene => typed(&export.scene_path).map(Action::SaveViewTo),
+            DialogKind::Open | DialogKind::CompareImage(_) => None,
+        };
+        match action {
+            Some(action) => self.apply(action),
+            None => self.status = Some(Status::error(reason)),
+        }
+    }
+
+    /// Writes the files `stage` stages, all or nothing, in the background: the status bar says
+    /// `running` meanwhile, then `done` and the full path of each file written (or why none was).
+    pub(super) fn write_files(
+        &mut self,
+        running: &str,
+        done: &'static str,
+        stage: impl FnOnce(&mut dyn Stage) -> Result<(), String> + Send + 'static,
+    ) {
+        let write = move || {
+            let mut set = FileSet::new();
+            stage(&mut set)?;
+            let written = set.commit().map_err(|e| e.to_string())?;
+            Ok(format!("{done} {}", full_names(&written)))
+        };
+        self.status = Some(self.writes.start(running, write, &self.ctx));
+    }
+}
+
+/// The full path of each file written, so that a message says where they are.
+fn full_names(written: &[PathBuf]) -> String {
+    let names: Vec<String> = written
+        .iter()
+        .map(|p| std::fs::canonicalize(p).unwrap_or_else(|_| p.clone()))
+        .map(|p| p.display().to_string())
+        .collect();
+    names.join(", ")
+}
