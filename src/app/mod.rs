@@ -6,7 +6,7 @@
 //! * [`settings`]: the settings that survive a restart
 //! * [`loaded_scene`]: the scene on screen and where it came from
 //! * [`render_job`]: the render worker's job (render + texture pixels off the UI thread);
-//!   [`render_worker`]: the worker, which runs the newest job on a thread of its own
+//!   (the worker that runs the newest job is `platform::worker`)
 //! * [`frame_log`]: per-frame figures for scripts that measure the real window
 //! * [`render_requests`]: asking the worker for frames (progressive refinement) and taking them in
 //! * [`scene_loading`]: opening and reloading scene files in the background
@@ -51,7 +51,6 @@ pub mod probe;
 pub(crate) mod reload;
 pub mod render_job;
 pub(crate) mod render_requests;
-pub(crate) mod render_worker;
 pub mod saved_views;
 pub(crate) mod scene_loading;
 pub mod settings;

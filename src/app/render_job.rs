@@ -7,8 +7,8 @@ use std::sync::Arc;
 use egui::{Color32, ColorImage};
 use rayon::prelude::*;
 
-use super::render_worker::{RenderResult, RenderWorker};
 use crate::app::depth_stats::DepthHistogram;
+use crate::platform::worker::{RenderResult, RenderWorker};
 use crate::render::depth_map::DepthColourMap;
 use crate::render::phases::time;
 use crate::render::{Frame, Quality, View, ViewError, on_the_pool, render_with};

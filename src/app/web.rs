@@ -7,7 +7,7 @@
 //! * Settings and views are kept in the browser's storage by eframe.
 //!
 //! A page has no threads here: loads, comparisons and exports run on the page's thread, and the
-//! render worker renders one frame per page frame (see `render_worker.rs`).
+//! render worker renders one frame per page frame (see `platform/worker.rs`).
 
 use std::cell::RefCell;
 use std::path::Path;

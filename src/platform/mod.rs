@@ -9,6 +9,8 @@
 //! * [`memory`]: the memory the program may still use, and its peak so far;
 //! * [`display`]: whether there is a display server to open a window on;
 //! * [`threads`]: work in the background, on a thread where there are threads;
+//! * [`worker`]: the viewer's render worker, which runs the newest job on a thread of its own
+//!   (in a page, on the page's thread once per frame);
 //! * [`watch`]: watching a file for changes (the viewer);
 //! * `browser`: in a browser page (`wasm32`), the page's window, address, fetches and downloads.
 //!
@@ -24,3 +26,5 @@ pub mod process;
 pub mod threads;
 #[cfg(feature = "gui")]
 pub mod watch;
+#[cfg(feature = "gui")]
+pub mod worker;

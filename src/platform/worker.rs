@@ -4,7 +4,10 @@
 //! callback (e.g. "request a repaint") runs when a result lands.
 //!
 //! The worker is generic over the job `J` and its output `T`, so a viewer can have the worker
-//! also prepare what it uploads (e.g. texture pixels) off the UI thread.
+//! also prepare what it uploads (e.g. texture pixels) off the UI thread. It is here, in the
+//! platform layer, because all that differs between the desktop and a page is how it runs: a
+//! browser page has no threads, so there it runs the newest job on the page's thread, once per
+//! frame.
 
 use std::sync::{Arc, Condvar, Mutex, MutexGuard, PoisonError};
 use std::thread::JoinHandle;
