@@ -383,12 +383,10 @@ const SEAMS: [&str; 5] = [
 
 /// The switches still outside the seams, file by file (`src/app/mod.rs`'s include the seams'
 /// own declarations). A count may only fall: a file with fewer must have its count lowered here.
-const SWITCHES_LEFT: [(&str, usize); 6] = [
+const SWITCHES_LEFT: [(&str, usize); 4] = [
     ("src/app/confirm.rs", 1),
     ("src/app/dialogs.rs", 1),
-    ("src/app/input.rs", 2),
-    ("src/app/mod.rs", 12),
-    ("src/app/scene_loading.rs", 1),
+    ("src/app/mod.rs", 7),
     ("src/app/writes.rs", 1),
 ];
 

@@ -13,6 +13,38 @@ use super::status::Status;
 use crate::output::atomic::{FileSet, Stage};
 
 impl ViewerApp {
+    /// Opens the scene the command line names, or else the scene open when the viewer last
+    /// closed.
+    pub(super) fn open_first(&mut self, input: Option<PathBuf>) {
+        if let Some(path) = input.or_else(|| self.settings.last_scene.clone()) {
+            self.open(&path);
+        }
+    }
+
+    /// Opens a file dropped on the window, by its path.
+    #[expect(
+        clippy::needless_pass_by_value,
+        reason = "the page's side keeps the handle to read the file later"
+    )]
+    pub(super) fn open_dropped(&mut self, file: egui::DroppedFileHandle) {
+        if !file.path().as_os_str().is_empty() {
+            self.open(file.path());
+        }
+    }
+
+    /// Names the window `title`.
+    pub(super) fn set_title(&self, title: &str) {
+        self.ctx
+            .send_viewport_cmd(egui::ViewportCommand::Title(title.to_owned()));
+    }
+
+    /// Nothing comes in between frames on the desktop: files are opened by their paths.
+    #[expect(
+        clippy::unused_self,
+        reason = "the page's side takes its files in here"
+    )]
+    pub(super) fn poll_platform(&mut self) {}
+
     /// Opens the scene file at `path` (typed in the side panel or given on the command line).
     pub(super) fn open_path(&mut self, path: &Path) {
         self.open(path);

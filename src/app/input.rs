@@ -90,13 +90,7 @@ impl ViewerApp {
             _ => {}
         }
         if let Some(file) = dropped {
-            // A browser page gives the name and reads the bytes later; a desktop gives the path.
-            #[cfg(target_arch = "wasm32")]
-            self.page.read_dropped(file, &self.ctx);
-            #[cfg(not(target_arch = "wasm32"))]
-            if !file.path().as_os_str().is_empty() {
-                self.open(file.path());
-            }
+            self.open_dropped(file);
         }
         self.navigation_keys(ctx);
     }

@@ -108,7 +108,6 @@ pub struct ViewerApp {
 impl ViewerApp {
     /// Creates the viewer: settings from eframe's storage, the scene from the request (or the last
     /// scene, or the embedded default), and the render worker.
-    #[cfg_attr(target_arch = "wasm32", allow(clippy::needless_pass_by_value))]
     pub fn new(cc: &eframe::CreationContext<'_>, request: ViewerRequest) -> Self {
         let mut settings: Settings = cc
             .storage
@@ -131,7 +130,6 @@ impl ViewerApp {
             ),
         };
         let loaded = LoadedScene::default_scene(INITIAL_SIZE_PX);
-        #[cfg_attr(target_arch = "wasm32", allow(unused_mut))]
         let mut app = Self {
             settings,
             viewing: viewing::Viewing::new(loaded.file_view),
@@ -161,16 +159,7 @@ impl ViewerApp {
         };
         let ctx = cc.egui_ctx.clone();
         crate::platform::process::set_wake(move || ctx.request_repaint());
-        // A page opens the scene its address names (`?scene=`), not the last one: that was a
-        // file the page has no access to any more.
-        #[cfg(target_arch = "wasm32")]
-        if let Some(address) = web::scene_parameter() {
-            app.page.fetch_scene(&address, &cc.egui_ctx);
-        }
-        #[cfg(not(target_arch = "wasm32"))]
-        if let Some(path) = request.input.or_else(|| app.settings.last_scene.clone()) {
-            app.open(&path);
-        }
+        app.open_first(request.input);
         app
     }
 
@@ -231,8 +220,7 @@ impl eframe::App for ViewerApp {
             // A termination signal: close (eframe saves the settings on the way out).
             ctx.send_viewport_cmd(egui::ViewportCommand::Close);
         }
-        #[cfg(target_arch = "wasm32")]
-        self.poll_page();
+        self.poll_platform();
         self.receive_frame();
         self.poll_load();
         self.poll_background();

@@ -302,13 +302,7 @@ impl ViewerApp {
         self.viewing.magnifier = Default::default();
         self.viewing.probe.pinned_world = None;
         self.panels.fields.path_text = path.display().to_string();
-        self.ctx
-            .send_viewport_cmd(egui::ViewportCommand::Title(format!(
-                "raytracer — {}",
-                path.display()
-            )));
-        #[cfg(target_arch = "wasm32")]
-        super::web::set_title(&format!("raytracer — {}", path.display()));
+        self.set_title(&format!("raytracer — {}", path.display()));
         if self.scene.loaded.in_memory {
             // No file to open again at the next start, or to watch.
             self.scene.watcher = None;

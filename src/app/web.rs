@@ -19,7 +19,7 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen_futures::JsFuture;
 
 use crate::platform::browser::{download, fetch_bytes, js_error, same_site_url, window};
-pub(crate) use crate::platform::browser::{scene_parameter, set_title};
+use crate::platform::browser::{scene_parameter, set_title};
 
 use super::ViewerApp;
 use super::actions::Action;
@@ -177,8 +177,28 @@ fn file_name(path: &Path) -> String {
 }
 
 impl ViewerApp {
+    /// A page opens the scene its address names (`?scene=`), not the last one (that was a file
+    /// the page has no access to any more); it has no command line.
+    pub(super) fn open_first(&mut self, _input: Option<std::path::PathBuf>) {
+        if let Some(address) = scene_parameter() {
+            self.page.fetch_scene(&address, &self.ctx);
+        }
+    }
+
+    /// A file dropped on the page: the page gives its name, and its bytes are read later.
+    pub(super) fn open_dropped(&mut self, file: egui::DroppedFileHandle) {
+        self.page.read_dropped(file, &self.ctx);
+    }
+
+    /// Names the page (and eframe's viewport) `title`.
+    pub(super) fn set_title(&self, title: &str) {
+        self.ctx
+            .send_viewport_cmd(egui::ViewportCommand::Title(title.to_owned()));
+        set_title(title);
+    }
+
     /// Takes in the files that came to the page since the last frame.
-    pub(crate) fn poll_page(&mut self) {
+    pub(super) fn poll_platform(&mut self) {
         for incoming in self.page.take() {
             let bytes: Arc<[u8]> = match incoming.bytes {
                 Ok(bytes) => bytes.into(),
