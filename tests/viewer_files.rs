@@ -339,3 +339,36 @@ fn course_files_are_the_course_images_and_their_command_and_exports_are_named_af
     press(&mut harness, "Course files");
     assert!(harness.query_by_label("Replace").is_some());
 }
+
+/// A file dropped on the window, as the desktop's integration hands it over: by its path.
+#[derive(Debug)]
+struct DroppedOnTheWindow(std::path::PathBuf);
+
+impl egui::DroppedFile for DroppedOnTheWindow {
+    fn path(&self) -> &Path {
+        &self.0
+    }
+
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        std::fs::read(&self.0).map_err(|error| error.to_string())
+    }
+}
+
+#[test]
+fn a_scene_file_dropped_on_the_window_opens() {
+    let folder = tempfile::tempdir().unwrap();
+    let dropped = folder.path().join("dropped.txt");
+    std::fs::copy(scene_path("scene1_05.txt"), &dropped).unwrap();
+    let mut harness = viewer(Some(scene_path("scene1_02.txt")));
+    settle(&mut harness);
+    harness
+        .input_mut()
+        .dropped_files
+        .push(std::sync::Arc::new(DroppedOnTheWindow(dropped.clone())));
+    settle(&mut harness);
+    assert_eq!(
+        harness.state().loaded_scene().path.as_deref(),
+        Some(dropped.as_path())
+    );
+    assert_eq!(harness.state().scene_error(), None);
+}
