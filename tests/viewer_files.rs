@@ -1,7 +1,8 @@
 //! The viewer's writes, driven through its buttons (egui_kittest): it asks before replacing any
 //! file and warns when one is the open scene, writes into a folder when given one, and gives
 //! written files the modes the command line gives them; "Course files" writes the course's images
-//! and their command line, and exports are named after the scene.
+//! and their command line, and exports are named after the scene; a scene file dropped on the
+//! window opens.
 
 mod common;
 
