@@ -4,7 +4,12 @@
 //!   code block so marked holds lines of it;
 //! * every row of docs/robustness.md cites tests that exist (or says "same" for the row above).
 
-use std::path::{Path, PathBuf};
+#[path = "common/source_tree.rs"]
+#[allow(dead_code)] // the file walk alone
+mod source_tree;
+
+use source_tree::rust_files;
+use std::path::Path;
 
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -103,17 +108,6 @@ fn check_marked_tables(page: &str) -> usize {
         }
     }
     checked
-}
-
-fn rust_files(folder: &Path, found: &mut Vec<PathBuf>) {
-    for entry in std::fs::read_dir(folder).unwrap() {
-        let path = entry.unwrap().path();
-        if path.is_dir() {
-            rust_files(&path, found);
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            found.push(path);
-        }
-    }
 }
 
 #[test]
