@@ -15,8 +15,8 @@
 mod source_tree;
 
 use source_tree::{
-    crate_references, expanded_paths, files_under, module_path, source_files, used_modules,
-    without_tests,
+    crate_references, expanded_paths, files_under, module_of, module_path, named_paths,
+    relative_name, source_files, used_modules, without_tests,
 };
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
@@ -204,15 +204,10 @@ const OUTPUT_FILES: [&str; 4] = [
 fn a_requests_outputs_are_listed_in_one_place() {
     // The outputs beyond the course's `-output` and `-depth` stand for any new one: a new output
     // flag touches the flag table, the outputs' list and the run, nothing else.
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut found = Vec::new();
     let mut named = 0;
     for file in source_files() {
-        let relative = file
-            .strip_prefix(root)
-            .unwrap()
-            .to_string_lossy()
-            .replace('\\', "/");
+        let relative = relative_name(&file);
         let text = std::fs::read_to_string(&file).unwrap();
         for (number, line) in text.lines().enumerate() {
             for name in [
@@ -313,39 +308,20 @@ fn no_file_in_the_viewer_or_the_renderer_imports_from_a_module_above_it() {
             continue;
         }
         let text = std::fs::read_to_string(file).unwrap();
-        let code = without_tests(&text);
-        for (start, word) in code
-            .match_indices("crate::")
-            .chain(code.match_indices("super::"))
-        {
-            let before = code[..start].chars().last();
-            if before.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == ':') {
-                continue;
+        for path in named_paths(without_tests(&text), &own) {
+            // The longest prefix that is a module; an item follows it.
+            let module = module_of(&path, &modules);
+            let names_an_item = path.len() > module.len();
+            let above = !module.is_empty() && module.len() < own.len() && own.starts_with(&module);
+            let listed = path == ["app", "ViewerApp"]
+                && STILL_ON_THE_COORDINATOR
+                    .iter()
+                    .any(|name| file.ends_with(format!("src/app/{name}")));
+            if names_an_item && above && !listed {
+                upward.push(format!("{}: {}", file.display(), path.join("::")));
             }
-            let mut base = Vec::new();
-            if word == "super::" {
-                base = own.clone();
-                base.pop();
-            }
-            for path in expanded_paths(&base, &code[start + word.len()..]) {
-                // The longest prefix that is a module; an item follows it.
-                let mut module = path.clone();
-                while !module.is_empty() && !modules.contains(&module) {
-                    module.pop();
-                }
-                let names_an_item = path.len() > module.len();
-                let above =
-                    !module.is_empty() && module.len() < own.len() && own.starts_with(&module);
-                let listed = path == ["app", "ViewerApp"]
-                    && STILL_ON_THE_COORDINATOR
-                        .iter()
-                        .any(|name| file.ends_with(format!("src/app/{name}")));
-                if names_an_item && above && !listed {
-                    upward.push(format!("{}: {}", file.display(), path.join("::")));
-                }
-                if listed {
-                    reaching_up.insert(file.clone());
-                }
+            if listed {
+                reaching_up.insert(file.clone());
             }
         }
     }
@@ -392,14 +368,9 @@ const SWITCHES_LEFT: [(&str, usize); 4] = [
 
 #[test]
 fn a_browser_pages_differences_are_switched_in_the_seams() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut wrong = Vec::new();
     for file in source_files() {
-        let name = file
-            .strip_prefix(root)
-            .unwrap()
-            .to_string_lossy()
-            .replace('\\', "/");
+        let name = relative_name(&file);
         if SEAMS.iter().any(|seam| name.starts_with(seam)) {
             continue;
         }

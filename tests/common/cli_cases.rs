@@ -9,7 +9,7 @@
 //! `tests/layout.rs` checks that both runners run every case here.
 #![allow(dead_code)] // a runner that lacks a case fails the layout test, not the build
 
-use super::command::names_in;
+use super::command::{names_in, scene_path};
 use super::program::Program;
 use std::path::Path;
 use std::process::Stdio;
@@ -20,7 +20,7 @@ fn project_path(relative: &str) -> std::path::PathBuf {
 
 /// Copies the course scene `name` into `folder`.
 fn scene_in(folder: &Path, name: &str) {
-    std::fs::copy(project_path(&format!("scenes/{name}")), folder.join(name)).unwrap();
+    std::fs::copy(scene_path(name), folder.join(name)).unwrap();
 }
 
 pub(crate) fn renders_and_exits_zero(program: &Program) {

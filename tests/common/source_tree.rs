@@ -70,15 +70,11 @@ pub(crate) fn crate_references(text: &str, depth: usize) -> BTreeSet<Vec<String>
     found
 }
 
-/// The modules a file in module `own` uses: `crate::…` and `super::…` paths, each cut to the
-/// longest prefix that is a module of the tree.
-pub(crate) fn used_modules(
-    text: &str,
-    own: &[String],
-    modules: &BTreeSet<Vec<String>>,
-) -> BTreeSet<Vec<String>> {
-    let mut used = BTreeSet::new();
-    for (start, _) in text
+/// Every path a file in module `own` names from the crate's root or a parent (`crate::…`,
+/// `super::…`, groups expanded), as a path from the crate's root: `super` and `self` resolved.
+pub(crate) fn named_paths(text: &str, own: &[String]) -> Vec<Vec<String>> {
+    let mut named = Vec::new();
+    for (start, word) in text
         .match_indices("crate::")
         .chain(text.match_indices("super::"))
     {
@@ -86,32 +82,58 @@ pub(crate) fn used_modules(
         if before.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == ':') {
             continue; // part of a longer path (super::super::, raytracer::crate…)
         }
-        let path: String = text[start..]
-            .chars()
-            .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == ':')
-            .collect();
-        let mut parts: Vec<String> = Vec::new();
-        for (index, part) in path.split("::").filter(|p| !p.is_empty()).enumerate() {
-            match part {
-                "crate" if index == 0 => parts.clear(),
-                "super" if index == 0 || parts.len() < own.len() => {
-                    if parts.is_empty() {
-                        parts = own.to_vec();
+        // A file's `super` is its parent module.
+        let base = if word == "super::" {
+            &own[..own.len().saturating_sub(1)]
+        } else {
+            &[]
+        };
+        for path in expanded_paths(base, &text[start + word.len()..]) {
+            let mut resolved: Vec<String> = Vec::new();
+            for part in path {
+                match part.as_str() {
+                    "super" => {
+                        resolved.pop();
                     }
-                    // A file's `super` is its parent module.
-                    parts.pop();
+                    "self" => {}
+                    _ => resolved.push(part),
                 }
-                _ => parts.push(part.to_owned()),
             }
-        }
-        while !parts.is_empty() && !modules.contains(&parts) {
-            parts.pop();
-        }
-        if !parts.is_empty() {
-            used.insert(parts);
+            named.push(resolved);
         }
     }
-    used
+    named
+}
+
+/// The longest start of `path` that is one of `modules` (empty when none is).
+pub(crate) fn module_of(path: &[String], modules: &BTreeSet<Vec<String>>) -> Vec<String> {
+    let mut module = path.to_vec();
+    while !module.is_empty() && !modules.contains(&module) {
+        module.pop();
+    }
+    module
+}
+
+/// The modules a file in module `own` uses: its [`named_paths`], each cut to the longest prefix
+/// that is a module of the tree.
+pub(crate) fn used_modules(
+    text: &str,
+    own: &[String],
+    modules: &BTreeSet<Vec<String>>,
+) -> BTreeSet<Vec<String>> {
+    named_paths(text, own)
+        .iter()
+        .map(|path| module_of(path, modules))
+        .filter(|module| !module.is_empty())
+        .collect()
+}
+
+/// A project file's path from the project's folder, with `/` between its parts.
+pub(crate) fn relative_name(file: &Path) -> String {
+    file.strip_prefix(env!("CARGO_MANIFEST_DIR"))
+        .unwrap()
+        .to_string_lossy()
+        .replace('\\', "/")
 }
 
 /// The paths a `use` (or a path in code) starting at `rest` names, its groups expanded: `a::{b,
