@@ -1,7 +1,7 @@
 //! The course's command run RUNS times in one process, as the binary runs it once
 //! (`raytracer::cli::run::run`: load, draw and write the files): prints the first run's
 //! `render_ms` (cold: a new process, its memory and thread pool fresh) and the median of the
-//! others' (warm). The files go to a temporary folder. `scripts/command-vs-cpp.sh` puts them
+//! others' (warm). The files go to a temporary folder. `cargo xtask report command-vs-cpp` puts them
 //! beside the command's own figures:
 //!
 //! ```sh

@@ -4,7 +4,7 @@
 //! scene file's own camera at WIDTH×HEIGHT pixels. The first frame in the process is the cold one
 //! (fresh pages, threads starting); the warm figure is the median of the next RUNS frames, each
 //! after GAP_MS of idling when given.
-//! `scripts/scaling.sh` runs it pinned to 1, 2, 4, … cores, to show which phases stop scaling:
+//! `cargo xtask report scaling` runs it pinned to 1, 2, 4, … cores, to show which phases stop scaling:
 //!
 //! ```sh
 //! cargo run --release --example frame_phases -- SCENE WIDTH HEIGHT [RUNS [GAP_MS]]

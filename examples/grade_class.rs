@@ -8,7 +8,7 @@
 //! Each submission is a program of the student caster (`examples/support/student.rs`; one to
 //! three behaviours of non-round values drawn from its seed, as in the generated corpus; every
 //! fifth one the course's own program), its seven command lines' images written as TGA files.
-//! REPORT keeps the class's report there (`scripts/reports.sh grading` screenshots it).
+//! REPORT keeps the class's report there (`cargo xtask report grading` screenshots it).
 //! The whole `raytracer grade` command is timed, as a teacher runs it. Every cell of the report is
 //! then judged against the program's behaviours (`examples/support/judge.rs`): a statement the
 //! program does not make is wrong. SUBMISSIONS defaults to 100.

@@ -80,7 +80,7 @@ fn viewer_frame_ms(scene: &Scene, runs: usize) -> f64 {
 }
 
 /// The table of the last window report (`docs/window-frame-times.md`, which
-/// `scripts/window-frame-times.sh` writes: it needs Xvfb and xdotool, so it runs apart), as a
+/// `cargo xtask report window-frame-times` writes: it needs Xvfb and xdotool, so it runs apart), as a
 /// section of this report: the same views in the real window beside this run's dense rows.
 fn in_window_section() -> String {
     let source = "docs/window-frame-times.md";
@@ -88,7 +88,7 @@ fn in_window_section() -> String {
     match std::fs::read_to_string(source) {
         Ok(report) => {
             section.push_str(
-                "The same views in the real window, copied from the last run of `scripts/window-frame-times.sh` ([window-frame-times.md](window-frame-times.md), which says how each column is measured; it runs apart, under Xvfb, so its figures come from its own run, not this one):\n\n",
+                "The same views in the real window, copied from the last run of `cargo xtask report window-frame-times` ([window-frame-times.md](window-frame-times.md), which says how each column is measured; it runs apart, under Xvfb, so its figures come from its own run, not this one):\n\n",
             );
             for line in report.lines().filter(|line| line.starts_with('|')) {
                 section.push_str(line);
@@ -98,7 +98,7 @@ fn in_window_section() -> String {
         Err(error) => {
             let _ = writeln!(
                 section,
-                "No window report to copy ({source}: {error}); `scripts/window-frame-times.sh` makes one."
+                "No window report to copy ({source}: {error}); `cargo xtask report window-frame-times` makes one."
             );
         }
     }

@@ -1,6 +1,6 @@
 //! The README's pictures of exploring a scene, rendered from the real viewer driven by
 //! egui_kittest (wgpu; Mesa's lavapipe where there is no GPU). Run through
-//! `scripts/readme-screenshots.sh`, which numbers the marked spots with ImageMagick:
+//! `cargo xtask screenshots readme`, which numbers the marked spots with ImageMagick:
 //!
 //! ```sh
 //! cargo run --example screenshots -- OUT_FOLDER

@@ -10,7 +10,7 @@
 //! ```
 //!
 //! Prints one line per gap: `gap_us<TAB>step_us<TAB>work_us<TAB>overhead_us`, each the median of
-//! RUNS steps (default 101; ITEM_US default 20). `scripts/thread-wake.sh` runs it pinned to 1, 2,
+//! RUNS steps (default 101; ITEM_US default 20). `cargo xtask report thread-wake` runs it pinned to 1, 2,
 //! 4, … cores.
 
 use std::hint::black_box;

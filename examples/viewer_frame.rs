@@ -2,7 +2,7 @@
 //! (render, both textures, histogram: `raytracer::app::render_job::prepare_frame`) of a scene file's own
 //! camera at WIDTH×HEIGHT pixels, median of RUNS, in milliseconds; with GAP_MS, each frame after
 //! that many milliseconds of idling, as frames come in a window (its threads asleep, its caches
-//! cooled by whatever else ran). `scripts/window-frame-times.sh` puts both beside the frame times
+//! cooled by whatever else ran). `cargo xtask report window-frame-times` puts both beside the frame times
 //! the window logged:
 //!
 //! ```sh

@@ -22,7 +22,7 @@ use raytracer::{
 };
 
 /// In a browser page the viewer is started by the page's script, through this handle
-/// (`scripts/web.sh` builds the page).
+/// (`cargo xtask web` builds the page).
 #[cfg(all(target_arch = "wasm32", feature = "gui"))]
 pub use raytracer::app::web::WebHandle;
 

@@ -1,5 +1,5 @@
 //! The frame's phase timings (`raytracer::render::phases`), which `examples/frame_phases` and
-//! `scripts/scaling.sh` report: a dense frame names every phase of its passes, a sparse one its
+//! `cargo xtask report scaling` report: a dense frame names every phase of its passes, a sparse one its
 //! own, and a measurement reports its own work alone.
 
 use raytracer::render::depth_map::DepthRange;

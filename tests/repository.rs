@@ -1,8 +1,8 @@
 //! The repository stands alone: a clone holds everything its code, manifests and pages name.
 //! * no file names a path outside the repository (a sibling folder reached with `..`), or a
 //!   specification it does not hold: the one it relies on is `docs/spec.md`;
-//! * every repository path written in the source, the tests, the scripts, the manifests and the
-//!   pages (`src/…`, `docs/…`, `scripts/…`, …) exists, and so does every relative link of a
+//! * every repository path written in the source, the tests, the chores, the manifests and the
+//!   pages (`src/…`, `docs/…`, `xtask/…`, …) exists, and so does every relative link of a
 //!   Markdown page.
 //!
 //! Written paths are read as a newcomer would: a word that starts with one of the repository's
@@ -18,7 +18,7 @@ fn root() -> &'static Path {
 
 /// Folders whose files are the project's text (not data, not third-party code, not builds).
 const TEXT_FOLDERS: [&str; 11] = [
-    "src", "tests", "examples", "benches", "bench", "scripts", "docs", "fuzz", "web", ".ci",
+    "src", "tests", "examples", "benches", "bench", "xtask", "docs", "fuzz", "web", ".ci",
     ".github",
 ];
 const TEXT_FILES: [&str; 6] = [
@@ -51,13 +51,14 @@ const MADE_BY_BUILDS: [&str; 4] = [
 ];
 
 /// Top-level names a written repository path starts with.
-const PATH_STARTS: [&str; 13] = [
+const PATH_STARTS: [&str; 14] = [
     "src/",
     "tests/",
     "examples/",
     "benches/",
     "bench/",
     "scripts/",
+    "xtask/",
     "docs/",
     "fuzz/",
     "web/",
@@ -258,8 +259,8 @@ fn every_relative_link_of_a_markdown_page_exists() {
 #[test]
 fn the_path_reader_finds_paths_and_leaves_families_and_longer_paths() {
     assert_eq!(
-        written_paths("see `src/lib.rs`, docs/spec.md. and scripts/test.sh"),
-        ["src/lib.rs", "docs/spec.md", "scripts/test.sh"]
+        written_paths("see `src/lib.rs`, docs/spec.md. and xtask/chores/test.sh"),
+        ["src/lib.rs", "docs/spec.md", "xtask/chores/test.sh"]
     );
     assert!(
         written_paths("target/tests/x.rs /tmp/src/a.rs docs/NAME.md docs/*.md $OUT/docs/a")

@@ -183,7 +183,7 @@ fn a_rename_that_fails_midway_puts_back_every_file_already_replaced() {
             .args(["-input", scene, "-size", "50", "50"])
             .args(["-output", "keep.tga", "-depth", "9", "10", "d.tga"])
             .output()
-            .expect("strace runs (scripts/test.sh installs it)");
+            .expect("strace runs (cargo xtask test installs it)");
         let text = assert_one_line_error(&output);
         assert_eq!(output.status.code(), Some(1), "{text}");
         assert!(text.contains("d.tga: cannot write"), "{text}");

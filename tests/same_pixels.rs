@@ -5,7 +5,7 @@
 //!
 //! * Natively, `cargo test` checks the record (`RAYTRACER_BLESS=1 cargo test --test same_pixels`
 //!   writes it again, for a deliberate change of the renderer).
-//! * In WebAssembly, `bash scripts/web.sh test` runs this file with wasm-bindgen-test under Node,
+//! * In WebAssembly, `cargo xtask web test` runs this file with wasm-bindgen-test under Node,
 //!   so the page's renderer must give the native renderer's frames bit for bit.
 //!
 //! The digest (FNV-1a, 64 bits) is written here, sharing no code with the renderer.

@@ -3,7 +3,7 @@
 //! that both images are on screen: the red disc of the colour image and, to its right, the grey
 //! disc of the depth image (white at its centre, t = 9, darkening outwards).
 //!
-//! Needs `Xvfb` and `import` (scripts/test.sh installs them); the test fails, with that message,
+//! Needs `Xvfb` and `import` (cargo xtask test installs them); the test fails, with that message,
 //! where they are missing.
 #![cfg(feature = "gui")]
 

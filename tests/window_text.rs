@@ -2,7 +2,7 @@
 //! Chinese, Japanese, Korean, Cyrillic, Greek and Arabic is opened under Xvfb, and the viewer's
 //! frame log says how many characters of the name, as the status bar shows it, no font has (each
 //! would be drawn as a box). egui's own fonts cover Latin, Cyrillic and Greek; the rest must come
-//! from the system's fonts (scripts/test.sh installs a CJK font, WenQuanYi Micro Hei, beside
+//! from the system's fonts (cargo xtask test installs a CJK font, WenQuanYi Micro Hei, beside
 //! DejaVu Sans, which has Arabic).
 //!
 //! `RAYTRACER_KEEP_TEXT_SCREENSHOT=FILE` keeps the screenshot, to look at.

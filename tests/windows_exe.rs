@@ -6,7 +6,7 @@
 //! course's seven commands write the bytes the Linux binary writes (and the course's colour
 //! images), and a file another program holds open is not replaced.
 //!
-//! `bash scripts/windows.sh test` builds the .exe and its test scaffolding and runs these with
+//! `cargo xtask windows test` builds the .exe and its test scaffolding and runs these with
 //! `RAYTRACER_WINDOWS_EXE` naming it; a plain `cargo test` leaves them out (ignored).
 
 #[path = "common/cli_cases.rs"]
@@ -44,7 +44,7 @@ fn scene_in(folder: &Path, name: &str) {
     std::fs::copy(project_path(&format!("scenes/{name}")), folder.join(name)).unwrap();
 }
 
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[ignore = "runs the Windows .exe under Wine: cargo xtask windows test"]
 #[test]
 fn the_course_commands_write_the_linux_binarys_bytes_and_the_courses_colours() {
     let windows = tempfile::tempdir().unwrap();
@@ -92,7 +92,7 @@ fn the_course_commands_write_the_linux_binarys_bytes_and_the_courses_colours() {
     }
 }
 
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[ignore = "runs the Windows .exe under Wine: cargo xtask windows test"]
 #[test]
 fn a_file_another_program_holds_open_is_not_replaced_and_the_error_says_why() {
     /// `hold_open.exe` holding a file, ended when dropped (also when an assertion fails).
@@ -162,55 +162,55 @@ fn a_file_another_program_holds_open_is_not_replaced_and_the_error_says_why() {
 
 // The cases the native binary runs too (`tests/common/cli_cases.rs`), against the `.exe`.
 
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[ignore = "runs the Windows .exe under Wine: cargo xtask windows test"]
 #[test]
 fn renders_and_exits_zero() {
     cli_cases::renders_and_exits_zero(&Program::windows());
 }
 
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[ignore = "runs the Windows .exe under Wine: cargo xtask windows test"]
 #[test]
 fn either_output_alone_is_enough() {
     cli_cases::either_output_alone_is_enough(&Program::windows());
 }
 
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[ignore = "runs the Windows .exe under Wine: cargo xtask windows test"]
 #[test]
 fn usage_errors_exit_two_with_one_line_and_write_nothing() {
     cli_cases::usage_errors_exit_two_with_one_line_and_write_nothing(&Program::windows());
 }
 
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[ignore = "runs the Windows .exe under Wine: cargo xtask windows test"]
 #[test]
 fn scene_and_file_errors_exit_one_with_their_line_and_column() {
     cli_cases::scene_and_file_errors_exit_one_with_their_line_and_column(&Program::windows());
 }
 
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[ignore = "runs the Windows .exe under Wine: cargo xtask windows test"]
 #[test]
 fn an_unwritable_output_leaves_every_old_file_as_it_was() {
     cli_cases::an_unwritable_output_leaves_every_old_file_as_it_was(&Program::windows());
 }
 
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[ignore = "runs the Windows .exe under Wine: cargo xtask windows test"]
 #[test]
 fn an_output_that_names_the_input_or_another_output_is_refused() {
     cli_cases::an_output_that_names_the_input_or_another_output_is_refused(&Program::windows());
 }
 
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[ignore = "runs the Windows .exe under Wine: cargo xtask windows test"]
 #[test]
 fn comparing_exits_zero_on_the_courses_image_and_three_on_another() {
     cli_cases::comparing_exits_zero_on_the_courses_image_and_three_on_another(&Program::windows());
 }
 
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[ignore = "runs the Windows .exe under Wine: cargo xtask windows test"]
 #[test]
 fn help_prints_usage_and_exits_zero() {
     cli_cases::help_prints_usage_and_exits_zero(&Program::windows());
 }
 
-#[ignore = "runs the Windows .exe under Wine: bash scripts/windows.sh test"]
+#[ignore = "runs the Windows .exe under Wine: cargo xtask windows test"]
 #[test]
 fn a_closed_pipe_ends_the_program_quietly() {
     cli_cases::a_closed_pipe_ends_the_program_quietly(&Program::windows());

@@ -1,6 +1,6 @@
 //! The frame log: with `RAYTRACER_FRAME_LOG=FILE` in the environment the viewer appends a line
 //! per frame it draws, so a script driving the real window can measure what the user sees
-//! (`scripts/window-frame-times.sh`):
+//! (`cargo xtask report window-frame-times`):
 //!
 //! * `renderer NAME`: first, the renderer painting the window (`glow` or `wgpu`);
 //! * `ui MS`: the UI thread's time for the previous frame (egui's layout, tessellation and paint,

@@ -4,7 +4,7 @@
 //! The window is painted with OpenGL (glow) unless `RAYTRACER_RENDERER=wgpu` asks for wgpu. Where
 //! there is no GPU, both paint on the CPU with Mesa, on the cores the render worker needs, and
 //! OpenGL's painter (llvmpipe) costs about a fifth of the CPU per UI frame that Vulkan's
-//! (lavapipe, under wgpu) does: `scripts/window-frame-times.sh` measures both
+//! (lavapipe, under wgpu) does: `cargo xtask report window-frame-times` measures both
 //! (`docs/window-frame-times.md`, `docs/window-frame-times-wgpu.md`).
 //! If OpenGL cannot be started and no renderer was asked for, wgpu is tried (and standard error
 //! says why).

@@ -2,7 +2,7 @@
 //! of its own syncs them whenever enough is new ([`Writeback::written`]), so the sync that
 //! completes a file ([`super::atomic::Staging::finish`]) finds little left to write. The
 //! guarantee is the final sync's, as before; only most of its wait moves earlier, beside work the
-//! processor does anyway. `scripts/command-vs-cpp.sh` measures what syncing costs the command.
+//! processor does anyway. `cargo xtask report command-vs-cpp` measures what syncing costs the command.
 //!
 //! The thread syncs handles that share each file with its writer, and the kernel reports a
 //! failed write to the disk once per open file: the first error an early sync meets is kept and

@@ -2,7 +2,7 @@
 //! dense frame's cull, "sort and bin" (a pass's depth sort, its discs placed and binned) and
 //! coarse depth, binning, drawing, shading, and the viewer's histogram and textures), timed when
 //! asked for by [`measure`]. `examples/frame_phases` prints them at each thread count, to find the
-//! parts that do not scale with cores (`scripts/scaling.sh`). Off unless measuring: a phase then
+//! parts that do not scale with cores (`cargo xtask report scaling`). Off unless measuring: a phase then
 //! costs one relaxed atomic load.
 //!
 //! The recording is process-wide: phases that other threads run while [`measure`] runs are

@@ -1,6 +1,6 @@
 //! The program a command-line case runs: the native `raytracer` binary cargo built, or the
 //! Windows `raytracer.exe` under Wine (named by `RAYTRACER_WINDOWS_EXE`;
-//! `bash scripts/windows.sh test`). The cases in `common/cli_cases.rs` take one and run the same
+//! `cargo xtask windows test`). The cases in `common/cli_cases.rs` take one and run the same
 //! steps against either; what differs between the two (how a path is spelled, whether names
 //! differ by case, Wine's own lines on standard error) is answered here.
 #![allow(dead_code)] // each test file uses its own share
@@ -81,9 +81,8 @@ impl Program {
 
 /// The Windows `.exe` under test, named by `RAYTRACER_WINDOWS_EXE`.
 pub(crate) fn windows_exe() -> PathBuf {
-    let exe = std::env::var_os("RAYTRACER_WINDOWS_EXE").expect(
-        "RAYTRACER_WINDOWS_EXE names the Windows raytracer.exe (bash scripts/windows.sh test)",
-    );
+    let exe = std::env::var_os("RAYTRACER_WINDOWS_EXE")
+        .expect("RAYTRACER_WINDOWS_EXE names the Windows raytracer.exe (cargo xtask windows test)");
     PathBuf::from(exe)
 }
 

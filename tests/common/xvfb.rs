@@ -1,5 +1,5 @@
 //! A real X server for the tests that run the real viewer window: Xvfb on a free display, and
-//! screenshots of it. Needs `Xvfb` and ImageMagick's `import` (scripts/test.sh installs them).
+//! screenshots of it. Needs `Xvfb` and ImageMagick's `import` (cargo xtask test installs them).
 
 use std::io::{BufRead, BufReader, Read};
 use std::path::Path;
@@ -58,7 +58,7 @@ pub(crate) fn start_xvfb() -> (KillOnDrop, String) {
         .stdout(Stdio::piped())
         .stderr(Stdio::null())
         .spawn()
-        .expect("Xvfb is needed for this test (scripts/test.sh installs it)");
+        .expect("Xvfb is needed for this test (cargo xtask test installs it)");
     let mut xvfb = KillOnDrop(child);
     // Read on a thread, so that an Xvfb that hangs fails the test after 10 s (and is killed).
     let (sender, named) = std::sync::mpsc::channel();
@@ -87,7 +87,7 @@ pub(crate) fn screenshot(display: &str, path: &Path) -> Option<RgbImage> {
         .arg(path)
         .stderr(Stdio::null())
         .status()
-        .expect("ImageMagick's import is needed for this test (scripts/test.sh installs it)");
+        .expect("ImageMagick's import is needed for this test (cargo xtask test installs it)");
     if !status.success() {
         return None;
     }

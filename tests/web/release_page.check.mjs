@@ -1,8 +1,8 @@
 // The page's release archive as a course would host it: unpacked and served by a plain static
-// server (scripts/release-test.sh starts `python3 -m http.server` on the unpacked folder and
+// server (cargo xtask release test starts `python3 -m http.server` on the unpacked folder and
 // names it in RAYTRACER_PAGE_URL). Headless Chromium shows a course scene with the native
 // program's pixels, and the course scenes' menu opens another. Named `.check.mjs`, not
-// `.test.mjs`: `node --test tests/web/` (scripts/web.sh test) has no served archive to open.
+// `.test.mjs`: `node --test tests/web/` (cargo xtask web test) has no served archive to open.
 import { after, before, test } from "node:test";
 import assert from "node:assert/strict";
 import path from "node:path";
@@ -13,7 +13,7 @@ const shots = process.env.RAYTRACER_SHOTS ?? ".";
 let browser;
 
 before(async () => {
-  assert.ok(url, "RAYTRACER_PAGE_URL names the served page (scripts/release-test.sh)");
+  assert.ok(url, "RAYTRACER_PAGE_URL names the served page (cargo xtask release test)");
   browser = await launch();
 });
 

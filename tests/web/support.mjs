@@ -9,7 +9,7 @@ import http from "node:http";
 import os from "node:os";
 import path from "node:path";
 
-/** The folders and programs the tests use (scripts/web.sh test sets them). */
+/** The folders and programs the tests use (cargo xtask web test sets them). */
 export const env = {
   site: process.env.RAYTRACER_WEB_SITE ?? "target/web",
   raytracer: process.env.RAYTRACER_BIN ?? "target/release/raytracer",

@@ -1,5 +1,5 @@
 // The viewer's web build in a real browser: Debian's headless Chromium driven by playwright-core
-// (scripts/web.sh test builds the site and the native binary, then runs this with node --test).
+// (cargo xtask web test builds the site and the native binary, then runs this with node --test).
 // egui's canvas has no DOM to query: the tests drive it with the mouse, the keyboard and file
 // drops at canvas coordinates, and read what is on screen through the page's `window.raytracer`
 // handle and screenshots; the native command line is the oracle for every picture.
@@ -191,7 +191,7 @@ test("every course scene and a dense scene render the native bytes in the page",
     const frame = await page.evaluate(() => Array.from(window.raytracer.colour_rgb()));
     assert.ok(Buffer.from(frame).equals(native.colour.rgb), `${path.basename(file)}: the page's frame is the native frame`);
   }
-  assert.ok(dense, "RAYTRACER_DENSE_SCENE names the dense scene (scripts/web.sh test makes it)");
+  assert.ok(dense, "RAYTRACER_DENSE_SCENE names the dense scene (cargo xtask web test makes it)");
   await context.close();
 });
 

@@ -1,0 +1,187 @@
+#!/usr/bin/env bash
+# The downloads: one archive per system and the page, made, then tested as a user meets them.
+#
+# The release artefacts: one download per system, and the page as a folder for any static host.
+#   cargo xtask release build     all of them into target/artefacts/, with SHA256SUMS:
+#       raytracer-VERSION-x86_64-linux.tar.gz    raytracer (viewer and command line)
+#       raytracer-VERSION-x86_64-windows.zip     raytracer.exe (mingw-w64, icon and version info)
+#       raytracer-VERSION-web.zip                the page (index.html, the wasm, the course scenes)
+#     each with README.md, the licences (LICENSE-MIT, LICENSE-APACHE), the third-party notice
+#     (THIRD-PARTY-LICENSES.html, by cargo-about; a licence not allowed in about.toml fails the
+#     build) and the course scenes;
+#   cargo xtask release linux | windows | web | macos    one of them (macos: on a Mac, as
+#     the release workflow builds it: raytracer-VERSION-universal-macos.tar.gz, one program for
+#     Apple silicon and Intel);
+#   cargo xtask release test [linux] [windows] [page]    the artefacts in target/artefacts/
+#     as a user meets them (xtask/release/test.sh says what each part checks);
+#   cargo xtask release sums      SHA256SUMS of what target/artefacts/ holds;
+#   cargo xtask release sizes     docs/release-sizes.md: each archive's size, and the
+#     programs' sizes unpacked, from what target/artefacts/ holds.
+# The programs are built with the `dist` profile (Cargo.toml): the release profile the
+# benchmarks measure, without debug information; the system's strip removes the symbols. Installs what it lacks (cargo-about, the Windows toolchain).
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+
+version=$(sed -n 's/^version = "\(.*\)"$/\1/p;T;q' Cargo.toml)
+dist=target/artefacts
+tools=target/tools
+about_version=0.8.2
+
+notice() {
+  if [ "$("$tools/bin/cargo-about" --version 2>/dev/null | awk '{print $2}')" != "$about_version" ]; then
+    echo "release.sh: installing cargo-about $about_version"
+    cargo install cargo-about --version "$about_version" --locked --root "$tools" --quiet
+  fi
+  mkdir -p "$dist"
+  # The default features: what the programs are built with (the viewer and mimalloc).
+  "$tools/bin/cargo-about" generate --fail --locked -o "$dist/THIRD-PARTY-LICENSES.html" about.hbs
+}
+
+# The README and the licences, which every artefact carries, into folder $1.
+papers() {
+  cp README.md LICENSE-MIT LICENSE-APACHE "$dist/THIRD-PARTY-LICENSES.html" "$1/"
+}
+
+# What the programs' archives carry beside the program, into folder $1: the papers and the
+# course scenes with their command lines.
+extras() {
+  local folder=$1
+  papers "$folder"
+  mkdir -p "$folder/scenes"
+  cp scenes/*.txt scenes/assignment1.commands scenes/README.md "$folder/scenes/"
+}
+
+# A reproducible archive: files in name order, owner and times fixed.
+tarball() {
+  local name=$1
+  tar --sort=name --owner=0 --group=0 --numeric-owner --mtime='2000-01-01 00:00Z' \
+    -C "$dist" -czf "$dist/$name.tar.gz" "$name"
+  rm -rf "${dist:?}/$name"
+}
+
+# A zip of folder $dist/$1's files, without the folder: Windows' "Extract All" and a web host's
+# folder take the files as they are.
+zipped() {
+  local name=$1
+  rm -f "$dist/$name.zip"
+  (cd "$dist/$name" && find . -type f | LC_ALL=C sort | TZ=UTC zip -X -q -@ "../$name.zip")
+}
+
+linux() {
+  [ -f "$dist/THIRD-PARTY-LICENSES.html" ] || notice
+  cargo build --profile dist --bin raytracer
+  local name="raytracer-$version-x86_64-linux"
+  rm -rf "${dist:?}/$name"
+  mkdir -p "$dist/$name"
+  strip -o "$dist/$name/raytracer" target/dist/raytracer
+  extras "$dist/$name"
+  tarball "$name"
+}
+
+macos() {
+  [ -f "$dist/THIRD-PARTY-LICENSES.html" ] || notice
+  local name="raytracer-$version-universal-macos" target
+  rm -rf "${dist:?}/$name"
+  mkdir -p "$dist/$name"
+  for target in aarch64-apple-darwin x86_64-apple-darwin; do
+    cargo build --profile dist --target "$target" --bin raytracer
+  done
+  # One program for Apple silicon and Intel.
+  lipo -create -output "$dist/$name/raytracer" \
+    target/aarch64-apple-darwin/dist/raytracer target/x86_64-apple-darwin/dist/raytracer
+  strip -x "$dist/$name/raytracer"
+  extras "$dist/$name"
+  tarball "$name"
+}
+
+windows() {
+  [ -f "$dist/THIRD-PARTY-LICENSES.html" ] || notice
+  cargo xtask windows install
+  local target=x86_64-pc-windows-gnu
+  cargo build --profile dist --target "$target" --bin raytracer
+  local name="raytracer-$version-x86_64-windows"
+  rm -rf "${dist:?}/$name"
+  mkdir -p "$dist/$name"
+  # The symbol table (8 MB of 36): mingw-w64's own strip removes it.
+  x86_64-w64-mingw32-strip -o "$dist/$name/raytracer.exe" "target/$target/dist/raytracer.exe"
+  extras "$dist/$name"
+  zipped "$name"
+  rm -rf "${dist:?}/$name"
+}
+
+web() {
+  [ -f "$dist/THIRD-PARTY-LICENSES.html" ] || notice
+  cargo xtask web build
+  local name="raytracer-$version-web"
+  rm -rf "${dist:?}/$name"
+  mkdir -p "$dist/$name"
+  cp -r target/web/. "$dist/$name/"
+  papers "$dist/$name"
+  zipped "$name"
+  rm -rf "${dist:?}/$name"
+}
+
+sums() {
+  (cd "$dist" && sha256sum -- raytracer-"$version"-* > SHA256SUMS)
+  echo "release.sh: target/artefacts/ (version $version):"
+  (cd "$dist" && for file in raytracer-"$version"-*; do
+    stat -c '%s %n' "$file"
+  done) | awk '{ printf "  %-40s %6.1f MB\n", $2, $1 / 1e6 }'
+
+}
+
+sizes() {
+  local out=docs/release-sizes.md
+  {
+    echo "# Release archives: sizes"
+    echo
+    echo "Made by \`cargo xtask release build\` then \`cargo xtask release sizes\`, from commit"
+    echo "$(git describe --always --dirty --abbrev=12) (version $version; the target is 15 MB for each download)."
+    echo
+    echo "| archive | compressed | the program in it, unpacked |"
+    echo "|---|---|---|"
+    local file program
+    for file in "$dist"/raytracer-"$version"-*; do
+      case "$file" in
+        *.tar.gz) program=$(tar -tvzf "$file" | awk '$6 ~ /\/raytracer$/ { print $3 }') ;;
+        *web.zip) program=$(unzip -l "$file" | awk '$4 ~ /raytracer_bg.wasm$/ { print $1 }') ;;
+        *.zip) program=$(unzip -l "$file" | awk '$4 ~ /raytracer.exe$/ { print $1 }') ;;
+      esac
+      awk -v name="$(basename "$file")" -v size="$(stat -c %s "$file")" -v program="$program" \
+        'BEGIN { printf "| %s | %.1f MB | %.1f MB |\n", name, size / 1e6, program / 1e6 }'
+    done
+    local linux="$dist/raytracer-$version-x86_64-linux.tar.gz"
+    if [ -f "$linux" ]; then
+      local glibc
+      glibc=$(tar -xzOf "$linux" "raytracer-$version-x86_64-linux/raytracer" >"$dist/linux-program" &&
+        objdump -T "$dist/linux-program" | grep -o 'GLIBC_[0-9.]*' | sort -uV | tail -n 1)
+      rm -f "$dist/linux-program"
+      echo
+      echo "The Linux program needs ${glibc/GLIBC_/glibc } or newer (the newest version its symbols"
+      echo "name, \`objdump -T\`): Debian 12, Ubuntu 22.04 and later."
+    fi
+  } >"$out"
+  echo "release.sh: wrote $out"
+}
+
+case "${1:-}" in
+  build)
+    rm -rf "$dist"
+    notice
+    linux
+    windows
+    web
+    sums
+    ;;
+  linux | windows | web | macos | notice | sums | sizes)
+    "$1"
+    ;;
+  test)
+    shift
+    bash xtask/release/test.sh "$@"
+    ;;
+  *)
+    echo "usage: cargo xtask release build | linux | windows | web | macos | notice | sums | sizes | test [PART…]" >&2
+    exit 2
+    ;;
+esac

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# The whole test suite: installs the system packages it needs, then runs cargo test.
+#   cargo xtask test [ARGUMENT…]   (ARGUMENTs go to cargo test: `cargo xtask test --test cli`)
+#
+# Runs the whole test suite on a fresh Debian/Ubuntu machine: installs the system packages the
+# viewer tests need (only those missing; needs root or sudo), then `cargo test` of the library,
+# the program and the tests. The examples and benchmarks are not built here (clippy
+# --all-targets type-checks them in CI); arguments go to `cargo test`, and one that chooses
+# targets (`--test cli`, `--examples`...) replaces that default.
+#   * xvfb, xauth, xdotool, imagemagick: the test that starts the real viewer window and takes a
+#     screenshot (tests/window_screenshot.rs)
+#   * mesa-vulkan-drivers, libvulkan1, libgl1-mesa-dri, libegl1: software GPU (lavapipe/llvmpipe)
+#     for the window and for egui_kittest's wgpu rendering
+#   * libxkbcommon-x11-0, libx11-xcb1, libxcursor1, libxrandr2, libxi6: what winit loads under X11
+#   * fonts-dejavu-core: a font for the screenshot's window decorations (none are drawn by Xvfb), and
+#     Arabic; fonts-wqy-microhei: Chinese, Japanese and Korean (tests/window_text.rs: the viewer
+#     draws text in other scripts from the system's fonts)
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+
+packages=(xvfb xauth xdotool imagemagick strace mesa-vulkan-drivers libvulkan1 libgl1-mesa-dri libegl1
+          libxkbcommon-x11-0 libx11-xcb1 libxcursor1 libxrandr2 libxi6 fonts-dejavu-core fonts-wqy-microhei)
+if command -v dpkg >/dev/null 2>&1; then
+  missing=()
+  for package in "${packages[@]}"; do
+    dpkg -s "$package" >/dev/null 2>&1 || missing+=("$package")
+  done
+  if [ ${#missing[@]} -gt 0 ]; then
+    sudo=""
+    [ "$(id -u)" -ne 0 ] && sudo="sudo"
+    echo "installing: ${missing[*]}"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  fi
+fi
+
+# The default selection, unless the arguments choose targets themselves.
+selected=no
+for argument in "$@"; do
+  case "$argument" in
+    --) break ;;
+    --lib | --bin | --bin=* | --bins | --test | --test=* | --tests | --example | --example=* \
+      | --examples | --bench | --bench=* | --benches | --all-targets | --doc) selected=yes ;;
+  esac
+done
+[ "$selected" = yes ] || set -- --lib --bins --tests "$@"
+cargo test "$@"

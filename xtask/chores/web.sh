@@ -1,0 +1,126 @@
+#!/usr/bin/env bash
+# The viewer as a web page: build, serve, test in headless Chromium, measure.
+#   cargo xtask web build         the static site in target/web/ (index.html, raytracer.js,
+#                                 raytracer_bg.wasm, scenes/ with the course scenes): copy it
+#                                 to any web server
+#   cargo xtask web serve [PORT]  builds, then serves target/web/ on 127.0.0.1 (default port
+#                                 8080) and prints the address
+#   cargo xtask web test          builds, runs tests/same_pixels.rs in WebAssembly under Node
+#                                 (wasm-bindgen-test), then the browser tests (tests/web/) in Debian's
+#                                 headless chromium, driven by playwright-core from npm
+#                                 (installs chromium with apt and the npm package when missing)
+#   cargo xtask web report        builds, then measures the page against the native binary:
+#                                 docs/web.md and docs/web-page.png (tests/web/report.mjs)
+# Tools come from the package registries only: the wasm32 target through rustup, and
+# wasm-bindgen-cli through cargo at exactly the version Cargo.lock pins for the wasm-bindgen
+# crate (the two must match), installed under target/tools/.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+
+command=${1:-build}
+site=target/web
+tools=target/tools
+
+bindgen_version() {
+  awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock
+}
+
+install_tools() {
+  rustup target list --installed 2>/dev/null | grep -qx wasm32-unknown-unknown \
+    || rustup target add wasm32-unknown-unknown
+  local version
+  version=$(bindgen_version)
+  if [ -z "$version" ]; then
+    echo "web.sh: Cargo.lock pins no wasm-bindgen" >&2
+    exit 1
+  fi
+  if [ "$("$tools/bin/wasm-bindgen" --version 2>/dev/null | awk '{print $2}')" != "$version" ]; then
+    echo "web.sh: installing wasm-bindgen-cli $version"
+    cargo install wasm-bindgen-cli --version "$version" --root "$tools" --quiet
+  fi
+}
+
+build() {
+  install_tools
+  cargo build --release --target wasm32-unknown-unknown --bin raytracer
+  rm -rf "$site"
+  mkdir -p "$site"
+  "$tools/bin/wasm-bindgen" --target web --no-typescript --out-dir "$site" --out-name raytracer \
+    target/wasm32-unknown-unknown/release/raytracer.wasm
+  cp web/index.html "$site/"
+  mkdir -p "$site/scenes"
+  cp scenes/*.txt "$site/scenes/"
+  echo "web.sh: the site is in $site/ ($(du -k "$site/raytracer_bg.wasm" | cut -f1) KiB of wasm)"
+}
+
+browser_tools() {
+  local missing=()
+  command -v chromium >/dev/null 2>&1 || missing+=(chromium)
+  command -v node >/dev/null 2>&1 || missing+=(nodejs)
+  command -v npm >/dev/null 2>&1 || missing+=(npm)
+  command -v convert >/dev/null 2>&1 || missing+=(imagemagick)
+  # A CJK font for the browser: the page draws a character egui's fonts lack with the browser's
+  # fonts (tests/web: a scene named in other scripts).
+  [ -e /usr/share/fonts/truetype/wqy/wqy-microhei.ttc ] || missing+=(fonts-wqy-microhei)
+  if [ ${#missing[@]} -gt 0 ]; then
+    sudo=""
+    [ "$(id -u)" -ne 0 ] && sudo="sudo"
+    echo "web.sh: installing ${missing[*]}"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  fi
+  (cd tests/web && npm ci --no-audit --no-fund --silent)
+}
+
+# The native binary (the tests' oracle) and a dense scene of 100,000 spheres. The test takes the
+# debug build (its pixels are the release build's; CI has just built its dependencies for the
+# test suite), the report the release build, whose frame times it prints.
+native_tools() {
+  local profile=$1
+  if [ "$profile" = release ]; then
+    cargo build --release --bin raytracer --example generate --example viewer_frame
+  else
+    cargo build --bin raytracer --example generate
+  fi
+  mkdir -p target/web-test
+  [ -f target/web-test/dense_1e5.txt ] \
+    || "target/$profile/examples/generate" --dense 100000 target/web-test/dense_1e5.txt
+}
+
+case "$command" in
+  build)
+    build
+    ;;
+  serve)
+    build
+    port=${2:-8080}
+    echo "web.sh: serving $site on http://127.0.0.1:$port/ (Ctrl-C stops)"
+    exec python3 -m http.server "$port" --bind 127.0.0.1 --directory "$site"
+    ;;
+  test)
+    build
+    # The renderer in WebAssembly under Node: the native frames, bit for bit (tests/same_pixels.rs).
+    # The renderer needs no viewer: built without it, the test leaves egui's stack unbuilt.
+    CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER="$PWD/$tools/bin/wasm-bindgen-test-runner" \
+      cargo test --target wasm32-unknown-unknown --no-default-features --test same_pixels
+    browser_tools
+    native_tools debug
+    RAYTRACER_WEB_SITE=target/web RAYTRACER_BIN=target/debug/raytracer \
+      RAYTRACER_SCENES=scenes RAYTRACER_DENSE_SCENE=target/web-test/dense_1e5.txt \
+      RAYTRACER_CHROMIUM="$(command -v chromium)" \
+      node --test --test-concurrency=1 tests/web/
+    ;;
+  report)
+    build
+    browser_tools
+    native_tools release
+    RAYTRACER_WEB_SITE=target/web RAYTRACER_SCENES=scenes \
+      RAYTRACER_DENSE_SCENE=target/web-test/dense_1e5.txt \
+      RAYTRACER_CHROMIUM="$(command -v chromium)" \
+      node tests/web/report.mjs docs/web.md docs/web-page.png
+    ;;
+  *)
+    echo "usage: cargo xtask web build | serve [PORT] | test | report" >&2
+    exit 2
+    ;;
+esac
