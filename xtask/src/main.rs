@@ -125,7 +125,7 @@ fn main() -> ExitCode {
             }
         };
     }
-    let status = Command::new("bash")
+    let status = Command::new(bash())
         .arg(&chore.file)
         .args(&arguments[1..])
         .current_dir(&root)
@@ -137,6 +137,24 @@ fn main() -> ExitCode {
             ExitCode::FAILURE
         }
     }
+}
+
+/// The shell that runs the chores. On Windows, the first `bash.exe` on the PATH that is not
+/// the one in the system folder (WSL's launcher, which Windows would otherwise pick before the
+/// PATH): Git for Windows' bash, as the release workflow's `shell: bash` uses.
+fn bash() -> PathBuf {
+    if cfg!(windows) {
+        let path = std::env::var_os("PATH").unwrap_or_default();
+        for folder in std::env::split_paths(&path) {
+            let lower = folder.to_string_lossy().to_lowercase();
+            let candidate = folder.join("bash.exe");
+            if !lower.contains("system32") && !lower.contains("windowsapps") && candidate.is_file()
+            {
+                return candidate;
+            }
+        }
+    }
+    PathBuf::from("bash")
 }
 
 /// The chore's status; a chore ended by a signal exits 128 + the signal, as a shell reports it.
