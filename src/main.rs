@@ -140,16 +140,16 @@ fn open_viewer(request: raytracer::cli::ViewerRequest) -> ExitCode {
         ));
         return ExitCode::from(1);
     }
-    if let Some(problem) = raytracer::app::environment_problem() {
+    if let Some(problem) = raytracer::app::desktop::window::environment_problem() {
         print_err(&format!("raytracer: {problem}\n"));
         return ExitCode::from(2);
     }
-    if let Some(reason) = raytracer::app::no_display_reason() {
+    if let Some(reason) = raytracer::app::desktop::window::no_display_reason() {
         print_err(&format!("raytracer: {reason}\n"));
         return ExitCode::from(1);
     }
     handle_termination_signals(OnSignal::CloseViewer, remove_temporary_files);
-    let outcome = raytracer::app::run(request);
+    let outcome = raytracer::app::desktop::window::run(request);
     remove_temporary_files();
     if let Some(signal) = raytracer::platform::process::stop_requested() {
         return ExitCode::from(raytracer::platform::process::exit_status_of(signal));

@@ -58,11 +58,8 @@ impl ViewerApp {
             self.status = Some(super::status::Status::error(problem));
             return;
         }
-        // In a browser page files are downloads: there are no folders to create.
-        #[cfg(not(target_arch = "wasm32"))]
-        if let Action::ExportTo(base) = &action
-            && let Some(folder) = crate::export::export_folder(base).filter(|f| !f.is_dir())
-        {
+        // A folder the export would create is asked for first (a browser page has none).
+        if let Some(folder) = self.missing_export_folder(&action) {
             self.writes.pending_replace = Some(PendingReplace {
                 action,
                 existing: Vec::new(),

@@ -1,6 +1,9 @@
 //! The desktop's side of what a browser page does its own way ([`super::web`]): a path opens the
 //! file; the file dialogs are the system's (or, where none can be shown, the typed paths); the
-//! files the viewer writes go into the file system, all or nothing, on a thread of their own.
+//! files the viewer writes go into the file system, all or nothing, on a thread of their own;
+//! and the window itself ([`window`]).
+
+pub mod window;
 
 use std::path::PathBuf;
 
@@ -8,8 +11,10 @@ use std::path::Path;
 
 use super::ViewerApp;
 use super::actions::Action;
-use super::dialogs::{DialogKind, spawn_dialog};
+use super::background::Task;
+use super::dialogs::{DialogKind, PendingDialog};
 use super::status::Status;
+use super::writes::Writes;
 use crate::output::atomic::{FileSet, Stage};
 
 impl ViewerApp {
@@ -19,6 +24,18 @@ impl ViewerApp {
         if let Some(path) = input.or_else(|| self.settings.last_scene.clone()) {
             self.open(&path);
         }
+    }
+
+    /// The folder an export would have to create, which is asked for before it is.
+    #[expect(
+        clippy::unused_self,
+        reason = "a method, as each seam's are: the caller names no seam"
+    )]
+    pub(super) fn missing_export_folder(&self, action: &Action) -> Option<PathBuf> {
+        let Action::ExportTo(base) = action else {
+            return None;
+        };
+        crate::export::export_folder(base).filter(|folder| !folder.is_dir())
     }
 
     /// Opens a file dropped on the window, by its path.
@@ -103,7 +120,7 @@ impl ViewerApp {
             let written = set.commit().map_err(|e| e.to_string())?;
             Ok(format!("{done} {}", full_names(&written)))
         };
-        self.status = Some(self.writes.start(running, write, &self.ctx));
+        self.status = Some(start_write(&mut self.writes, running, write, &self.ctx));
     }
 }
 
@@ -115,4 +132,60 @@ fn full_names(written: &[PathBuf]) -> String {
         .map(|p| p.display().to_string())
         .collect();
     names.join(", ")
+}
+
+/// Starts `write` in the background with [`Writes`] (`ctx` repaints when it is done), unless a write is still
+/// running: what the status bar says meanwhile.
+fn start_write(
+    writes: &mut Writes,
+    running: &str,
+    write: impl FnOnce() -> Result<String, String> + Send + 'static,
+    ctx: &egui::Context,
+) -> Status {
+    if writes.task.is_some() {
+        return Status::error("wait: a file is still being written");
+    }
+    match Task::spawn("export", ctx, move |_| write()) {
+        Ok(task) => {
+            writes.task = Some(task);
+            Status::info(running)
+        }
+        Err(error) => Status::error(format!("cannot start writing: {error}")),
+    }
+}
+
+/// Opens a native dialog (rfd) on its own thread.
+fn spawn_dialog(
+    kind: DialogKind,
+    ctx: &egui::Context,
+    suggested_name: &str,
+) -> std::io::Result<PendingDialog> {
+    let suggested_name = suggested_name.to_owned();
+    let task = Task::spawn("file-dialog", ctx, move |_| {
+        let dialog = rfd::FileDialog::new();
+        match kind {
+            DialogKind::Open => dialog
+                .add_filter("6.837 scene", &["txt"])
+                .add_filter("any file", &["*"])
+                .set_title("Open scene")
+                .pick_file(),
+            DialogKind::Export => dialog
+                .add_filter("PNG", &["png"])
+                .add_filter("TGA", &["tga"])
+                .set_title("Export images")
+                .set_file_name(suggested_name)
+                .save_file(),
+            DialogKind::SaveScene => dialog
+                .add_filter("6.837 scene", &["txt"])
+                .set_title("Save view as scene")
+                .set_file_name(suggested_name)
+                .save_file(),
+            DialogKind::CompareImage(_) => dialog
+                .add_filter("image", &["tga", "png"])
+                .add_filter("any file", &["*"])
+                .set_title("Open an image to compare")
+                .pick_file(),
+        }
+    })?;
+    Ok(PendingDialog { kind, task })
 }

@@ -23,8 +23,8 @@ pub(crate) enum DialogKind {
 /// A dialog that is open (or whose answer has not been read yet).
 #[derive(Debug)]
 pub(crate) struct PendingDialog {
-    kind: DialogKind,
-    task: Task<Option<PathBuf>>,
+    pub(crate) kind: DialogKind,
+    pub(crate) task: Task<Option<PathBuf>>,
 }
 
 /// The dialog's outcome.
@@ -69,43 +69,6 @@ pub(crate) fn dialog_unavailable_reason() -> Option<&'static str> {
 /// [`dialog_unavailable_reason`] from what the environment has.
 fn unavailable_reason(has_session_bus: bool, has_zenity: bool) -> Option<&'static str> {
     (!has_session_bus && !has_zenity).then_some(NO_DIALOG)
-}
-
-/// Opens a native dialog on its own thread.
-#[cfg(not(target_arch = "wasm32"))]
-pub(crate) fn spawn_dialog(
-    kind: DialogKind,
-    ctx: &egui::Context,
-    suggested_name: &str,
-) -> std::io::Result<PendingDialog> {
-    let suggested_name = suggested_name.to_owned();
-    let task = Task::spawn("file-dialog", ctx, move |_| {
-        let dialog = rfd::FileDialog::new();
-        match kind {
-            DialogKind::Open => dialog
-                .add_filter("6.837 scene", &["txt"])
-                .add_filter("any file", &["*"])
-                .set_title("Open scene")
-                .pick_file(),
-            DialogKind::Export => dialog
-                .add_filter("PNG", &["png"])
-                .add_filter("TGA", &["tga"])
-                .set_title("Export images")
-                .set_file_name(suggested_name)
-                .save_file(),
-            DialogKind::SaveScene => dialog
-                .add_filter("6.837 scene", &["txt"])
-                .set_title("Save view as scene")
-                .set_file_name(suggested_name)
-                .save_file(),
-            DialogKind::CompareImage(_) => dialog
-                .add_filter("image", &["tga", "png"])
-                .add_filter("any file", &["*"])
-                .set_title("Open an image to compare")
-                .pick_file(),
-        }
-    })?;
-    Ok(PendingDialog { kind, task })
 }
 
 #[cfg(test)]

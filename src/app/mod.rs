@@ -38,7 +38,7 @@ pub(crate) mod confirm;
 pub(crate) mod course_files;
 pub mod depth_stats;
 #[cfg(not(target_arch = "wasm32"))]
-mod desktop;
+pub mod desktop;
 pub(crate) mod dialogs;
 pub mod frame_log;
 pub(crate) mod input;
@@ -59,8 +59,6 @@ pub mod ui;
 pub(crate) mod viewing;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
-#[cfg(not(target_arch = "wasm32"))]
-pub(crate) mod window;
 pub(crate) mod writes;
 
 use self::dialogs::dialog_unavailable_reason;
@@ -73,8 +71,6 @@ use self::status::Status;
 use crate::cli::ViewerRequest;
 
 pub use self::input::{KEY_ORBIT_RAD, KEY_PAN_FRACTION, KEY_ZOOM_FACTOR};
-#[cfg(not(target_arch = "wasm32"))]
-pub use self::window::{environment_problem, no_display_reason, run};
 
 /// Image size used until the first layout tells the real one.
 const INITIAL_SIZE_PX: (u32, u32) = (512, 512);

@@ -185,6 +185,15 @@ impl ViewerApp {
         }
     }
 
+    /// A page's files are downloads: there is no folder an export would have to create.
+    #[expect(
+        clippy::unused_self,
+        reason = "a method, as each seam's are: the caller names no seam"
+    )]
+    pub(super) fn missing_export_folder(&self, _action: &Action) -> Option<std::path::PathBuf> {
+        None
+    }
+
     /// A file dropped on the page: the page gives its name, and its bytes are read later.
     pub(super) fn open_dropped(&mut self, file: egui::DroppedFileHandle) {
         self.page.read_dropped(file, &self.ctx);

@@ -25,27 +25,6 @@ pub(crate) struct Writes {
 }
 
 impl Writes {
-    /// Starts `write` in the background (`ctx` repaints when it is done), unless a write is still
-    /// running: what the status bar says meanwhile.
-    #[cfg(not(target_arch = "wasm32"))]
-    pub(crate) fn start(
-        &mut self,
-        running: &str,
-        write: impl FnOnce() -> Result<String, String> + Send + 'static,
-        ctx: &egui::Context,
-    ) -> Status {
-        if self.task.is_some() {
-            return Status::error("wait: a file is still being written");
-        }
-        match Task::spawn("export", ctx, move |_| write()) {
-            Ok(task) => {
-                self.task = Some(task);
-                Status::info(running)
-            }
-            Err(error) => Status::error(format!("cannot start writing: {error}")),
-        }
-    }
-
     /// The finished write's message (an error when it failed); `None` while none finished.
     pub(crate) fn poll(&mut self) -> Option<Status> {
         let finished = match self.task.as_ref().map(Task::poll)? {
