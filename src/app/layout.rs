@@ -249,7 +249,7 @@ impl ViewerApp {
 
     /// The two images with the probe and the histogram; applies the gestures made on them.
     fn images_ui(&mut self, ui: &mut egui::Ui) {
-        let style = self.depth_style();
+        let style = super::render_requests::depth_style(&self.settings.depth);
         let range = self.frames.shown.as_ref().map(|s| s.view.depth_range);
         let depth_rgb = |probe: &crate::app::probe::Probe| match (range, probe.hit) {
             (Some(range), Some(hit)) => style.colour_map.rgb(&range, hit.t, style.no_hit_rgb),

@@ -67,7 +67,7 @@ use self::render_job::start_worker;
 use self::saved_views::{SavedView, SceneViews};
 use self::scene_loading::OpenScene;
 use self::settings::Settings;
-use self::status::Status;
+use self::status::{Clears, Status};
 use crate::cli::ViewerRequest;
 
 pub use self::input::{KEY_ORBIT_RAD, KEY_PAN_FRACTION, KEY_ZOOM_FACTOR};
@@ -194,6 +194,40 @@ impl ViewerApp {
         self.viewing.frame_all(&self.scene.loaded.scene);
     }
 
+    /// The frame the settings, the view and the open scene ask for.
+    fn wanted(&self) -> render_requests::Wanted {
+        render_requests::Frames::wanted(self.viewing.view, self.scene.epoch, &self.settings)
+    }
+
+    /// True when the frame on screen is the current view of the current scene at the current
+    /// quality. While a scene loads this is false: the frame will change once it is in.
+    pub fn frame_is_current(&self) -> bool {
+        self.scene.loading.is_none() && self.frames.shows(self.wanted())
+    }
+
+    /// Whether the frame on screen is a one-sample preview of a supersampled quality.
+    pub fn showing_preview(&self) -> bool {
+        self.frames.shows_preview_of(&self.settings.quality)
+    }
+
+    /// Takes a finished frame in: a status waiting for one clears, and "follow" fits the depth
+    /// range to it; a failed render says why.
+    fn receive_frame(&mut self) {
+        match self.frames.receive(&self.ctx) {
+            None => {}
+            Some(Err(error)) => self.status = Some(Status::view_error(error)),
+            Some(Ok(())) => {
+                if (self.status.as_ref()).is_some_and(|s| s.clears == Clears::WhenAFrameRenders) {
+                    self.status = None;
+                }
+                let depth = &self.settings.depth;
+                let shown = self.frames.shown.as_ref();
+                let cut = depth.auto_cut_percent;
+                (self.viewing).follow_depth(depth.follow, shown, self.scene.epoch, cut);
+            }
+        }
+    }
+
     /// Remembers the view the open scene is in, to restore when it is opened again.
     fn remember_view(&mut self) {
         if let Some(path) = &self.scene.loaded.path {
@@ -235,7 +269,8 @@ impl eframe::App for ViewerApp {
         self.viewing
             .history
             .observe(&self.viewing.view, web_time::Instant::now());
-        self.submit_if_changed();
+        let wanted = self.wanted();
+        (self.frames).submit_if_changed(&self.scene.loaded.scene, wanted, &self.ctx);
         if self.busy() {
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }

@@ -7,11 +7,10 @@ use web_time::{Duration, Instant};
 
 use egui::{TextureHandle, TextureOptions};
 
-use super::ViewerApp;
 use super::frame_log::FrameLog;
 use super::render_job::ViewerWorker;
 use super::render_job::{DepthStyle, JobResult, ViewerJob};
-use super::status::{Clears, Status};
+use super::settings::{DepthDisplay, Settings};
 use crate::app::depth_stats::DepthHistogram;
 use crate::render::{Frame, Quality, View, ViewError};
 use crate::scene::Scene;
@@ -184,67 +183,24 @@ impl Frames {
     }
 }
 
-impl ViewerApp {
-    /// How the depth texture is coloured now.
-    pub(super) fn depth_style(&self) -> DepthStyle {
-        DepthStyle {
-            colour_map: self.settings.depth.colour_map,
-            no_hit_rgb: self.settings.depth.no_hit_rgb(),
-        }
+/// How the depth texture is coloured under the depth settings.
+pub(crate) fn depth_style(depth: &DepthDisplay) -> DepthStyle {
+    DepthStyle {
+        colour_map: depth.colour_map,
+        no_hit_rgb: depth.no_hit_rgb(),
+    }
+}
+
+impl Frames {
+    /// The frame the settings ask for of `view` on the scene load `epoch`.
+    pub(crate) fn wanted(view: View, epoch: u64, settings: &Settings) -> Wanted {
+        (view, epoch, settings.quality, depth_style(&settings.depth))
     }
 
-    /// The frame the settings, the view and the open scene ask for.
-    fn wanted(&self) -> Wanted {
-        let style = self.depth_style();
-        (
-            self.viewing.view,
-            self.scene.epoch,
-            self.settings.quality,
-            style,
-        )
-    }
-
-    /// True when the frame on screen is the current view of the current scene at the current
-    /// quality. While a scene loads this is false: the frame will change once it is in.
-    pub fn frame_is_current(&self) -> bool {
-        self.scene.loading.is_none() && self.frames.shows(self.wanted())
-    }
-
-    /// Whether the frame on screen is a one-sample preview of a supersampled quality.
-    pub fn showing_preview(&self) -> bool {
-        self.frames.shown.as_ref().is_some_and(|s| {
-            s.quality.sampling.is_none() && self.settings.quality.sampling.is_some()
-        })
-    }
-
-    /// Asks the worker for the wanted frame when it changed ([`Frames::submit_if_changed`]).
-    pub(super) fn submit_if_changed(&mut self) {
-        let wanted = self.wanted();
-        self.frames
-            .submit_if_changed(&self.scene.loaded.scene, wanted, &self.ctx);
-    }
-
-    /// Takes a finished frame in ([`Frames::receive`]): a status waiting for one clears, and
-    /// "follow" fits the depth range to it; a failed render says why.
-    pub(super) fn receive_frame(&mut self) {
-        match self.frames.receive(&self.ctx) {
-            None => {}
-            Some(Err(error)) => self.status = Some(Status::view_error(error)),
-            Some(Ok(())) => {
-                if self
-                    .status
-                    .as_ref()
-                    .is_some_and(|s| s.clears == Clears::WhenAFrameRenders)
-                {
-                    self.status = None;
-                }
-                self.viewing.follow_depth(
-                    self.settings.depth.follow,
-                    self.frames.shown.as_ref(),
-                    self.scene.epoch,
-                    self.settings.depth.auto_cut_percent,
-                );
-            }
-        }
+    /// Whether the frame on screen is a one-sample preview of the supersampled `quality`.
+    pub(crate) fn shows_preview_of(&self, quality: &Quality) -> bool {
+        self.shown
+            .as_ref()
+            .is_some_and(|s| s.quality.sampling.is_none() && quality.sampling.is_some())
     }
 }
