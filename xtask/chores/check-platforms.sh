@@ -14,6 +14,7 @@
 # are missing.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source xtask/lib/apt.sh
 # target, then the features of its viewer build ("default": the default features)
 checks=(
   "x86_64-pc-windows-gnu default"
@@ -28,10 +29,7 @@ case "${1:-}" in
   *) echo "usage: cargo xtask check-platforms [macos | all]" >&2; exit 2 ;;
 esac
 if ! command -v x86_64-w64-mingw32-gcc >/dev/null; then
-  sudo=""
-  [ "$(id -u)" -ne 0 ] && sudo="sudo"
-  $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends gcc-mingw-w64-x86-64
+  apt_install gcc-mingw-w64-x86-64
 fi
 installed=$(rustup target list --installed 2>/dev/null || true)
 for check in "${checks[@]}"; do

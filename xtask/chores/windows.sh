@@ -19,6 +19,7 @@
 # holds a file open as another Windows program would.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source xtask/lib/apt.sh
 
 target=x86_64-pc-windows-gnu
 out="target/$target/release"
@@ -27,18 +28,7 @@ install() {
   local installed
   installed=$(rustup target list --installed 2>/dev/null || true)
   grep -qx "$target" <<<"$installed" || rustup target add "$target"
-  local packages=(gcc-mingw-w64-x86-64 wine64 wine)
-  local missing=()
-  for package in "${packages[@]}"; do
-    dpkg -s "$package" >/dev/null 2>&1 || missing+=("$package")
-  done
-  if [ ${#missing[@]} -gt 0 ]; then
-    local sudo=""
-    [ "$(id -u)" -ne 0 ] && sudo="sudo"
-    echo "installing: ${missing[*]}"
-    $sudo apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
-  fi
+  apt_install_missing gcc-mingw-w64-x86-64 wine64 wine
 }
 
 scaffolding() {

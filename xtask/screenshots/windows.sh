@@ -10,11 +10,8 @@ cd "$(dirname "$0")/../.."
 out="${1:-docs/windows-viewer.png}"
 wait_s="${2:-25}"
 cargo xtask windows viewer >/dev/null
-sudo=""
-[ "$(id -u)" -ne 0 ] && sudo="sudo"
-for package in xvfb imagemagick xdotool; do
-  dpkg -s "$package" >/dev/null 2>&1 || { $sudo apt-get update -qq && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "$package"; }
-done
+source xtask/lib/apt.sh
+apt_install_missing xvfb imagemagick xdotool
 export WINEPREFIX="$PWD/target/wine-prefix" WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml="
 [ -f "$WINEPREFIX/system.reg" ] || { wineboot -i >/dev/null 2>&1 || true; wineserver -w; }
 rm -f "$WINEPREFIX/display"
