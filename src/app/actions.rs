@@ -5,7 +5,8 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use super::course_files::course_files_stage;
+use super::confirm::{self, Answer};
+use super::course_files::{course_files, course_files_stage};
 use super::dialogs::{DialogAnswer, DialogKind};
 use super::render_job::{DepthStyle, ViewerJob, prepare_frame};
 use super::settings::ExportFormat;
@@ -158,6 +159,53 @@ impl ViewerApp {
             Action::SaveViewTo(path) => self.save_view_to(path),
             Action::ExportCourseFiles => self.export_course_files(),
             other => self.apply(other),
+        }
+    }
+
+    /// Carries out a write action now if it replaces nothing; otherwise asks first
+    /// ([`confirm::wait_for_yes`]).
+    pub(super) fn write_or_ask(&mut self, action: Action) {
+        // An export that cannot start is refused before anything is offered or created (the
+        // typed size is kept valid by its field; this guards the state set another way).
+        if let Action::ExportTo(_) = &action
+            && let Some(problem) = self.export_size_problem()
+        {
+            self.status = Some(Status::error(problem));
+            return;
+        }
+        // A folder the export would create is asked for first (a browser page has none).
+        let missing_folder = self.missing_export_folder(&action);
+        let plan = match &action {
+            Action::ExportTo(base) if missing_folder.is_none() => {
+                self.export_plan(base.clone()).map(|(plan, _)| plan)
+            }
+            _ => None,
+        };
+        let course = course_files(&self.settings.export.path, &self.scene.loaded);
+        let files = confirm::files_of(&action, plan.as_ref(), &course);
+        let scene = self.scene.loaded.path.as_deref();
+        match confirm::wait_for_yes(action, missing_folder, files, scene) {
+            Ok(action) => self.write_now(action),
+            Err(pending) => self.writes.pending_replace = Some(pending),
+        }
+    }
+
+    /// The modal asking whether to replace files; on yes, the write goes ahead (into a folder
+    /// created first when it was missing).
+    pub(super) fn confirm_ui(&mut self, ctx: &egui::Context) {
+        match confirm::answer(&mut self.writes.pending_replace, ctx) {
+            Some(Answer::Write(action)) => self.write_now(action),
+            // Into the new folder, asking again should anything be there meanwhile.
+            Some(Answer::CreateFolder(folder, action)) => match std::fs::create_dir_all(&folder) {
+                Ok(()) => self.write_or_ask(action),
+                Err(error) => {
+                    self.status = Some(Status::error(format!(
+                        "export: cannot create the folder {}: {error}",
+                        folder.display()
+                    )));
+                }
+            },
+            None => {}
         }
     }
 

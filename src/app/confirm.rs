@@ -3,13 +3,12 @@
 //! own. An export into a folder that does not exist offers to create it. Nothing is written (nor
 //! created) on "Cancel", on Escape or a click outside the window.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use egui::RichText;
 
-use super::ViewerApp;
 use super::actions::Action;
-use super::course_files::course_files;
+use crate::export::course::CourseFiles;
 use crate::export::{ExportFiles, ExportPlan};
 use crate::platform::files::same_file;
 
@@ -32,91 +31,71 @@ pub(crate) const REPLACE_LABEL: &str = "Replace";
 /// Label of the button that creates the missing folder and exports into it.
 pub(crate) const CREATE_FOLDER_LABEL: &str = "Create the folder and export";
 
-impl ViewerApp {
-    /// The files a write action would make.
-    fn files_of(&self, action: &Action) -> Vec<PathBuf> {
-        match action {
-            Action::ExportTo(base) => match self.export_plan(base.clone()) {
-                Some((plan, _)) => files_of_plan(&plan),
-                None => Vec::new(),
-            },
-            Action::SaveViewTo(path) => vec![path.clone()],
-            Action::ExportCourseFiles => {
-                course_files(&self.settings.export.path, &self.scene.loaded).all()
-            }
-            _ => Vec::new(),
-        }
-    }
-
-    /// Carries out a write action now if it replaces nothing; otherwise asks first.
-    pub(super) fn write_or_ask(&mut self, action: Action) {
-        // An export that cannot start is refused before anything is offered or created (the
-        // typed size is kept valid by its field; this guards the state set another way).
-        if let Action::ExportTo(_) = &action
-            && let Some(problem) = self.export_size_problem()
-        {
-            self.status = Some(super::status::Status::error(problem));
-            return;
-        }
-        // A folder the export would create is asked for first (a browser page has none).
-        if let Some(folder) = self.missing_export_folder(&action) {
-            self.writes.pending_replace = Some(PendingReplace {
-                action,
-                existing: Vec::new(),
-                open_scene: false,
-                missing_folder: Some(folder),
-            });
-            return;
-        }
-        let existing: Vec<PathBuf> = self
-            .files_of(&action)
-            .into_iter()
-            .filter(|path| path.exists())
-            .collect();
-        if existing.is_empty() {
-            self.write_now(action);
-            return;
-        }
-        let open_scene = self
-            .scene
-            .loaded
-            .path
-            .as_deref()
-            .is_some_and(|scene| existing.iter().any(|path| same_file(path, scene)));
-        self.writes.pending_replace = Some(PendingReplace {
+/// What a write must wait for, if anything: the folder it would create (`missing_folder`), else
+/// the files among `files` it would replace. `scene_on_screen` gets a warning of its own. `Ok`
+/// hands the action back to be written now.
+pub(crate) fn wait_for_yes(
+    action: Action,
+    missing_folder: Option<PathBuf>,
+    files: Vec<PathBuf>,
+    scene_on_screen: Option<&Path>,
+) -> Result<Action, PendingReplace> {
+    if let Some(folder) = missing_folder {
+        return Err(PendingReplace {
             action,
-            existing,
-            open_scene,
-            missing_folder: None,
+            existing: Vec::new(),
+            open_scene: false,
+            missing_folder: Some(folder),
         });
     }
+    let existing: Vec<PathBuf> = files.into_iter().filter(|path| path.exists()).collect();
+    if existing.is_empty() {
+        return Ok(action);
+    }
+    let open_scene =
+        scene_on_screen.is_some_and(|scene| existing.iter().any(|path| same_file(path, scene)));
+    Err(PendingReplace {
+        action,
+        existing,
+        open_scene,
+        missing_folder: None,
+    })
+}
 
-    /// The modal asking whether to replace files ([`PendingReplace::ui`]); on yes, the write goes
-    /// ahead (into a folder created first when it was missing).
-    pub(super) fn confirm_ui(&mut self, ctx: &egui::Context) {
-        let answer = self.writes.pending_replace.as_ref().and_then(|p| p.ui(ctx));
-        match answer {
-            Some(true) => match self.writes.pending_replace.take() {
-                Some(PendingReplace {
-                    action,
-                    missing_folder: Some(folder),
-                    ..
-                }) => match std::fs::create_dir_all(&folder) {
-                    // Into the new folder, asking again should anything be there meanwhile.
-                    Ok(()) => self.write_or_ask(action),
-                    Err(error) => {
-                        self.status = Some(super::status::Status::error(format!(
-                            "export: cannot create the folder {}: {error}",
-                            folder.display()
-                        )));
-                    }
-                },
-                Some(pending) => self.write_now(pending.action),
-                None => {}
-            },
-            Some(false) => self.writes.pending_replace = None,
-            None => {}
-        }
+/// The user's answer to the modal.
+pub(crate) enum Answer {
+    /// Write (the files it replaces were shown).
+    Write(Action),
+    /// Create the folder, then ask again about writing into it.
+    CreateFolder(PathBuf, Action),
+}
+
+/// Shows the modal of the write waiting in `pending` ([`PendingReplace::ui`]): the write to carry
+/// out on yes; on "Cancel" the write is dropped.
+pub(crate) fn answer(pending: &mut Option<PendingReplace>, ctx: &egui::Context) -> Option<Answer> {
+    let yes = pending.as_ref().and_then(|p| p.ui(ctx))?;
+    let answered = pending.take()?;
+    if !yes {
+        return None;
+    }
+    Some(match answered.missing_folder {
+        Some(folder) => Answer::CreateFolder(folder, answered.action),
+        None => Answer::Write(answered.action),
+    })
+}
+
+/// The files a write action would make: an export's (from its plan), a saved view's, the course
+/// files'.
+pub(crate) fn files_of(
+    action: &Action,
+    plan: Option<&ExportPlan>,
+    course: &CourseFiles,
+) -> Vec<PathBuf> {
+    match action {
+        Action::ExportTo(_) => plan.map(files_of_plan).unwrap_or_default(),
+        Action::SaveViewTo(path) => vec![path.clone()],
+        Action::ExportCourseFiles => course.all(),
+        _ => Vec::new(),
     }
 }
 
