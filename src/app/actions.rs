@@ -12,7 +12,8 @@ use super::render_job::{DepthStyle, ViewerJob, prepare_frame};
 use super::settings::ExportFormat;
 use super::status::Status;
 use super::{ViewerApp, viewing};
-use crate::export::ExportPlan;
+use crate::export::course::CourseFiles;
+use crate::export::{ExportFiles, ExportPlan};
 use crate::export::{stage_export, stage_view_as_scene};
 use crate::output::ImageFormat;
 use crate::platform::files::same_file;
@@ -182,7 +183,7 @@ impl ViewerApp {
             _ => None,
         };
         let course = course_files(&self.settings.export.path, &self.scene.loaded);
-        let files = confirm::files_of(&action, plan.as_ref(), &course);
+        let files = files_of(&action, plan.as_ref(), &course);
         let scene = self.scene.loaded.path.as_deref();
         match confirm::wait_for_yes(action, missing_folder, files, scene) {
             Ok(action) => self.write_now(action),
@@ -360,4 +361,20 @@ impl ViewerApp {
         }
         self.status = Some(finished);
     }
+}
+
+/// The files a write action would make: an export's (from its plan), a saved view's, the course
+/// files'.
+fn files_of(action: &Action, plan: Option<&ExportPlan>, course: &CourseFiles) -> Vec<PathBuf> {
+    match action {
+        Action::ExportTo(_) => plan.map(files_of_plan).unwrap_or_default(),
+        Action::SaveViewTo(path) => vec![path.clone()],
+        Action::ExportCourseFiles => course.all(),
+        _ => Vec::new(),
+    }
+}
+
+/// The files an export plan writes.
+fn files_of_plan(plan: &ExportPlan) -> Vec<PathBuf> {
+    ExportFiles::of(plan).written_by(plan)
 }

@@ -7,16 +7,13 @@ use std::path::{Path, PathBuf};
 
 use egui::RichText;
 
-use super::actions::Action;
-use crate::export::course::CourseFiles;
-use crate::export::{ExportFiles, ExportPlan};
 use crate::platform::files::same_file;
 
 /// A write that waits for the user's yes.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct PendingReplace {
+pub(crate) struct PendingReplace<A> {
     /// The export or save to carry out on yes.
-    pub(crate) action: Action,
+    pub(crate) action: A,
     /// The files it would replace.
     pub(crate) existing: Vec<PathBuf>,
     /// One of them is the scene file on screen.
@@ -34,12 +31,12 @@ pub(crate) const CREATE_FOLDER_LABEL: &str = "Create the folder and export";
 /// What a write must wait for, if anything: the folder it would create (`missing_folder`), else
 /// the files among `files` it would replace. `scene_on_screen` gets a warning of its own. `Ok`
 /// hands the action back to be written now.
-pub(crate) fn wait_for_yes(
-    action: Action,
+pub(crate) fn wait_for_yes<A>(
+    action: A,
     missing_folder: Option<PathBuf>,
     files: Vec<PathBuf>,
     scene_on_screen: Option<&Path>,
-) -> Result<Action, PendingReplace> {
+) -> Result<A, PendingReplace<A>> {
     if let Some(folder) = missing_folder {
         return Err(PendingReplace {
             action,
@@ -63,16 +60,19 @@ pub(crate) fn wait_for_yes(
 }
 
 /// The user's answer to the modal.
-pub(crate) enum Answer {
+pub(crate) enum Answer<A> {
     /// Write (the files it replaces were shown).
-    Write(Action),
+    Write(A),
     /// Create the folder, then ask again about writing into it.
-    CreateFolder(PathBuf, Action),
+    CreateFolder(PathBuf, A),
 }
 
 /// Shows the modal of the write waiting in `pending` ([`PendingReplace::ui`]): the write to carry
 /// out on yes; on "Cancel" the write is dropped.
-pub(crate) fn answer(pending: &mut Option<PendingReplace>, ctx: &egui::Context) -> Option<Answer> {
+pub(crate) fn answer<A>(
+    pending: &mut Option<PendingReplace<A>>,
+    ctx: &egui::Context,
+) -> Option<Answer<A>> {
     let yes = pending.as_ref().and_then(|p| p.ui(ctx))?;
     let answered = pending.take()?;
     if !yes {
@@ -84,22 +84,7 @@ pub(crate) fn answer(pending: &mut Option<PendingReplace>, ctx: &egui::Context) 
     })
 }
 
-/// The files a write action would make: an export's (from its plan), a saved view's, the course
-/// files'.
-pub(crate) fn files_of(
-    action: &Action,
-    plan: Option<&ExportPlan>,
-    course: &CourseFiles,
-) -> Vec<PathBuf> {
-    match action {
-        Action::ExportTo(_) => plan.map(files_of_plan).unwrap_or_default(),
-        Action::SaveViewTo(path) => vec![path.clone()],
-        Action::ExportCourseFiles => course.all(),
-        _ => Vec::new(),
-    }
-}
-
-impl PendingReplace {
+impl<A> PendingReplace<A> {
     /// The modal window asking for the yes: `Some(true)` on yes, `Some(false)` on "Cancel",
     /// Escape or a click outside, `None` while it waits.
     pub(crate) fn ui(&self, ctx: &egui::Context) -> Option<bool> {
@@ -149,9 +134,4 @@ fn yes_or_cancel(ui: &mut egui::Ui, yes_label: &str) -> Option<bool> {
         (yes || cancel).then_some(yes)
     })
     .inner
-}
-
-/// The files an export plan writes.
-fn files_of_plan(plan: &ExportPlan) -> Vec<PathBuf> {
-    ExportFiles::of(plan).written_by(plan)
 }

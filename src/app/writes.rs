@@ -5,6 +5,7 @@
 
 use std::path::PathBuf;
 
+use super::actions::Action;
 use super::background::{Poll, Task};
 use super::confirm::PendingReplace;
 use super::dialogs::PendingDialog;
@@ -15,7 +16,7 @@ pub(crate) struct Writes {
     /// A background write (export or saved scene): its outcome message.
     pub(crate) task: Option<Task<Result<String, String>>>,
     /// A write that waits for the user to agree to replace files (or to make a folder).
-    pub(crate) pending_replace: Option<PendingReplace>,
+    pub(crate) pending_replace: Option<PendingReplace<Action>>,
     /// A file dialog that is open.
     pub(crate) dialog: Option<PendingDialog>,
     /// Why no file dialog can be shown here, if none can.
