@@ -12,7 +12,6 @@ use super::render_job::{DepthStyle, ViewerJob, prepare_frame};
 use super::settings::ExportFormat;
 use super::status::Status;
 use super::{ViewerApp, viewing};
-use crate::export::course::CourseFiles;
 use crate::export::{ExportFiles, ExportPlan};
 use crate::export::{stage_export, stage_view_as_scene};
 use crate::output::ImageFormat;
@@ -176,14 +175,19 @@ impl ViewerApp {
         }
         // A folder the export would create is asked for first (a browser page has none).
         let missing_folder = self.missing_export_folder(&action);
-        let plan = match &action {
-            Action::ExportTo(base) if missing_folder.is_none() => {
-                self.export_plan(base.clone()).map(|(plan, _)| plan)
+        // The files the write would make: an export's (from its plan), a saved view's, the
+        // course files'.
+        let files = match &action {
+            Action::ExportTo(base) if missing_folder.is_none() => self
+                .export_plan(base.clone())
+                .map(|(plan, _)| ExportFiles::of(&plan).written_by(&plan))
+                .unwrap_or_default(),
+            Action::SaveViewTo(path) => vec![path.clone()],
+            Action::ExportCourseFiles => {
+                course_files(&self.settings.export.path, &self.scene.loaded).all()
             }
-            _ => None,
+            _ => Vec::new(),
         };
-        let course = course_files(&self.settings.export.path, &self.scene.loaded);
-        let files = files_of(&action, plan.as_ref(), &course);
         let scene = self.scene.loaded.path.as_deref();
         match confirm::wait_for_yes(action, missing_folder, files, scene) {
             Ok(action) => self.write_now(action),
@@ -361,20 +365,4 @@ impl ViewerApp {
         }
         self.status = Some(finished);
     }
-}
-
-/// The files a write action would make: an export's (from its plan), a saved view's, the course
-/// files'.
-fn files_of(action: &Action, plan: Option<&ExportPlan>, course: &CourseFiles) -> Vec<PathBuf> {
-    match action {
-        Action::ExportTo(_) => plan.map(files_of_plan).unwrap_or_default(),
-        Action::SaveViewTo(path) => vec![path.clone()],
-        Action::ExportCourseFiles => course.all(),
-        _ => Vec::new(),
-    }
-}
-
-/// The files an export plan writes.
-fn files_of_plan(plan: &ExportPlan) -> Vec<PathBuf> {
-    ExportFiles::of(plan).written_by(plan)
 }

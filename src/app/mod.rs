@@ -217,13 +217,18 @@ impl ViewerApp {
             None => {}
             Some(Err(error)) => self.status = Some(Status::view_error(error)),
             Some(Ok(())) => {
-                if (self.status.as_ref()).is_some_and(|s| s.clears == Clears::WhenAFrameRenders) {
+                if self
+                    .status
+                    .as_ref()
+                    .is_some_and(|s| s.clears == Clears::WhenAFrameRenders)
+                {
                     self.status = None;
                 }
                 let depth = &self.settings.depth;
                 let shown = self.frames.shown.as_ref();
                 let cut = depth.auto_cut_percent;
-                (self.viewing).follow_depth(depth.follow, shown, self.scene.epoch, cut);
+                self.viewing
+                    .follow_depth(depth.follow, shown, self.scene.epoch, cut);
             }
         }
     }
@@ -270,7 +275,8 @@ impl eframe::App for ViewerApp {
             .history
             .observe(&self.viewing.view, web_time::Instant::now());
         let wanted = self.wanted();
-        (self.frames).submit_if_changed(&self.scene.loaded.scene, wanted, &self.ctx);
+        self.frames
+            .submit_if_changed(&self.scene.loaded.scene, wanted, &self.ctx);
         if self.busy() {
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }
