@@ -11,7 +11,7 @@ use super::dialogs::{DialogAnswer, DialogKind};
 use super::render_job::{DepthStyle, ViewerJob, prepare_frame};
 use super::settings::ExportFormat;
 use super::status::Status;
-use super::{ViewerApp, viewing};
+use super::viewer::ViewerApp;
 use crate::export::{ExportFiles, ExportPlan};
 use crate::export::{stage_export, stage_view_as_scene};
 use crate::output::ImageFormat;
@@ -59,8 +59,14 @@ pub(crate) enum Action {
     ExportCourseFiles,
     /// Write the scene with the current camera to this path.
     SaveViewTo(PathBuf),
+    /// Move the view or the magnifier.
+    Navigate(super::viewing::Navigation),
+    /// Pin the point seen at this image position (pixels, y up) of the frame on screen.
+    Pin(glam::DVec2),
     /// Release the pinned probe.
     Unpin,
+    /// Trace the pinned pixel into the trace window.
+    Trace,
     /// Compare the image at this path with the exact render.
     CompareImage(PathBuf, crate::app::compare::ImageKind),
     /// Measure the chosen quality against the exact render on the current view.
@@ -76,82 +82,6 @@ pub(crate) enum Action {
 }
 
 impl ViewerApp {
-    /// Carries out `action`. A one-shot view change is a step of the history of its own.
-    pub(crate) fn apply(&mut self, action: Action) {
-        let one_shot = matches!(
-            action,
-            Action::FrameAll
-                | Action::ResetView
-                | Action::ResetDepth
-                | Action::AutoRange
-                | Action::UseDepthRange(_)
-                | Action::GoToView(_)
-        );
-        let before = self.viewing.view;
-        self.carry_out(action);
-        if one_shot {
-            self.viewing.history.one_shot(&before, &self.viewing.view);
-        }
-    }
-
-    fn carry_out(&mut self, action: Action) {
-        match action {
-            Action::OpenDialog(kind) => self.open_dialog(kind),
-            Action::Open(path) => self.open_path(&path),
-            Action::OpenBundled(index) => {
-                if let Some((name, text)) = crate::scene::bundled::BUNDLED_SCENES.get(index) {
-                    self.open_bytes(name, std::sync::Arc::from(text.as_bytes()));
-                }
-            }
-            Action::Reload => self.reload(),
-            Action::FrameAll => self.frame_all(),
-            Action::ResetView => self.viewing.reset_view(&self.scene.loaded.file_view),
-            Action::ResetDepth => self.viewing.reset_depth(&self.scene.loaded.file_view),
-            Action::AutoRange => self.auto_range(),
-            Action::UseDepthRange(range) => self.viewing.view.depth_range = range,
-            Action::Undo => {
-                let status = self.viewing.undo();
-                self.say(status);
-            }
-            Action::Redo => {
-                let status = self.viewing.redo();
-                self.say(status);
-            }
-            Action::NameView(name) => {
-                let path = self.scene.loaded.path.as_deref();
-                let status = self
-                    .viewing
-                    .name_view(&mut self.settings.views, path, &name);
-                self.say(Some(status));
-            }
-            Action::GoToView(index) => {
-                let path = self.scene.loaded.path.as_deref();
-                self.viewing
-                    .go_to_view(&mut self.settings.views, path, index);
-            }
-            Action::ForgetView(index) => {
-                let path = self.scene.loaded.path.as_deref();
-                viewing::forget_view(&mut self.settings.views, path, index);
-            }
-            Action::ToggleHelp => self.panels.help_open = !self.panels.help_open,
-            Action::ResetMagnifier => self.viewing.magnifier = Default::default(),
-            Action::ExportTo(_) | Action::SaveViewTo(_) | Action::ExportCourseFiles => {
-                self.write_or_ask(action);
-            }
-            Action::Unpin => self.viewing.probe.pinned_world = None,
-            Action::CompareImage(path, kind) => self.compare_with_file(path, kind),
-            Action::CompareQuality => self.compare_quality(),
-            Action::CompareShow(show) => {
-                if self.compare.current.is_some() {
-                    self.compare.show = show;
-                }
-            }
-            Action::CompareFlip => self.compare.flip(),
-            Action::CompareDifference => self.compare.toggle_difference(),
-            Action::CompareClose => self.compare.close(),
-        }
-    }
-
     /// Carries out a write action (the user has agreed to replace what it replaces).
     pub(super) fn write_now(&mut self, action: Action) {
         match action {
@@ -350,7 +280,7 @@ impl ViewerApp {
                         }
                         DialogKind::CompareImage(kind) => {
                             self.compare.path_text = path.display().to_string();
-                            self.compare_with_file(path, kind);
+                            self.apply(Action::CompareImage(path, kind));
                         }
                     }
                 }

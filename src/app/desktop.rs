@@ -9,11 +9,11 @@ use std::path::PathBuf;
 
 use std::path::Path;
 
-use super::ViewerApp;
 use super::actions::Action;
 use super::background::Task;
 use super::dialogs::{DialogKind, PendingDialog};
 use super::status::Status;
+use super::viewer::ViewerApp;
 use super::writes::Writes;
 use crate::output::atomic::{FileSet, Stage};
 

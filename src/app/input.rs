@@ -1,17 +1,16 @@
 //! Input that is not a widget's: keyboard shortcuts, files dropped on the window, the watched
-//! file changing, navigation from the keyboard, and pointer gestures on the images — all turned
-//! into [`crate::app::navigate`] calls or [`Action`]s.
+//! file changing, navigation from the keyboard, and pointer gestures on the images, all read into
+//! [`Action`]s (navigation as [`Navigation`]s, which [`super::viewing::Viewing`] carries out).
 
 use egui::{Key, KeyboardShortcut, Modifiers};
 use glam::DVec2;
 
-use super::ViewerApp;
 use super::actions::Action;
 use super::dialogs::DialogKind;
-use super::reload::WatchState;
+use super::reload::{FileWatcher, WatchState};
 use super::ui::gestures::{ImageGestures, ORBIT_RAD_PER_POINT};
-use crate::app::navigate;
-use crate::app::probe::point_of_probe;
+use super::viewing::Navigation;
+use crate::render::View;
 
 /// Keyboard pan step, as a fraction of the image's shorter side.
 pub const KEY_PAN_FRACTION: f64 = 0.1;
@@ -40,173 +39,156 @@ const NAVIGATION_KEYS: [Key; 14] = [
     Key::B,
 ];
 
-impl ViewerApp {
-    /// Shortcuts (Ctrl+O, Ctrl+S, Ctrl+R), dropped files, the watched file, and navigation keys.
-    pub(super) fn handle_input(&mut self, ctx: &egui::Context) {
-        let command_shift = Modifiers::COMMAND | Modifiers::SHIFT;
-        // The more specific shortcut first: Ctrl+Shift+Z before Ctrl+Z.
-        let shortcuts = [
-            (command_shift, Key::Z, Action::Redo),
-            (Modifiers::COMMAND, Key::Z, Action::Undo),
-            (Modifiers::COMMAND, Key::Y, Action::Redo),
-            (
-                Modifiers::COMMAND,
-                Key::O,
-                Action::OpenDialog(DialogKind::Open),
-            ),
-            (
-                Modifiers::COMMAND,
-                Key::S,
-                Action::OpenDialog(DialogKind::Export),
-            ),
-            (Modifiers::COMMAND, Key::R, Action::Reload),
-            (Modifiers::COMMAND, Key::Num0, Action::ResetMagnifier),
-            (Modifiers::NONE, Key::F1, Action::ToggleHelp),
-        ];
-        let (pressed, dropped) = ctx.input_mut(|input| {
-            let pressed: Vec<Action> = shortcuts
-                .into_iter()
-                .filter(|(modifiers, key, _)| {
-                    input.consume_shortcut(&KeyboardShortcut::new(*modifiers, *key))
-                })
-                .map(|(_, _, action)| action)
-                .collect();
-            let dropped = input.raw.dropped_files.first().cloned();
-            (pressed, dropped)
-        });
-        for action in pressed {
-            self.apply(action);
-        }
-        // The watcher wakes the window at each change; while the file settles, the window wakes
-        // itself when it will have (no input need come).
-        match self
-            .scene
-            .watcher
-            .as_ref()
-            .map(super::reload::FileWatcher::poll)
-        {
-            Some(WatchState::Changed) => self.reload(),
-            Some(WatchState::Settling(wait)) => ctx.request_repaint_after(wait),
-            _ => {}
-        }
-        if let Some(file) = dropped {
-            self.open_dropped(file);
-        }
-        self.navigation_keys(ctx);
-    }
+/// What the window's input asks for this frame.
+pub(super) struct Input {
+    /// Shortcuts, the watched file's reload and navigation keys, in that order.
+    pub(super) actions: Vec<Action>,
+    /// A file dropped on the window (opened by the platform's seam).
+    pub(super) dropped: Option<egui::DroppedFileHandle>,
+}
 
-    /// Keyboard navigation while no text field or slider has the keyboard: arrows move the
-    /// camera, Shift+arrows orbit, `+`/`-` zoom at the image centre, F frames all, Home resets,
-    /// A fits the depth range, Escape unpins the probe, B flips between the render and the compared
-    /// image, Shift+B shows the difference.
-    fn navigation_keys(&mut self, ctx: &egui::Context) {
-        if ctx.memory(|memory| memory.focused().is_some()) {
-            return;
-        }
-        let (shift, pressed, question) = ctx.input(|input| {
-            let pressed: Vec<Key> = NAVIGATION_KEYS
-                .into_iter()
-                .filter(|&key| input.key_pressed(key))
-                .collect();
-            let question = input
-                .events
-                .iter()
-                .any(|event| matches!(event, egui::Event::Text(text) if text == "?"));
-            (input.modifiers.shift, pressed, question)
-        });
-        if question {
-            self.apply(Action::ToggleHelp);
-        }
-        let (width, height) = (
-            f64::from(self.viewing.view.width_px),
-            f64::from(self.viewing.view.height_px),
-        );
-        let step_px = KEY_PAN_FRACTION * width.min(height);
-        let centre_px = DVec2::new(0.5 * width, 0.5 * height);
-        for key in pressed {
-            let arrow = match key {
-                Key::ArrowLeft => Some(DVec2::NEG_X),
-                Key::ArrowRight => Some(DVec2::X),
-                Key::ArrowUp => Some(DVec2::Y),
-                Key::ArrowDown => Some(DVec2::NEG_Y),
-                _ => None,
-            };
-            match (key, arrow) {
-                (_, Some(direction)) if shift => {
-                    let turn = direction * KEY_ORBIT_RAD;
-                    self.orbit(turn.x, turn.y);
-                }
-                // The camera moves along the arrow: the picture moves the other way.
-                (_, Some(direction)) => {
-                    self.viewing.view = navigate::pan(&self.viewing.view, -direction * step_px);
-                }
-                (Key::Plus | Key::Equals, _) => {
-                    self.viewing.view =
-                        navigate::zoom_at(&self.viewing.view, 1.0 / KEY_ZOOM_FACTOR, centre_px);
-                }
-                (Key::Minus, _) => {
-                    self.viewing.view =
-                        navigate::zoom_at(&self.viewing.view, KEY_ZOOM_FACTOR, centre_px);
-                }
-                (Key::F, _) => self.apply(Action::FrameAll),
-                (Key::Home, _) => self.apply(Action::ResetView),
-                (Key::A, _) => self.apply(Action::AutoRange),
-                (Key::D, _) => self.apply(Action::ResetDepth),
-                (Key::Num1, _) => self.apply(Action::ResetMagnifier),
-                (Key::B, _) if shift => self.apply(Action::CompareDifference),
-                (Key::B, _) => self.apply(Action::CompareFlip),
-                (Key::Escape, _) if self.panels.help_open => self.panels.help_open = false,
-                (Key::Escape, _) => self.apply(Action::Unpin),
-                _ => {}
-            }
-        }
+/// Reads the shortcuts (Ctrl+O, Ctrl+S, Ctrl+R), a dropped file, the watched file and the
+/// navigation keys; `help_open` makes Escape close the shortcuts overlay, and `view` sizes the
+/// keyboard's pan and zoom steps.
+pub(super) fn read(
+    ctx: &egui::Context,
+    watcher: Option<&FileWatcher>,
+    help_open: bool,
+    view: &View,
+) -> Input {
+    let command_shift = Modifiers::COMMAND | Modifiers::SHIFT;
+    // The more specific shortcut first: Ctrl+Shift+Z before Ctrl+Z.
+    let shortcuts = [
+        (command_shift, Key::Z, Action::Redo),
+        (Modifiers::COMMAND, Key::Z, Action::Undo),
+        (Modifiers::COMMAND, Key::Y, Action::Redo),
+        (
+            Modifiers::COMMAND,
+            Key::O,
+            Action::OpenDialog(DialogKind::Open),
+        ),
+        (
+            Modifiers::COMMAND,
+            Key::S,
+            Action::OpenDialog(DialogKind::Export),
+        ),
+        (Modifiers::COMMAND, Key::R, Action::Reload),
+        (Modifiers::COMMAND, Key::Num0, Action::ResetMagnifier),
+        (Modifiers::NONE, Key::F1, Action::ToggleHelp),
+    ];
+    let (mut actions, dropped) = ctx.input_mut(|input| {
+        let pressed: Vec<Action> = shortcuts
+            .into_iter()
+            .filter(|(modifiers, key, _)| {
+                input.consume_shortcut(&KeyboardShortcut::new(*modifiers, *key))
+            })
+            .map(|(_, _, action)| action)
+            .collect();
+        let dropped = input.raw.dropped_files.first().cloned();
+        (pressed, dropped)
+    });
+    // The watcher wakes the window at each change; while the file settles, the window wakes
+    // itself when it will have (no input need come).
+    match watcher.map(FileWatcher::poll) {
+        Some(WatchState::Changed) => actions.push(Action::Reload),
+        Some(WatchState::Settling(wait)) => ctx.request_repaint_after(wait),
+        _ => {}
     }
+    actions.extend(navigation_keys(ctx, help_open, view));
+    Input { actions, dropped }
+}
 
-    /// Applies pointer gestures on the images: pan, orbit, zoom, hover and pin.
-    pub(crate) fn apply_gestures(&mut self, gestures: &ImageGestures) {
-        if gestures.pan_px != DVec2::ZERO {
-            self.viewing.view = navigate::pan(&self.viewing.view, gestures.pan_px);
-        }
-        if gestures.orbit_points != DVec2::ZERO {
-            let turn = gestures.orbit_points * ORBIT_RAD_PER_POINT;
-            self.orbit(turn.x, turn.y);
-        }
-        if let Some((factor, anchor_px)) = gestures.zoom {
-            self.viewing.view = navigate::zoom_at(&self.viewing.view, factor, anchor_px);
-        }
-        if let Some(size_px) = self
-            .frames
-            .shown
-            .as_ref()
-            .map(|s| [s.frame.width_px, s.frame.height_px])
-        {
-            if let Some((factor, anchor_px)) = gestures.magnify {
-                self.viewing.magnifier.zoom_at(factor, anchor_px, size_px);
-            }
-            if gestures.magnifier_pan_px != DVec2::ZERO {
-                self.viewing
-                    .magnifier
-                    .pan(gestures.magnifier_pan_px, size_px);
-            }
-        }
-        self.viewing.probe.hover_px = gestures.hover_px;
-        if let Some(px) = gestures.clicked_px
-            && let Some(probe) = self.probe_at(px)
-        {
-            // The point itself is pinned, so the pin stays on it while the view moves.
-            self.viewing.probe.pinned_world = Some(point_of_probe(&probe));
-        }
-        if gestures.unpin {
-            self.apply(Action::Unpin);
-        }
-        if gestures.trace {
-            self.open_trace();
-        }
+/// Keyboard navigation while no text field or slider has the keyboard: arrows move the camera,
+/// Shift+arrows orbit, `+`/`-` zoom at the image centre, F frames all, Home resets, A fits the
+/// depth range, Escape unpins the probe (or closes the shortcuts overlay), B flips between the
+/// render and the compared image, Shift+B shows the difference.
+fn navigation_keys(ctx: &egui::Context, help_open: bool, view: &View) -> Vec<Action> {
+    if ctx.memory(|memory| memory.focused().is_some()) {
+        return Vec::new();
     }
+    let (shift, pressed, question) = ctx.input(|input| {
+        let pressed: Vec<Key> = NAVIGATION_KEYS
+            .into_iter()
+            .filter(|&key| input.key_pressed(key))
+            .collect();
+        let question = input
+            .events
+            .iter()
+            .any(|event| matches!(event, egui::Event::Text(text) if text == "?"));
+        (input.modifiers.shift, pressed, question)
+    });
+    let mut actions = Vec::new();
+    if question {
+        actions.push(Action::ToggleHelp);
+    }
+    let (width, height) = (f64::from(view.width_px), f64::from(view.height_px));
+    let step_px = KEY_PAN_FRACTION * width.min(height);
+    let centre_px = DVec2::new(0.5 * width, 0.5 * height);
+    for key in pressed {
+        let arrow = match key {
+            Key::ArrowLeft => Some(DVec2::NEG_X),
+            Key::ArrowRight => Some(DVec2::X),
+            Key::ArrowUp => Some(DVec2::Y),
+            Key::ArrowDown => Some(DVec2::NEG_Y),
+            _ => None,
+        };
+        let action = match (key, arrow) {
+            (_, Some(direction)) if shift => {
+                Action::Navigate(Navigation::Orbit(direction * KEY_ORBIT_RAD))
+            }
+            // The camera moves along the arrow: the picture moves the other way.
+            (_, Some(direction)) => Action::Navigate(Navigation::Pan(-direction * step_px)),
+            (Key::Plus | Key::Equals, _) => {
+                Action::Navigate(Navigation::ZoomAt(1.0 / KEY_ZOOM_FACTOR, centre_px))
+            }
+            (Key::Minus, _) => Action::Navigate(Navigation::ZoomAt(KEY_ZOOM_FACTOR, centre_px)),
+            (Key::F, _) => Action::FrameAll,
+            (Key::Home, _) => Action::ResetView,
+            (Key::A, _) => Action::AutoRange,
+            (Key::D, _) => Action::ResetDepth,
+            (Key::Num1, _) => Action::ResetMagnifier,
+            (Key::B, _) if shift => Action::CompareDifference,
+            (Key::B, _) => Action::CompareFlip,
+            (Key::Escape, _) if help_open => Action::ToggleHelp,
+            (Key::Escape, _) => Action::Unpin,
+            _ => continue,
+        };
+        actions.push(action);
+    }
+    actions
+}
 
-    /// Orbits around the scene's centre: `yaw_rad` as a drag to the right, `pitch_rad` up.
-    fn orbit(&mut self, yaw_rad: f64, pitch_rad: f64) {
-        let pivot = navigate::orbit_pivot(&self.scene.loaded.scene);
-        self.viewing.view = navigate::orbit(&self.viewing.view, pivot, yaw_rad, pitch_rad);
+/// The pointer gestures made on the images, as actions: pan, orbit, zoom, the magnifier, hover,
+/// pin, unpin and trace.
+pub(super) fn gesture_actions(gestures: &ImageGestures) -> Vec<Action> {
+    let mut navigation = Vec::new();
+    if gestures.pan_px != DVec2::ZERO {
+        navigation.push(Navigation::Pan(gestures.pan_px));
     }
+    if gestures.orbit_points != DVec2::ZERO {
+        navigation.push(Navigation::Orbit(
+            gestures.orbit_points * ORBIT_RAD_PER_POINT,
+        ));
+    }
+    if let Some((factor, anchor_px)) = gestures.zoom {
+        navigation.push(Navigation::ZoomAt(factor, anchor_px));
+    }
+    if let Some((factor, anchor_px)) = gestures.magnify {
+        navigation.push(Navigation::Magnify(factor, anchor_px));
+    }
+    if gestures.magnifier_pan_px != DVec2::ZERO {
+        navigation.push(Navigation::PanMagnifier(gestures.magnifier_pan_px));
+    }
+    navigation.push(Navigation::Hover(gestures.hover_px));
+    let mut actions: Vec<Action> = navigation.into_iter().map(Action::Navigate).collect();
+    if let Some(px) = gestures.clicked_px {
+        actions.push(Action::Pin(px));
+    }
+    if gestures.unpin {
+        actions.push(Action::Unpin);
+    }
+    if gestures.trace {
+        actions.push(Action::Trace);
+    }
+    actions
 }

@@ -6,7 +6,6 @@
 
 use std::path::PathBuf;
 
-use super::ViewerApp;
 use super::actions::Action;
 use super::compare::{CompareShow, CompareSource, CompareState};
 use super::ui::histogram::HistogramStyle;
@@ -15,6 +14,7 @@ use super::ui::status_bar::{StatusLine, error_overlay_ui, status_bar_ui};
 use super::ui::{
     depth_section, file_sections, help, probe_text, toolbar, view_controls, views_section,
 };
+use super::viewer::ViewerApp;
 use crate::app::probe::pixel_of_point;
 use crate::export::numbers::grouped;
 use crate::render::View;
@@ -104,7 +104,7 @@ impl ViewerApp {
                 .exact_size(PANEL_POINTS - 40.0)
                 .show(ui, |ui| actions.extend(self.side_panel_ui(ui)));
         }
-        egui::CentralPanel::default().show(ui, |ui| self.images_ui(ui));
+        egui::CentralPanel::default().show(ui, |ui| actions.extend(self.images_ui(ui)));
         let ctx = ui.ctx().clone();
         if self.panels.drawer_open && narrow && !push_aside {
             let mut open = true;
@@ -247,8 +247,8 @@ impl ViewerApp {
         inside.then_some(px)
     }
 
-    /// The two images with the probe and the histogram; applies the gestures made on them.
-    fn images_ui(&mut self, ui: &mut egui::Ui) {
+    /// The two images with the probe and the histogram; returns the gestures made on them.
+    fn images_ui(&mut self, ui: &mut egui::Ui) -> Vec<Action> {
         let style = super::render_requests::depth_style(&self.settings.depth);
         let range = self.frames.shown.as_ref().map(|s| s.view.depth_range);
         let depth_rgb = |probe: &crate::app::probe::Probe| match (range, probe.hit) {
@@ -290,11 +290,11 @@ impl ViewerApp {
             magnifier: self.viewing.magnifier,
         };
         let gestures = images_ui(ui, shown.as_ref(), footer);
-        self.apply_gestures(&gestures);
         // While their image is compared the view keeps its size, so the two line up.
         let (width_px, height_px) = self.compare.held_size_px().unwrap_or(gestures.wanted_px);
         self.viewing.view.width_px = width_px;
         self.viewing.view.height_px = height_px;
+        super::input::gesture_actions(&gestures)
     }
 
     /// A measurement of the chosen quality is of one view: it closes when the view changes.

@@ -7,10 +7,14 @@ use web_time::{Duration, Instant};
 
 use egui::{TextureHandle, TextureOptions};
 
+use glam::DVec2;
+
 use super::frame_log::FrameLog;
-use super::render_job::ViewerWorker;
+use super::probe::{Probe, probe};
 use super::render_job::{DepthStyle, JobResult, ViewerJob};
+use super::render_job::{ViewerWorker, start_worker};
 use super::settings::{DepthDisplay, Settings};
+use super::status::Status;
 use crate::app::depth_stats::DepthHistogram;
 use crate::render::{Frame, Quality, View, ViewError};
 use crate::scene::Scene;
@@ -72,6 +76,42 @@ impl Default for Requests {
 }
 
 impl Frames {
+    /// Starts the render worker through `ctx` (and the frame log, when the environment asks for
+    /// it, naming the renderer: glow when `gl`, else wgpu); says why when the worker cannot start.
+    pub(crate) fn start(ctx: &egui::Context, gl: bool) -> (Self, Option<Status>) {
+        let (worker, status) = match start_worker(ctx) {
+            Ok(worker) => (Some(worker), None),
+            Err(error) => (
+                None,
+                Some(Status::error(format!(
+                    "cannot start the render thread: {error}"
+                ))),
+            ),
+        };
+        let log = FrameLog::from_environment().map(|mut log| {
+            log.renderer(if gl { "glow" } else { "wgpu" });
+            log
+        });
+        let frames = Self {
+            worker,
+            requests: Requests::default(),
+            shown: None,
+            log,
+        };
+        (frames, status)
+    }
+
+    /// Probes the frame on screen at image position `px` (pixels, y up), if it is a frame of
+    /// `scene` at load `epoch`.
+    pub(crate) fn probe_at(&self, scene: &Scene, epoch: u64, px: DVec2) -> Option<Probe> {
+        let shown = self.shown.as_ref()?;
+        if shown.scene_epoch != epoch || !(px.x >= 0.0 && px.y >= 0.0) {
+            return None;
+        }
+        let (x_px, y_up_px) = (px.x.floor() as u32, px.y.floor() as u32);
+        probe(scene, &shown.view, &shown.frame, x_px, y_up_px)
+    }
+
     /// True when the frame on screen is `wanted` (a view of a scene load at a quality, in a
     /// depth style).
     pub(crate) fn shows(&self, wanted: Wanted) -> bool {

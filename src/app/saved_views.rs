@@ -82,6 +82,14 @@ impl SceneViews {
     pub fn key(path: &Path) -> String {
         path.display().to_string()
     }
+
+    /// Remembers `view` as the one the scene from `path` is in, to restore when it is opened
+    /// again (a scene from no file has none).
+    pub fn remember(&mut self, path: Option<&Path>, view: &View) {
+        if let Some(path) = path {
+            self.last.insert(Self::key(path), SavedView::of(view));
+        }
+    }
 }
 
 /// Undo and redo of view changes.

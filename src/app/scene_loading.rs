@@ -8,11 +8,9 @@
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
-use super::ViewerApp;
 use super::background::{Poll, Task};
 use super::loaded_scene::LoadedScene;
 use super::reload::FileWatcher;
-use super::saved_views::SceneViews;
 use super::status::Status;
 use crate::render::View;
 
@@ -182,7 +180,7 @@ impl OpenScene {
     /// Takes a finished load: the scene, its file and why it was loaded. A failed one puts its
     /// error on screen (and a file that failed to open is watched, so that fixing it opens it);
     /// one still running asks `ctx` to look again soon.
-    fn poll(&mut self, ctx: &egui::Context) -> Option<(LoadedScene, PathBuf, LoadKind)> {
+    pub(crate) fn poll(&mut self, ctx: &egui::Context) -> Option<(LoadedScene, PathBuf, LoadKind)> {
         let pending = self.loading.as_ref()?;
         let result = match pending.task.poll() {
             Poll::Running => {
@@ -225,109 +223,97 @@ impl OpenScene {
     }
 }
 
-impl ViewerApp {
-    /// Starts loading the scene at `path` in the background; once read, it replaces the scene
-    /// on screen and is watched for changes. On failure the error is shown and the previous scene
-    /// stays. A load started while another runs replaces it.
-    pub fn open(&mut self, path: &Path) {
-        let size = (self.viewing.view.width_px, self.viewing.view.height_px);
-        self.scene.start_load(path, LoadKind::Open, size, &self.ctx);
+impl OpenScene {
+    /// Starts loading the scene at `path` for a view of `view`'s size; once read, it replaces the
+    /// scene on screen and is watched for changes. On failure the error is shown and the previous
+    /// scene stays. A load started while another runs replaces it.
+    pub(crate) fn open(&mut self, path: &Path, view: &View, ctx: &egui::Context) {
+        self.start_load(path, LoadKind::Open, (view.width_px, view.height_px), ctx);
     }
 
     /// Opens the scene `bytes` named `name`, which came from no file the viewer can read (a
     /// browser page's dropped, picked or fetched file): as [`Self::open`], without a file to
     /// reload or watch.
-    pub fn open_bytes(&mut self, name: &str, bytes: std::sync::Arc<[u8]>) {
-        let size = (self.viewing.view.width_px, self.viewing.view.height_px);
-        self.scene.start_bytes(name, bytes, size, &self.ctx);
+    pub(crate) fn open_bytes(
+        &mut self,
+        name: &str,
+        bytes: std::sync::Arc<[u8]>,
+        view: &View,
+        ctx: &egui::Context,
+    ) {
+        self.start_bytes(name, bytes, (view.width_px, view.height_px), ctx);
     }
 
-    /// Reads the open file again (in the background). A broken file shows its error and the last
-    /// good scene stays; a good one replaces the scene and keeps the user's camera unless it was
-    /// still the file's.
-    pub(crate) fn reload(&mut self) {
-        match self.scene.reload_target() {
+    /// Reads the open file again (in the background); says why not when there is none. A broken
+    /// file shows its error and the last good scene stays.
+    pub(crate) fn reload(&mut self, view: &View, ctx: &egui::Context) -> Option<Status> {
+        match self.reload_target() {
             Ok((path, kind)) => {
-                let size = (self.viewing.view.width_px, self.viewing.view.height_px);
-                self.scene.start_load(&path, kind, size, &self.ctx);
-            }
-            Err(status) => self.status = Some(status),
-        }
-    }
-
-    /// Takes a finished load ([`OpenScene::poll`]) and puts it on screen: an open in the view it
-    /// was last seen in, a reload in the user's camera unless that was still the file's.
-    pub(super) fn poll_load(&mut self) {
-        let Some((loaded, path, kind)) = self.scene.poll(&self.ctx) else {
-            return;
-        };
-        match kind {
-            LoadKind::Open => self.adopt_opened(loaded, &path),
-            LoadKind::Reload => {
-                let still_file_view = View {
-                    width_px: self.scene.loaded.file_view.width_px,
-                    height_px: self.scene.loaded.file_view.height_px,
-                    ..self.viewing.view
-                } == self.scene.loaded.file_view;
-                self.adopt(loaded, !still_file_view);
-                // After our own save over the open scene, the save's message stays.
-                if !std::mem::take(&mut self.scene.saving_over) {
-                    self.status = Some(Status::info(format!("reloaded {}", path.display())));
-                }
-            }
-        }
-    }
-
-    /// Puts a newly opened scene on screen in the view it was last seen in (if it was), remembers
-    /// it and watches its file.
-    fn adopt_opened(&mut self, loaded: LoadedScene, path: &Path) {
-        self.remember_view();
-        self.scene.failed_open = None;
-        // Exports are named after the scene on screen, unless the user chose a name.
-        let export = &mut self.settings.export;
-        if let Some(followed) = crate::export::export_path_following(
-            &export.path,
-            &crate::export::name_in_folder(self.scene.loaded.path.as_deref()),
-            &crate::export::name_in_folder(Some(path)),
-        ) {
-            export.path = followed;
-        }
-        // An older message (an error of an earlier try included) is not left beside it.
-        self.status = Some(Status::info(format!("opened {}", path.display())));
-        self.adopt(loaded, false);
-        if let Some(last) = self.settings.views.last.get(&SceneViews::key(path)) {
-            self.viewing.view = last.applied_to(&self.viewing.view);
-        }
-        self.viewing.history.reset(&self.viewing.view);
-        self.viewing.magnifier = Default::default();
-        self.viewing.probe.pinned_world = None;
-        self.panels.fields.path_text = path.display().to_string();
-        self.set_title(&format!("raytracer — {}", path.display()));
-        if self.scene.loaded.in_memory {
-            // No file to open again at the next start, or to watch.
-            self.scene.watcher = None;
-            return;
-        }
-        self.settings.last_scene = Some(path.to_path_buf());
-        let ctx = self.ctx.clone();
-        self.scene.watcher = match FileWatcher::watch(path, move || ctx.request_repaint()) {
-            Ok(watcher) => Some(watcher),
-            Err(error) => {
-                self.status = Some(Status::error(format!("live reload is off: {error}")));
+                self.start_load(&path, kind, (view.width_px, view.height_px), ctx);
                 None
             }
-        };
+            Err(status) => Some(status),
+        }
     }
 
-    /// Puts `loaded` on screen; `keep_view` keeps the current camera and depth range.
-    fn adopt(&mut self, loaded: LoadedScene, keep_view: bool) {
-        self.scene.adopt(loaded);
-        if !keep_view {
-            self.viewing.view = View {
-                width_px: self.viewing.view.width_px,
-                height_px: self.viewing.view.height_px,
-                ..self.scene.loaded.file_view
-            };
+    /// Takes a finished reload in: it replaces the scene and keeps the user's camera in `view`
+    /// unless it was still the file's. Says so, unless it is our own save's reload.
+    pub(crate) fn adopt_reload(
+        &mut self,
+        loaded: LoadedScene,
+        path: &Path,
+        view: &mut View,
+    ) -> Option<Status> {
+        let still_file_view = View {
+            width_px: self.loaded.file_view.width_px,
+            height_px: self.loaded.file_view.height_px,
+            ..*view
+        } == self.loaded.file_view;
+        self.adopt(loaded);
+        if still_file_view {
+            *view = self.file_view_at(view);
+        }
+        // After our own save over the open scene, the save's message stays.
+        (!std::mem::take(&mut self.saving_over))
+            .then(|| Status::info(format!("reloaded {}", path.display())))
+    }
+
+    /// Takes a newly opened scene in: on screen in its file's camera (at `view`'s size), its file
+    /// watched through `ctx` (a scene from no file is not). Says when the file cannot be watched.
+    pub(crate) fn adopt_opened(
+        &mut self,
+        loaded: LoadedScene,
+        path: &Path,
+        view: &mut View,
+        ctx: &egui::Context,
+    ) -> Option<Status> {
+        self.failed_open = None;
+        self.adopt(loaded);
+        *view = self.file_view_at(view);
+        if self.loaded.in_memory {
+            // No file to watch.
+            self.watcher = None;
+            return None;
+        }
+        let ctx = ctx.clone();
+        match FileWatcher::watch(path, move || ctx.request_repaint()) {
+            Ok(watcher) => {
+                self.watcher = Some(watcher);
+                None
+            }
+            Err(error) => {
+                self.watcher = None;
+                Some(Status::error(format!("live reload is off: {error}")))
+            }
+        }
+    }
+
+    /// The open scene's file camera and depth range at `view`'s image size.
+    fn file_view_at(&self, view: &View) -> View {
+        View {
+            width_px: view.width_px,
+            height_px: view.height_px,
+            ..self.loaded.file_view
         }
     }
 }

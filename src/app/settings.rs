@@ -1,7 +1,7 @@
 //! The viewer's settings that survive a restart (eframe storage): the last scene, the panel,
 //! export, quality and depth-display options, and the views kept per scene file.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use crate::export::ExtraDepth;
 use crate::render::depth_map::DepthColourMap;
@@ -124,6 +124,42 @@ impl DepthDisplay {
             no_hit_mark(self.colour_map)
         } else {
             DepthColourMap::FILE_NO_HIT
+        }
+    }
+}
+
+impl Settings {
+    /// The settings eframe's `storage` kept (the defaults when there are none); a size asked for
+    /// on the command line (`-size W H`) becomes the export's size.
+    pub(crate) fn from_storage(
+        storage: Option<&dyn eframe::Storage>,
+        size_px: Option<(u32, u32)>,
+    ) -> Self {
+        let mut settings: Self = storage
+            .and_then(|storage| eframe::get_value(storage, eframe::APP_KEY))
+            .unwrap_or_default();
+        if let Some((width, height)) = size_px {
+            settings.export.displayed_size = false;
+            settings.export.size_px = [width, height];
+        }
+        settings
+    }
+}
+
+impl Settings {
+    /// A scene opened from `path` after the one from `previous`: exports follow its name (unless
+    /// the user chose one), and a file (not `in_memory`) is the one to open at the next start.
+    pub(crate) fn follow_open(&mut self, previous: Option<&Path>, path: &Path, in_memory: bool) {
+        let export = &mut self.export;
+        if let Some(followed) = crate::export::export_path_following(
+            &export.path,
+            &crate::export::name_in_folder(previous),
+            &crate::export::name_in_folder(Some(path)),
+        ) {
+            export.path = followed;
+        }
+        if !in_memory {
+            self.last_scene = Some(path.to_path_buf());
         }
     }
 }

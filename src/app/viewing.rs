@@ -24,6 +24,23 @@ pub(crate) struct ProbePoints {
     pub(crate) pinned_world: Option<DVec3>,
 }
 
+/// A move of the view or the magnifier, from the keyboard or a gesture on the images.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Navigation {
+    /// Pan by this many image pixels (y up), as [`navigate::pan`].
+    Pan(DVec2),
+    /// Orbit around the scene's centre: yaw as a drag to the right, pitch up (radians).
+    Orbit(DVec2),
+    /// Zoom by this factor (the size multiplied) at this image position (pixels, y up).
+    ZoomAt(f64, DVec2),
+    /// Magnify the images by this factor at this image position (no new render).
+    Magnify(f64, DVec2),
+    /// Move the magnified part by this many image pixels.
+    PanMagnifier(DVec2),
+    /// The pointer is over this image position, or over neither image.
+    Hover(Option<DVec2>),
+}
+
 /// The viewer's "view and history" feature: the view the controls edit, its undo history, the
 /// camera "follow" last fitted the depth range for, the probed points and the magnifier.
 pub(crate) struct Viewing {
@@ -55,6 +72,43 @@ impl Viewing {
 }
 
 impl Viewing {
+    /// A scene was opened (its file's camera already in `view`): in the view it was `last` seen
+    /// in, if it was, with a history that starts there, the whole image and nothing pinned.
+    pub(crate) fn opened(&mut self, last: Option<&SavedView>) {
+        if let Some(last) = last {
+            self.view = last.applied_to(&self.view);
+        }
+        self.history.reset(&self.view);
+        self.magnifier = Magnifier::default();
+        self.probe.pinned_world = None;
+    }
+
+    /// Carries out `navigation` on `scene`; the magnifier moves over the frame on screen,
+    /// `shown_size_px` (none: it stays).
+    pub(crate) fn navigate(
+        &mut self,
+        navigation: Navigation,
+        scene: &Scene,
+        shown_size_px: Option<[u32; 2]>,
+    ) {
+        match (navigation, shown_size_px) {
+            (Navigation::Pan(px), _) => self.view = navigate::pan(&self.view, px),
+            (Navigation::Orbit(turn_rad), _) => {
+                let pivot = navigate::orbit_pivot(scene);
+                self.view = navigate::orbit(&self.view, pivot, turn_rad.x, turn_rad.y);
+            }
+            (Navigation::ZoomAt(factor, anchor_px), _) => {
+                self.view = navigate::zoom_at(&self.view, factor, anchor_px);
+            }
+            (Navigation::Magnify(factor, anchor_px), Some(size_px)) => {
+                self.magnifier.zoom_at(factor, anchor_px, size_px);
+            }
+            (Navigation::PanMagnifier(px), Some(size_px)) => self.magnifier.pan(px, size_px),
+            (Navigation::Hover(px), _) => self.probe.hover_px = px,
+            (Navigation::Magnify(..) | Navigation::PanMagnifier(_), None) => {}
+        }
+    }
+
     /// "Auto range": fits the depth range to the t visible in `shown` (the frame on screen),
     /// ignoring `cut_percent` at each end. Says so when no sphere is visible.
     pub(crate) fn auto_range(&mut self, shown: Option<&Frame>, cut_percent: f64) -> Option<Status> {

@@ -18,14 +18,17 @@ use wasm_bindgen::JsCast as _;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen_futures::JsFuture;
 
-use crate::platform::browser::{download, fetch_bytes, js_error, same_site_url, window};
+use crate::compare::their_image::decode_their_image;
+use crate::platform::browser::{
+    download, download_name, fetch_bytes, js_error, same_site_url, window,
+};
 use crate::platform::browser::{scene_parameter, set_title};
 
-use super::ViewerApp;
 use super::actions::Action;
 use super::compare::ImageKind;
 use super::dialogs::DialogKind;
 use super::status::Status;
+use super::viewer::ViewerApp;
 use crate::output::atomic::{FilesInMemory, Stage};
 
 /// What a file that came in is for.
@@ -225,18 +228,22 @@ impl ViewerApp {
                 }
             };
             let name = incoming.name;
-            match incoming.purpose {
-                Purpose::Open => self.open_bytes(&name, bytes),
-                Purpose::Compare(kind) => self.compare_with_bytes(&name, bytes, kind),
-                Purpose::ByName => match dropped_image_kind(&name) {
-                    Some(kind) => self.compare_with_bytes(&name, bytes, kind),
-                    None => self.open_bytes(&name, bytes),
-                },
-            }
+            let compared_as = match incoming.purpose {
+                Purpose::Open => None,
+                Purpose::Compare(kind) => Some(kind),
+                Purpose::ByName => dropped_image_kind(&name),
+            };
+            let Some(kind) = compared_as else {
+                self.open_bytes(&name, bytes);
+                continue;
+            };
+            let read = move |path: &Path| decode_their_image(path, &bytes);
+            let against = self.against();
+            let status = self.compare.with_image(&against, name.into(), kind, read);
+            self.say(status);
         }
     }
 
-    /// Downloads the files `written` holds; the status bar names them.
     /// Opens the scene at `path`: in a page, the path field holds an address on the page's
     /// site, fetched.
     pub(super) fn open_path(&mut self, path: &std::path::Path) {
@@ -287,6 +294,7 @@ impl ViewerApp {
         self.download_files(files);
     }
 
+    /// Downloads the files `written` holds; the status bar names them.
     pub(crate) fn download_files(&mut self, written: Result<Vec<(String, Vec<u8>)>, String>) {
         let outcome = written.and_then(|files| {
             for (name, bytes) in &files {
@@ -488,12 +496,4 @@ impl WebHandle {
     fn with_app<T>(&self, read: impl FnOnce(&ViewerApp) -> T) -> Option<T> {
         self.runner.app_mut::<ViewerApp>().map(|app| read(&app))
     }
-}
-
-/// The name a browser page downloads `path` as: its last part.
-fn download_name(path: &std::path::Path) -> String {
-    path.file_name().map_or_else(
-        || "raytracer".to_owned(),
-        |name| name.to_string_lossy().into_owned(),
-    )
 }

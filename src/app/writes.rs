@@ -26,6 +26,17 @@ pub(crate) struct Writes {
 }
 
 impl Writes {
+    /// Nothing written yet; export scripts run `program`. Knows whether file dialogs can show.
+    pub(crate) fn new(program: Option<PathBuf>) -> Self {
+        Self {
+            task: None,
+            pending_replace: None,
+            dialog: None,
+            dialog_note: super::dialogs::dialog_unavailable_reason(),
+            program,
+        }
+    }
+
     /// The finished write's message (an error when it failed); `None` while none finished.
     pub(crate) fn poll(&mut self) -> Option<Status> {
         let finished = match self.task.as_ref().map(Task::poll)? {

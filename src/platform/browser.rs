@@ -97,3 +97,11 @@ pub fn set_title(title: &str) {
         document.set_title(title);
     }
 }
+
+/// The name a browser page downloads `path` as: its last part.
+pub(crate) fn download_name(path: &std::path::Path) -> String {
+    path.file_name().map_or_else(
+        || "raytracer".to_owned(),
+        |name| name.to_string_lossy().into_owned(),
+    )
+}

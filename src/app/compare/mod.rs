@@ -26,15 +26,15 @@ pub use pixels::{
 };
 pub(crate) use pixels::{OFF_LEVELS, REFERENCE_SAMPLES};
 
-use super::ViewerApp;
 use super::background::{Poll, Task};
 use super::reload::{FileWatcher, WatchState};
 use super::status::Status;
 use crate::compare::picture::{heat_map, heat_map_highlighted, heat_map_marked};
-use crate::compare::their_image::{TheirImageError, decode_their_image, read_their_image};
+use crate::compare::their_image::{TheirImageError, read_their_image};
 use crate::explore::trace::PixelTrace;
-use crate::render::View;
 use crate::render::depth_map::DepthRange;
+use crate::render::{Quality, View};
+use crate::scene::Scene;
 
 /// What the compared image shows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -317,98 +317,139 @@ impl CompareState {
     }
 }
 
-impl ViewerApp {
-    /// Opens the image at `path` and compares it with the exact render of the open scene.
-    pub(crate) fn compare_with_file(&mut self, path: PathBuf, kind: ImageKind) {
-        let ctx = self.ctx.clone();
-        self.compare.watched = FileWatcher::watch(&path, move || ctx.request_repaint())
+/// What a comparison is made against: the open scene, the view on screen, and the context woken
+/// when the comparison is done.
+pub(crate) struct Against {
+    pub(crate) ctx: egui::Context,
+    pub(crate) scene: Arc<Scene>,
+    pub(crate) view: View,
+}
+
+impl CompareState {
+    /// Opens the image at `path` and compares it with the exact render of the open scene (and
+    /// watches the file, to compare it again when their program writes it again).
+    pub(crate) fn with_file(
+        &mut self,
+        against: &Against,
+        path: PathBuf,
+        kind: ImageKind,
+    ) -> Option<Status> {
+        let ctx = against.ctx.clone();
+        let watched = FileWatcher::watch(&path, move || ctx.request_repaint())
             .ok()
             .map(|watcher| (path.clone(), kind, watcher));
-        self.compare_theirs(path, kind, None, read_their_image);
+        let status = self.with_image(against, path, kind, read_their_image);
+        self.watched = watched;
+        status
     }
 
-    /// Compares the image `bytes` named `name` (a browser page's dropped or picked file) with the
-    /// exact render, as [`Self::compare_with_file`] does a file.
-    pub fn compare_with_bytes(&mut self, name: &str, bytes: Arc<[u8]>, kind: ImageKind) {
-        self.compare.watched = None;
-        self.compare_theirs(name.into(), kind, None, move |path| {
-            decode_their_image(path, &bytes)
-        });
+    /// Compares the image `read` gets for `path` (a file, or a browser page's dropped or picked
+    /// file: its bytes, decoded) with the exact render, unwatched.
+    pub(crate) fn with_image(
+        &mut self,
+        against: &Against,
+        path: PathBuf,
+        kind: ImageKind,
+        read: impl FnOnce(&Path) -> Result<RgbImage, TheirImageError> + Send + 'static,
+    ) -> Option<Status> {
+        self.watched = None;
+        self.theirs(against, path, kind, None, read)
     }
 
     /// Compares the image `read` gets for `path` with the exact render, in the background: a
     /// depth image under `range`, or with `None` under the range read back from it.
-    fn compare_theirs(
+    fn theirs(
         &mut self,
+        against: &Against,
         path: PathBuf,
         kind: ImageKind,
         range: Option<DepthRange>,
         read: impl FnOnce(&Path) -> Result<RgbImage, TheirImageError> + Send + 'static,
-    ) {
-        let scene = Arc::clone(&self.scene.loaded.scene);
-        let fallback = self.viewing.view.depth_range;
-        self.compare.kind = kind;
-        let status = self.compare.start(&self.ctx, move || {
+    ) -> Option<Status> {
+        let scene = Arc::clone(&against.scene);
+        let fallback = against.view.depth_range;
+        self.kind = kind;
+        self.start(&against.ctx, move || {
             let theirs = read(&path).map_err(|error| error.to_string())?;
             compare_file(&scene, &path, theirs, kind, range, fallback)
-        });
-        self.say(status);
+        })
     }
 
-    /// Measures the chosen quality against the exact render on the current view.
-    pub(crate) fn compare_quality(&mut self) {
-        let scene = Arc::clone(&self.scene.loaded.scene);
-        let view = self.viewing.view;
-        let quality = self.settings.quality;
-        let status = self
-            .compare
-            .start(&self.ctx, move || compare_quality(&scene, &view, &quality));
-        self.say(status);
+    /// Measures `quality` against the exact render on the view on screen.
+    pub(crate) fn with_quality(&mut self, against: &Against, quality: Quality) -> Option<Status> {
+        let scene = Arc::clone(&against.scene);
+        let view = against.view;
+        self.start(&against.ctx, move || {
+            compare_quality(&scene, &view, &quality)
+        })
     }
 
-    /// Takes a finished comparison in ([`CompareState::poll`]); with their image, holds the view
-    /// at the file's camera and their size. A depth image sets the depth range to the one it
-    /// was judged under (read back from it), and follows the depth range after: it is judged
-    /// again under the range the user sets.
-    pub(crate) fn poll_comparison(&mut self) {
-        // Their file written again (and settled): read and judged again, its range read anew.
+    /// Takes a finished comparison in ([`CompareState::poll`]); with their image, holds `view`
+    /// at the file's camera and their size, and says the outcome in `status`. A depth image sets
+    /// the depth range to the one it was judged under (read back from it), and follows the depth
+    /// range after: it is judged again under the range the user sets. Their file written again
+    /// (and settled) is read and judged again.
+    pub(crate) fn take_in(
+        &mut self,
+        ctx: &egui::Context,
+        scene: &Arc<Scene>,
+        view: &mut View,
+        status: &mut Option<Status>,
+    ) {
+        let against = Against {
+            ctx: ctx.clone(),
+            scene: Arc::clone(scene),
+            view: *view,
+        };
         // (Asked only between comparisons: a change seen while one runs waits for it.)
         let seen = self
-            .compare
             .watched
             .as_ref()
-            .filter(|_| !self.compare.busy())
+            .filter(|_| !self.busy())
             .map(|(path, kind, watcher)| (path, *kind, watcher.poll()));
         match seen {
             Some((path, kind, WatchState::Changed)) => {
                 let path = path.clone();
-                self.compare_theirs(path, kind, None, read_their_image);
+                say(
+                    status,
+                    self.theirs(&against, path, kind, None, read_their_image),
+                );
                 return;
             }
-            Some((_, _, WatchState::Settling(wait))) => self.ctx.request_repaint_after(wait),
+            Some((_, _, WatchState::Settling(wait))) => ctx.request_repaint_after(wait),
             _ => {}
         }
-        if !self.compare.busy() {
-            let range = self.viewing.view.depth_range;
-            if let Some((path, theirs)) = self.compare.stale_depth_image(range) {
-                self.compare_theirs(path, ImageKind::Depth, Some(range), move |_| Ok(theirs));
+        if !self.busy() {
+            let range = view.depth_range;
+            if let Some((path, theirs)) = self.stale_depth_image(range) {
+                let said = self.theirs(&against, path, ImageKind::Depth, Some(range), move |_| {
+                    Ok(theirs)
+                });
+                say(status, said);
             }
             return;
         }
-        match self.compare.poll(&self.ctx) {
+        match self.poll(ctx) {
             Ok(None) => {}
-            Ok(Some((view, kind))) => {
+            Ok(Some((held, kind))) => {
                 let depth_range = match kind {
-                    ImageKind::Depth => view.depth_range,
-                    ImageKind::Colour => self.viewing.view.depth_range,
+                    ImageKind::Depth => held.depth_range,
+                    ImageKind::Colour => view.depth_range,
                 };
-                self.viewing.view = View {
+                *view = View {
                     depth_range,
-                    ..view
+                    ..held
                 };
-                self.status = self.compare.done_message();
+                *status = self.done_message();
             }
-            Err(status) => self.status = Some(status),
+            Err(error) => *status = Some(error),
         }
+    }
+}
+
+/// Puts `said` in the status bar, if anything was said.
+fn say(status: &mut Option<Status>, said: Option<Status>) {
+    if said.is_some() {
+        *status = said;
     }
 }

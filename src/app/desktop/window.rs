@@ -11,7 +11,7 @@
 
 use eframe::Renderer;
 
-use crate::app::ViewerApp;
+use crate::app::viewer::ViewerApp;
 use crate::cli::ViewerRequest;
 
 /// The environment variable that chooses the renderer: `glow` (OpenGL, the default) or `wgpu`.

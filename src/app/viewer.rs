@@ -1,0 +1,496 @@
+//! The viewer's coordinator, [`ViewerApp`]: it holds each feature's state, routes input and
+//! [`Action`]s between the features, takes in what the background work finished, and draws the
+//! window through [`super::layout`]. Its read access (the view, the frame on screen, the probe,
+//! the messages) is what the tests and tools drive the viewer through, beside
+//! [`ViewerApp::apply`].
+
+use std::path::Path;
+use std::time::Duration;
+
+use glam::DVec2;
+
+use super::actions::Action;
+use super::depth_stats::DepthHistogram;
+use super::loaded_scene::LoadedScene;
+use super::probe::{Probe, point_of_probe};
+use super::saved_views::SceneViews;
+use super::scene_loading::{LoadKind, OpenScene};
+use super::settings::Settings;
+use super::status::{Clears, Status};
+use super::ui::magnifier::Magnifier;
+use super::{compare, input, layout, pixel_trace, render_requests, viewing, writes};
+use crate::cli::ViewerRequest;
+use crate::render::{Frame, View};
+
+/// Image size used until the first layout tells the real one.
+const INITIAL_SIZE_PX: (u32, u32) = (512, 512);
+
+/// The viewer application: the coordinator. Each feature's state is a struct of its own (the
+/// open scene, the view, the frames, the writes, the panels, the comparison); the coordinator
+/// routes input and [`Action`]s between them and draws the window.
+pub struct ViewerApp {
+    /// What survives a restart.
+    pub(super) settings: Settings,
+    /// The scene on screen, its load, watcher and error.
+    pub(super) scene: OpenScene,
+    /// The view, its history, the probe and the magnifier.
+    pub(super) viewing: viewing::Viewing,
+    /// The frames asked of the render worker and the one on screen.
+    pub(super) frames: render_requests::Frames,
+    /// Exports and saved scenes: the write in flight, the one waiting for a yes, file dialogs.
+    pub(super) writes: writes::Writes,
+    /// The side panel's fields, the drawer and the shortcuts overlay.
+    pub(super) panels: layout::Panels,
+    /// The Compare section: their image or the chosen quality against the exact render.
+    pub(super) compare: compare::CompareState,
+    /// The status bar's message.
+    pub(super) status: Option<Status>,
+    /// In a browser page: files on their way in.
+    #[cfg(target_arch = "wasm32")]
+    pub(super) page: super::web::Page,
+    pub(super) ctx: egui::Context,
+}
+
+impl ViewerApp {
+    /// Creates the viewer: settings from eframe's storage, the scene from the request (or the last
+    /// scene, or the embedded default), and the render worker.
+    pub fn new(cc: &eframe::CreationContext<'_>, request: ViewerRequest) -> Self {
+        let settings = Settings::from_storage(cc.storage, request.size_px);
+        // Ctrl+plus and Ctrl+minus zoom the camera; the interface keeps its size.
+        cc.egui_ctx
+            .options_mut(|options| options.zoom_with_keyboard = false);
+        let (frames, status) = render_requests::Frames::start(&cc.egui_ctx, cc.gl.is_some());
+        let loaded = LoadedScene::default_scene(INITIAL_SIZE_PX);
+        let mut app = Self {
+            settings,
+            viewing: viewing::Viewing::new(loaded.file_view),
+            scene: OpenScene::new(loaded),
+            frames,
+            writes: writes::Writes::new(request.program.clone()),
+            panels: layout::Panels::default(),
+            compare: compare::CompareState::default(),
+            status,
+            #[cfg(target_arch = "wasm32")]
+            page: super::web::Page::default(),
+            ctx: cc.egui_ctx.clone(),
+        };
+        let ctx = cc.egui_ctx.clone();
+        crate::platform::process::set_wake(move || ctx.request_repaint());
+        app.open_first(request.input);
+        app
+    }
+
+    /// What a comparison started now is made against.
+    pub(super) fn against(&self) -> compare::Against {
+        compare::Against {
+            ctx: self.ctx.clone(),
+            scene: std::sync::Arc::clone(&self.scene.loaded.scene),
+            view: self.viewing.view,
+        }
+    }
+
+    /// Shows what a feature had to say, if anything, in the status bar.
+    pub(super) fn say(&mut self, status: Option<Status>) {
+        if let Some(status) = status {
+            self.status = Some(status);
+        }
+    }
+
+    /// Traces the pinned pixel of the frame on screen into the trace window.
+    fn open_trace(&mut self) {
+        let view = self.frames.shown.as_ref().map(|shown| &shown.view);
+        match pixel_trace::trace_text(
+            &self.scene.loaded.scene,
+            view,
+            self.pinned_px(),
+            &self.compare,
+        ) {
+            Ok(text) => self.panels.trace = Some(text),
+            Err(status) => self.status = Some(status),
+        }
+    }
+
+    /// "Auto range" on the frame on screen (the settings' cut at each ends).
+    pub fn auto_range(&mut self) {
+        let shown = self.frames.shown.as_ref().map(|shown| &*shown.frame);
+        let status = self
+            .viewing
+            .auto_range(shown, self.settings.depth.auto_cut_percent);
+        self.say(status);
+    }
+
+    /// "Frame all" on the open scene.
+    pub fn frame_all(&mut self) {
+        self.viewing.frame_all(&self.scene.loaded.scene);
+    }
+
+    /// The frame the settings, the view and the open scene ask for.
+    fn wanted(&self) -> render_requests::Wanted {
+        render_requests::Frames::wanted(self.viewing.view, self.scene.epoch, &self.settings)
+    }
+
+    /// True when the frame on screen is the current view of the current scene at the current
+    /// quality. While a scene loads this is false: the frame will change once it is in.
+    pub fn frame_is_current(&self) -> bool {
+        self.scene.loading.is_none() && self.frames.shows(self.wanted())
+    }
+
+    /// Whether the frame on screen is a one-sample preview of a supersampled quality.
+    pub fn showing_preview(&self) -> bool {
+        self.frames.shows_preview_of(&self.settings.quality)
+    }
+
+    /// Takes a finished frame in: a status waiting for one clears, and "follow" fits the depth
+    /// range to it; a failed render says why.
+    fn receive_frame(&mut self) {
+        match self.frames.receive(&self.ctx) {
+            None => {}
+            Some(Err(error)) => self.status = Some(Status::view_error(error)),
+            Some(Ok(())) => {
+                if self
+                    .status
+                    .as_ref()
+                    .is_some_and(|s| s.clears == Clears::WhenAFrameRenders)
+                {
+                    self.status = None;
+                }
+                let depth = &self.settings.depth;
+                let shown = self.frames.shown.as_ref();
+                let cut = depth.auto_cut_percent;
+                self.viewing
+                    .follow_depth(depth.follow, shown, self.scene.epoch, cut);
+            }
+        }
+    }
+
+    /// Starts loading the scene at `path` in the background ([`OpenScene::open`]); once read, it
+    /// replaces the scene on screen.
+    pub fn open(&mut self, path: &Path) {
+        self.scene.open(path, &self.viewing.view, &self.ctx);
+    }
+
+    /// Opens the scene `bytes` named `name` (a browser page's file), as [`Self::open`].
+    pub fn open_bytes(&mut self, name: &str, bytes: std::sync::Arc<[u8]>) {
+        self.scene
+            .open_bytes(name, bytes, &self.viewing.view, &self.ctx);
+    }
+
+    /// Takes a finished load in ([`OpenScene::poll`]): an open in the view it was last seen in,
+    /// a reload in the user's camera unless that was still the file's.
+    fn receive_scene(&mut self) {
+        let Some((loaded, path, kind)) = self.scene.poll(&self.ctx) else {
+            return;
+        };
+        let view = &mut self.viewing.view;
+        if kind == LoadKind::Reload {
+            let status = self.scene.adopt_reload(loaded, &path, view);
+            return self.say(status);
+        }
+        let previous = self.scene.loaded.path.as_deref();
+        self.settings.views.remember(previous, view);
+        self.settings.follow_open(previous, &path, loaded.in_memory);
+        // An older message (an error of an earlier try included) is not left beside it.
+        self.status = Some(Status::info(format!("opened {}", path.display())));
+        let status = self.scene.adopt_opened(loaded, &path, view, &self.ctx);
+        self.say(status);
+        let last = self.settings.views.last.get(&SceneViews::key(&path));
+        self.viewing.opened(last);
+        self.panels.fields.path_text = path.display().to_string();
+        self.set_title(&format!("raytracer — {}", path.display()));
+    }
+
+    /// Carries out `action`. A one-shot view change is a step of the history of its own.
+    pub(crate) fn apply(&mut self, action: Action) {
+        let one_shot = matches!(
+            action,
+            Action::FrameAll
+                | Action::ResetView
+                | Action::ResetDepth
+                | Action::AutoRange
+                | Action::UseDepthRange(_)
+                | Action::GoToView(_)
+        );
+        let before = self.viewing.view;
+        self.carry_out(action);
+        if one_shot {
+            self.viewing.history.one_shot(&before, &self.viewing.view);
+        }
+    }
+
+    fn carry_out(&mut self, action: Action) {
+        match action {
+            Action::OpenDialog(kind) => self.open_dialog(kind),
+            Action::Open(path) => self.open_path(&path),
+            Action::OpenBundled(index) => {
+                if let Some((name, text)) = crate::scene::bundled::BUNDLED_SCENES.get(index) {
+                    self.open_bytes(name, std::sync::Arc::from(text.as_bytes()));
+                }
+            }
+            Action::Reload => {
+                let status = self.scene.reload(&self.viewing.view, &self.ctx);
+                self.say(status);
+            }
+            Action::FrameAll => self.frame_all(),
+            Action::ResetView => self.viewing.reset_view(&self.scene.loaded.file_view),
+            Action::ResetDepth => self.viewing.reset_depth(&self.scene.loaded.file_view),
+            Action::AutoRange => self.auto_range(),
+            Action::UseDepthRange(range) => self.viewing.view.depth_range = range,
+            Action::Undo => {
+                let status = self.viewing.undo();
+                self.say(status);
+            }
+            Action::Redo => {
+                let status = self.viewing.redo();
+                self.say(status);
+            }
+            Action::NameView(name) => {
+                let path = self.scene.loaded.path.as_deref();
+                let status = self
+                    .viewing
+                    .name_view(&mut self.settings.views, path, &name);
+                self.say(Some(status));
+            }
+            Action::GoToView(index) => {
+                let path = self.scene.loaded.path.as_deref();
+                self.viewing
+                    .go_to_view(&mut self.settings.views, path, index);
+            }
+            Action::ForgetView(index) => {
+                let path = self.scene.loaded.path.as_deref();
+                viewing::forget_view(&mut self.settings.views, path, index);
+            }
+            Action::ToggleHelp => self.panels.help_open = !self.panels.help_open,
+            Action::ResetMagnifier => self.viewing.magnifier = Default::default(),
+            Action::ExportTo(_) | Action::SaveViewTo(_) | Action::ExportCourseFiles => {
+                self.write_or_ask(action);
+            }
+            Action::Navigate(navigation) => {
+                let size_px = self
+                    .frames
+                    .shown
+                    .as_ref()
+                    .map(|s| [s.frame.width_px, s.frame.height_px]);
+                self.viewing
+                    .navigate(navigation, &self.scene.loaded.scene, size_px);
+            }
+            Action::Pin(px) => {
+                // The point itself is pinned, so the pin stays on it while the view moves.
+                if let Some(probe) = self.probe_at(px) {
+                    self.viewing.probe.pinned_world = Some(point_of_probe(&probe));
+                }
+            }
+            Action::Unpin => self.viewing.probe.pinned_world = None,
+            Action::Trace => self.open_trace(),
+            Action::CompareImage(path, kind) => {
+                let against = self.against();
+                let status = self.compare.with_file(&against, path, kind);
+                self.say(status);
+            }
+            Action::CompareQuality => {
+                let quality = self.settings.quality;
+                let against = self.against();
+                let status = self.compare.with_quality(&against, quality);
+                self.say(status);
+            }
+            Action::CompareShow(show) => {
+                if self.compare.current.is_some() {
+                    self.compare.show = show;
+                }
+            }
+            Action::CompareFlip => self.compare.flip(),
+            Action::CompareDifference => self.compare.toggle_difference(),
+            Action::CompareClose => self.compare.close(),
+        }
+    }
+
+    // What the viewer shows, read from outside: the tests and tools (screenshots, benchmarks)
+    // drive the viewer through these and through `apply`.
+
+    /// The view the controls currently describe.
+    pub fn view(&self) -> &View {
+        &self.viewing.view
+    }
+
+    /// Mutable access to the view (as the controls edit it).
+    pub fn view_mut(&mut self) -> &mut View {
+        &mut self.viewing.view
+    }
+
+    /// The scene on screen.
+    pub fn loaded_scene(&self) -> &LoadedScene {
+        &self.scene.loaded
+    }
+
+    /// The frame on screen, with the view it was rendered for.
+    pub fn shown_frame(&self) -> Option<(&Frame, &View)> {
+        self.frames
+            .shown
+            .as_ref()
+            .map(|shown| (shown.frame.as_ref(), &shown.view))
+    }
+
+    /// The persisted settings.
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// The persisted settings, to change.
+    pub fn settings_mut(&mut self) -> &mut Settings {
+        &mut self.settings
+    }
+
+    /// The histogram of visible t of the frame on screen.
+    pub fn histogram(&self) -> Option<&DepthHistogram> {
+        self.frames
+            .shown
+            .as_ref()
+            .and_then(|s| s.histogram.as_ref())
+    }
+
+    /// Probes the frame on screen at image position `px` (pixels, y up).
+    pub(crate) fn probe_at(&self, px: DVec2) -> Option<Probe> {
+        let scene = &self.scene.loaded.scene;
+        self.frames.probe_at(scene, self.scene.epoch, px)
+    }
+
+    /// The pointer's position on an image (image pixels, y up), if it is over one.
+    pub fn hover_px(&self) -> Option<DVec2> {
+        self.viewing.probe.hover_px
+    }
+
+    /// The probe of the pixel under the pointer.
+    pub fn hover_probe(&self) -> Option<Probe> {
+        self.viewing.probe.hover_px.and_then(|px| self.probe_at(px))
+    }
+
+    /// The probe of the pinned point, where it is on the frame on screen (`None` when it is out
+    /// of view or nothing is pinned).
+    pub fn pinned_probe(&self) -> Option<Probe> {
+        self.pinned_px().and_then(|px| self.probe_at(px))
+    }
+
+    /// The magnifier: which part of the frame the images show.
+    pub fn magnifier(&self) -> Magnifier {
+        self.viewing.magnifier
+    }
+
+    /// Whether the shortcuts overlay is open.
+    pub fn help_open(&self) -> bool {
+        self.panels.help_open
+    }
+
+    /// The error of the last scene that failed to load, if shown.
+    pub fn scene_error(&self) -> Option<&str> {
+        self.scene.error.as_deref()
+    }
+
+    /// The status bar's message and whether it is an error.
+    pub fn message(&self) -> Option<(&str, bool)> {
+        self.status
+            .as_ref()
+            .map(|s| (s.text.as_str(), s.is_error()))
+    }
+
+    /// True while an export or a saved view is being written.
+    pub fn export_running(&self) -> bool {
+        self.writes.task.is_some()
+    }
+
+    /// True while a scene file is being read.
+    pub fn loading(&self) -> bool {
+        self.scene.loading.is_some()
+    }
+
+    /// How many scenes have been loaded (an open or a reload each count one).
+    pub fn scene_loads(&self) -> u64 {
+        self.scene.epoch
+    }
+
+    /// Behaves from now on as where no file dialog can be shown (no desktop portal, no zenity):
+    /// for tests and tools on machines that have one.
+    pub fn without_file_dialogs(&mut self) {
+        self.writes.dialog_note = Some(super::dialogs::NO_DIALOG);
+    }
+
+    /// Waits (for tests and tools) until the worker has nothing to do.
+    pub fn wait_for_worker(&self, timeout: Duration) -> bool {
+        self.frames
+            .worker
+            .as_ref()
+            .is_none_or(|w| w.wait_idle(timeout))
+    }
+
+    /// The comparison on screen (Compare section), if any.
+    pub fn comparison(&self) -> Option<&super::compare::ComparisonPixels> {
+        self.compare.current.as_ref().map(|c| &c.pixels)
+    }
+
+    /// What the compared image shows.
+    pub fn compare_show(&self) -> super::compare::CompareShow {
+        self.compare.show
+    }
+
+    /// True while a comparison is being computed.
+    pub fn comparing(&self) -> bool {
+        self.compare.busy()
+    }
+}
+
+impl eframe::App for ViewerApp {
+    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        let ctx = ui.ctx().clone();
+        if let Some(log) = &mut self.frames.log {
+            log.ui(frame.info().cpu_usage);
+        }
+        if crate::platform::process::stop_requested().is_some() {
+            // A termination signal: close (eframe saves the settings on the way out).
+            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+        }
+        self.poll_platform();
+        self.receive_frame();
+        self.receive_scene();
+        self.poll_background();
+        let (scene, view) = (&self.scene.loaded.scene, &mut self.viewing.view);
+        self.compare.take_in(&ctx, scene, view, &mut self.status);
+        let help_open = self.panels.help_open;
+        let watcher = self.scene.watcher.as_ref();
+        let input = input::read(&ctx, watcher, help_open, &self.viewing.view);
+        for action in input.actions {
+            self.apply(action);
+        }
+        if let Some(file) = input.dropped {
+            self.open_dropped(file);
+        }
+        let actions = self.layout_ui(ui);
+        for action in actions {
+            self.apply(action);
+        }
+        if self.frames.log.is_some() {
+            let name = self.status_line().scene_name;
+            if let Some(log) = &mut self.frames.log {
+                log.missing_glyphs(&ctx, &name);
+            }
+        }
+        self.viewing
+            .history
+            .observe(&self.viewing.view, web_time::Instant::now());
+        let wanted = self.wanted();
+        self.frames
+            .submit_if_changed(&self.scene.loaded.scene, wanted, &self.ctx);
+        if self.busy() {
+            ctx.request_repaint_after(std::time::Duration::from_millis(100));
+        }
+    }
+
+    /// The page's handle reads the app through this (`app::web::WebHandle`).
+    #[cfg(target_arch = "wasm32")]
+    fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
+        Some(self)
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        let open = self.scene.loaded.path.as_deref();
+        self.settings.views.remember(open, &self.viewing.view);
+        eframe::set_value(storage, eframe::APP_KEY, &self.settings);
+    }
+}
