@@ -2,22 +2,24 @@
 //! open and export. The viewer only edits a [`View`](crate::render::View), hands (scene, view) jobs to a background
 //! worker and uploads the textures it gets back; all rendering math is in the library.
 //!
-//! [`ViewerApp`] coordinates; each concern lives in a module of its own:
+//! [`ViewerApp`] ([`viewer`]) coordinates: it holds each feature's state, routes input and
+//! actions between them, and is what tests and tools drive the viewer through. Each concern lives
+//! in a module of its own, and owns its behaviour on its own state:
 //! * [`settings`]: the settings that survive a restart
 //! * [`loaded_scene`]: the scene on screen and where it came from
 //! * [`render_job`]: the render worker's job (render + texture pixels off the UI thread);
 //!   (the worker that runs the newest job is `platform::worker`)
 //! * [`frame_log`]: per-frame figures for scripts that measure the real window
 //! * [`render_requests`]: asking the worker for frames (progressive refinement) and taking them in
-//! * [`scene_loading`]: opening and reloading scene files in the background
+//! * [`scene_loading`]: opening and reloading scene files in the background, and taking them in
 //! * [`actions`]: what the user can ask for ([`actions::Action`]), exports, dialogs
 //! * [`compare`]: their image (or the chosen quality) against the exact render, the diagnosis
 //! * [`confirm`]: asking before a write replaces files; [`writes`]: the writes' state
 //! * [`course_files`]: the course's 200×200 TGA pair and command line for the open scene
 //! * [`pixel_trace`]: the course's computation behind the pinned pixel, in a window
 //! * [`saved_views`]: undo and redo, named views, the view each scene was last seen in
-//! * [`viewing`]: auto range and follow, frame all, resets, undo and redo, named views
-//! * [`input`]: shortcuts, dropped files, keyboard and pointer navigation
+//! * [`viewing`]: navigation, auto range and follow, frame all, resets, undo and redo, named views
+//! * [`input`]: shortcuts, dropped files, keyboard and pointer navigation, read into actions
 //! * [`navigate`]: pan, zoom at a point, orbit and "frame all" as math on a view
 //! * [`probe`]: what one pixel of a frame shows; [`depth_stats`]: the histogram of visible t and
 //!   the auto depth range
@@ -25,7 +27,7 @@
 //! * [`background`]: the one background-task type (loads, writes, dialogs)
 //! * [`status`]: the typed status-bar message
 //! * [`dialogs`]: native file dialogs; [`reload`]: watching the open file
-//! * [`window`]: opening the window (or saying why none can be opened)
+//! * `desktop::window`: opening the window (or saying why none can be opened)
 //! * [`web`]: in a browser page, files in as bytes and out as downloads; [`desktop`]: on the
 //!   desktop, files out into the file system
 //! * [`ui`]: the drawing, one `*_ui` function per part
