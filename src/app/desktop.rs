@@ -9,13 +9,13 @@ use std::path::PathBuf;
 
 use std::path::Path;
 
-use super::actions::Action;
+use super::actions::{Action, Write};
 use super::background::Task;
 use super::dialogs::{DialogKind, PendingDialog};
 use super::status::Status;
 use super::viewer::ViewerApp;
-use super::writes::Writes;
-use crate::output::atomic::{FileSet, Stage};
+use super::writes::{Stager, Writes};
+use crate::output::atomic::FileSet;
 
 impl ViewerApp {
     /// Opens the scene the command line names, or else the scene open when the viewer last
@@ -31,8 +31,8 @@ impl ViewerApp {
         clippy::unused_self,
         reason = "a method, as each seam's are: the caller names no seam"
     )]
-    pub(super) fn missing_export_folder(&self, action: &Action) -> Option<PathBuf> {
-        let Action::ExportTo(base) = action else {
+    pub(super) fn missing_export_folder(&self, write: &Write) -> Option<PathBuf> {
+        let Write::ExportTo(base) = write else {
             return None;
         };
         crate::export::export_folder(base).filter(|folder| !folder.is_dir())
@@ -96,24 +96,19 @@ impl ViewerApp {
         let export = &self.settings.export;
         let typed = |text: &str| (!text.trim().is_empty()).then(|| PathBuf::from(text.trim()));
         let action = match kind {
-            DialogKind::Export => typed(&export.path).map(Action::ExportTo),
-            DialogKind::SaveScene => typed(&export.scene_path).map(Action::SaveViewTo),
+            DialogKind::Export => typed(&export.path).map(Write::ExportTo),
+            DialogKind::SaveScene => typed(&export.scene_path).map(Write::SaveViewTo),
             DialogKind::Open | DialogKind::CompareImage(_) => None,
         };
         match action {
-            Some(action) => self.apply(action),
+            Some(write) => self.apply(Action::Write(write)),
             None => self.status = Some(Status::error(reason)),
         }
     }
 
     /// Writes the files `stage` stages, all or nothing, in the background: the status bar says
     /// `running` meanwhile, then `done` and the full path of each file written (or why none was).
-    pub(super) fn write_files(
-        &mut self,
-        running: &str,
-        done: &'static str,
-        stage: impl FnOnce(&mut dyn Stage) -> Result<(), String> + Send + 'static,
-    ) {
+    pub(super) fn write_files(&mut self, running: &str, done: &'static str, stage: Stager) {
         let write = move || {
             let mut set = FileSet::new();
             stage(&mut set)?;

@@ -6,8 +6,10 @@
 
 use std::path::PathBuf;
 
-use super::actions::Action;
+use super::actions::{Action, Write};
 use super::compare::{CompareShow, CompareSource, CompareState};
+use super::confirm::{self, Answer};
+use super::status::Status;
 use super::ui::histogram::HistogramStyle;
 use super::ui::images::{Compared, Footer, ShownImages, images_ui};
 use super::ui::status_bar::{StatusLine, error_overlay_ui, status_bar_ui};
@@ -188,18 +190,39 @@ impl ViewerApp {
                 actions.push(Action::OpenBundled(index));
             }
             if file.save_view {
-                actions.push(Action::SaveViewTo(PathBuf::from(export.scene_path.trim())));
+                let path = PathBuf::from(export.scene_path.trim());
+                actions.push(Action::Write(Write::SaveViewTo(path)));
             }
             ui.separator();
             let requests = file_sections::export_ui(ui, export, self.writes.dialog_note);
             if requests.export_to_path {
-                actions.push(Action::ExportTo(PathBuf::from(export.path.trim())));
+                let base = PathBuf::from(export.path.trim());
+                actions.push(Action::Write(Write::ExportTo(base)));
             }
             if requests.course_files {
-                actions.push(Action::ExportCourseFiles);
+                actions.push(Action::Write(Write::CourseFiles));
             }
         });
         actions
+    }
+
+    /// The modal asking whether to replace files; on yes, the write goes ahead (into a folder
+    /// created first when it was missing).
+    fn confirm_ui(&mut self, ctx: &egui::Context) {
+        match confirm::answer(&mut self.writes.pending_replace, ctx) {
+            Some(Answer::Write(write)) => self.write_now(write),
+            // Into the new folder, asking again should anything be there meanwhile.
+            Some(Answer::CreateFolder(folder, write)) => match std::fs::create_dir_all(&folder) {
+                Ok(()) => self.write_or_ask(write),
+                Err(error) => {
+                    self.status = Some(Status::error(format!(
+                        "export: cannot create the folder {}: {error}",
+                        folder.display()
+                    )));
+                }
+            },
+            None => {}
+        }
     }
 
     /// What the status bar shows now.

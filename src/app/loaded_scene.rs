@@ -42,8 +42,10 @@ impl LoadedScene {
         }
     }
 
-    /// The embedded default scene.
-    pub(crate) fn default_scene(size_px: (u32, u32)) -> Self {
+    /// The embedded default scene, at the image size used until the first layout tells the
+    /// real one.
+    pub(crate) fn default_scene() -> Self {
+        let size_px = (512, 512);
         match parse_scene(DEFAULT_SCENE_TEXT) {
             Ok(scene) => Self::new(scene, None, size_px),
             // The embedded scene is parsed by a test; this arm only guards against a bad build.

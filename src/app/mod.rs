@@ -12,9 +12,10 @@
 //! * [`frame_log`]: per-frame figures for scripts that measure the real window
 //! * [`render_requests`]: asking the worker for frames (progressive refinement) and taking them in
 //! * [`scene_loading`]: opening and reloading scene files in the background, and taking them in
-//! * [`actions`]: what the user can ask for ([`actions::Action`]), exports, dialogs
+//! * [`actions`]: what the user can ask for ([`actions::Action`], [`actions::Write`])
 //! * [`compare`]: their image (or the chosen quality) against the exact render, the diagnosis
-//! * [`confirm`]: asking before a write replaces files; [`writes`]: the writes' state
+//! * [`confirm`]: asking before a write replaces files; [`writes`]: exports, the course files and
+//!   saved views staged, file dialogs' answers, the write in flight
 //! * [`course_files`]: the course's 200×200 TGA pair and command line for the open scene
 //! * [`pixel_trace`]: the course's computation behind the pinned pixel, in a window
 //! * [`saved_views`]: undo and redo, named views, the view each scene was last seen in

@@ -17,7 +17,7 @@ pub(crate) const TRACE_TITLE: &str = "Pixel trace";
 
 /// The trace of pixel `px` (x, y up) of a frame of `scene` through `view`, with their pixel
 /// beside it while their image is compared; or the status saying why there is none.
-pub(crate) fn trace_text(
+fn trace_text(
     scene: &Scene,
     view: Option<&View>,
     px: Option<DVec2>,
@@ -36,6 +36,19 @@ pub(crate) fn trace_text(
         text.push_str(&theirs);
     }
     Ok(text)
+}
+
+/// Opens the trace window on pixel `px` of the frame of `scene` through `view` (see
+/// [`trace_text`]): its text into `trace`, or the status saying why there is none.
+pub(crate) fn open(
+    trace: &mut Option<String>,
+    scene: &Scene,
+    view: Option<&View>,
+    px: Option<DVec2>,
+    compare: &CompareState,
+) -> Option<Status> {
+    let text = trace_text(scene, view, px, compare);
+    text.map(|text| *trace = Some(text)).err()
 }
 
 /// The trace window, while a trace is open (`trace`): the text, scrolled both ways, and Copy;

@@ -14,7 +14,7 @@ use super::probe::{Probe, probe};
 use super::render_job::{DepthStyle, JobResult, ViewerJob};
 use super::render_job::{ViewerWorker, start_worker};
 use super::settings::{DepthDisplay, Settings};
-use super::status::Status;
+use super::status::{Clears, Status};
 use crate::app::depth_stats::DepthHistogram;
 use crate::render::{Frame, Quality, View, ViewError};
 use crate::scene::Scene;
@@ -101,6 +101,11 @@ impl Frames {
         (frames, status)
     }
 
+    /// The size of the frame on screen (pixels), if one is.
+    pub(crate) fn size_px(&self) -> Option<[u32; 2]> {
+        (self.shown.as_ref()).map(|s| [s.frame.width_px, s.frame.height_px])
+    }
+
     /// Probes the frame on screen at image position `px` (pixels, y up), if it is a frame of
     /// `scene` at load `epoch`.
     pub(crate) fn probe_at(&self, scene: &Scene, epoch: u64, px: DVec2) -> Option<Probe> {
@@ -169,9 +174,30 @@ impl Frames {
         }
     }
 
+    /// Takes a finished frame in ([`Self::receive`]) and says so in `status`: a message waiting
+    /// for a frame clears, a failed render says why. True when a new frame is on screen.
+    pub(crate) fn take_in(&mut self, ctx: &egui::Context, status: &mut Option<Status>) -> bool {
+        match self.receive(ctx) {
+            None => false,
+            Some(Err(error)) => {
+                *status = Some(Status::view_error(error));
+                false
+            }
+            Some(Ok(())) => {
+                if status
+                    .as_ref()
+                    .is_some_and(|s| s.clears == Clears::WhenAFrameRenders)
+                {
+                    *status = None;
+                }
+                true
+            }
+        }
+    }
+
     /// Takes a frame the worker finished into the textures (made through `ctx` the first time).
     /// `None` when none finished; the render's error when it failed.
-    pub(crate) fn receive(&mut self, ctx: &egui::Context) -> Option<Result<(), ViewError>> {
+    fn receive(&mut self, ctx: &egui::Context) -> Option<Result<(), ViewError>> {
         let JobResult {
             job,
             output,

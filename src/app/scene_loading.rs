@@ -12,6 +12,7 @@ use super::background::{Poll, Task};
 use super::loaded_scene::LoadedScene;
 use super::reload::FileWatcher;
 use super::status::Status;
+use crate::platform::files::same_file;
 use crate::render::View;
 
 /// Loads shorter than this show no progress (most scenes load in a few milliseconds).
@@ -306,6 +307,13 @@ impl OpenScene {
                 Some(Status::error(format!("live reload is off: {error}")))
             }
         }
+    }
+
+    /// "Save view as scene" is writing to `path`: over the open scene, its reload keeps the
+    /// save's message.
+    pub(crate) fn saving_to(&mut self, path: &Path) {
+        let open = self.loaded.path.as_deref();
+        self.saving_over = open.is_some_and(|open| same_file(open, path));
     }
 
     /// The open scene's file camera and depth range at `view`'s image size.

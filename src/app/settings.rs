@@ -147,9 +147,17 @@ impl Settings {
 }
 
 impl Settings {
-    /// A scene opened from `path` after the one from `previous`: exports follow its name (unless
-    /// the user chose one), and a file (not `in_memory`) is the one to open at the next start.
-    pub(crate) fn follow_open(&mut self, previous: Option<&Path>, path: &Path, in_memory: bool) {
+    /// A scene opened from `path` after the one from `previous`, which was in `view` (remembered
+    /// for when it is opened again): exports follow its name (unless the user chose one), and a
+    /// file (not `in_memory`) is the one to open at the next start.
+    pub(crate) fn follow_open(
+        &mut self,
+        previous: Option<&Path>,
+        view: &crate::render::View,
+        path: &Path,
+        in_memory: bool,
+    ) {
+        self.views.remember(previous, view);
         let export = &mut self.export;
         if let Some(followed) = crate::export::export_path_following(
             &export.path,

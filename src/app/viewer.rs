@@ -9,21 +9,19 @@ use std::time::Duration;
 
 use glam::DVec2;
 
-use super::actions::Action;
+use super::actions::{Action, Write};
+use super::confirm;
 use super::depth_stats::DepthHistogram;
 use super::loaded_scene::LoadedScene;
 use super::probe::{Probe, point_of_probe};
 use super::saved_views::SceneViews;
 use super::scene_loading::{LoadKind, OpenScene};
 use super::settings::Settings;
-use super::status::{Clears, Status};
+use super::status::Status;
 use super::ui::magnifier::Magnifier;
 use super::{compare, input, layout, pixel_trace, render_requests, viewing, writes};
 use crate::cli::ViewerRequest;
 use crate::render::{Frame, View};
-
-/// Image size used until the first layout tells the real one.
-const INITIAL_SIZE_PX: (u32, u32) = (512, 512);
 
 /// The viewer application: the coordinator. Each feature's state is a struct of its own (the
 /// open scene, the view, the frames, the writes, the panels, the comparison); the coordinator
@@ -60,7 +58,7 @@ impl ViewerApp {
         cc.egui_ctx
             .options_mut(|options| options.zoom_with_keyboard = false);
         let (frames, status) = render_requests::Frames::start(&cc.egui_ctx, cc.gl.is_some());
-        let loaded = LoadedScene::default_scene(INITIAL_SIZE_PX);
+        let loaded = LoadedScene::default_scene();
         let mut app = Self {
             settings,
             viewing: viewing::Viewing::new(loaded.file_view),
@@ -96,27 +94,9 @@ impl ViewerApp {
         }
     }
 
-    /// Traces the pinned pixel of the frame on screen into the trace window.
-    fn open_trace(&mut self) {
-        let view = self.frames.shown.as_ref().map(|shown| &shown.view);
-        match pixel_trace::trace_text(
-            &self.scene.loaded.scene,
-            view,
-            self.pinned_px(),
-            &self.compare,
-        ) {
-            Ok(text) => self.panels.trace = Some(text),
-            Err(status) => self.status = Some(status),
-        }
-    }
-
     /// "Auto range" on the frame on screen (the settings' cut at each ends).
     pub fn auto_range(&mut self) {
-        let shown = self.frames.shown.as_ref().map(|shown| &*shown.frame);
-        let status = self
-            .viewing
-            .auto_range(shown, self.settings.depth.auto_cut_percent);
-        self.say(status);
+        self.carry_out(Action::AutoRange);
     }
 
     /// "Frame all" on the open scene.
@@ -138,29 +118,6 @@ impl ViewerApp {
     /// Whether the frame on screen is a one-sample preview of a supersampled quality.
     pub fn showing_preview(&self) -> bool {
         self.frames.shows_preview_of(&self.settings.quality)
-    }
-
-    /// Takes a finished frame in: a status waiting for one clears, and "follow" fits the depth
-    /// range to it; a failed render says why.
-    fn receive_frame(&mut self) {
-        match self.frames.receive(&self.ctx) {
-            None => {}
-            Some(Err(error)) => self.status = Some(Status::view_error(error)),
-            Some(Ok(())) => {
-                if self
-                    .status
-                    .as_ref()
-                    .is_some_and(|s| s.clears == Clears::WhenAFrameRenders)
-                {
-                    self.status = None;
-                }
-                let depth = &self.settings.depth;
-                let shown = self.frames.shown.as_ref();
-                let cut = depth.auto_cut_percent;
-                self.viewing
-                    .follow_depth(depth.follow, shown, self.scene.epoch, cut);
-            }
-        }
     }
 
     /// Starts loading the scene at `path` in the background ([`OpenScene::open`]); once read, it
@@ -187,8 +144,8 @@ impl ViewerApp {
             return self.say(status);
         }
         let previous = self.scene.loaded.path.as_deref();
-        self.settings.views.remember(previous, view);
-        self.settings.follow_open(previous, &path, loaded.in_memory);
+        self.settings
+            .follow_open(previous, view, &path, loaded.in_memory);
         // An older message (an error of an earlier try included) is not left beside it.
         self.status = Some(Status::info(format!("opened {}", path.display())));
         let status = self.scene.adopt_opened(loaded, &path, view, &self.ctx);
@@ -197,6 +154,45 @@ impl ViewerApp {
         self.viewing.opened(last);
         self.panels.fields.path_text = path.display().to_string();
         self.set_title(&format!("raytracer — {}", path.display()));
+    }
+
+    /// Carries out `write` now if it replaces nothing; otherwise asks first
+    /// ([`confirm::wait_for_yes`]). An export that cannot start is refused before anything is
+    /// offered or created; a folder it would create is asked for first (a page has none).
+    pub(super) fn write_or_ask(&mut self, write: Write) {
+        if let Some(problem) = writes::refused(&write, &self.settings.export) {
+            self.status = Some(Status::error(problem));
+            return;
+        }
+        let missing_folder = self.missing_export_folder(&write);
+        let no_folder = missing_folder.is_some();
+        let files = (self.writes).files_of(&write, no_folder, &self.settings, &self.written());
+        let scene = self.scene.loaded.path.as_deref();
+        match confirm::wait_for_yes(write, missing_folder, files, scene) {
+            Ok(write) => self.write_now(write),
+            Err(pending) => self.writes.pending_replace = Some(pending),
+        }
+    }
+
+    /// Carries out `write` (the user has agreed to replace what it replaces).
+    pub(super) fn write_now(&mut self, write: Write) {
+        if let Write::SaveViewTo(path) = &write {
+            self.scene.saving_to(path);
+        }
+        match (self.writes).stage(write, &self.settings, &self.written()) {
+            Ok(staged) => self.write_files(staged.running, staged.done, staged.stage),
+            Err(status) => self.status = Some(status),
+        }
+    }
+
+    /// What a write started now writes: the scene on screen in the view on screen.
+    fn written(&self) -> writes::Written<'_> {
+        writes::Written {
+            loaded: &self.scene.loaded,
+            epoch: self.scene.epoch,
+            view: self.viewing.view,
+            shown: self.frames.shown.as_ref(),
+        }
     }
 
     /// Carries out `action`. A one-shot view change is a step of the history of its own.
@@ -217,7 +213,41 @@ impl ViewerApp {
         }
     }
 
+    /// Hands `action` to the feature that carries it out; what it says goes to the status bar.
     fn carry_out(&mut self, action: Action) {
+        let path = self.scene.loaded.path.as_deref();
+        let status = match action {
+            Action::Reload => self.scene.reload(&self.viewing.view, &self.ctx),
+            Action::AutoRange => {
+                let shown = self.frames.shown.as_ref().map(|shown| &*shown.frame);
+                let cut = self.settings.depth.auto_cut_percent;
+                self.viewing.auto_range(shown, cut)
+            }
+            Action::Trace => {
+                let view = self.frames.shown.as_ref().map(|shown| &shown.view);
+                let (scene, px) = (&self.scene.loaded.scene, self.pinned_px());
+                pixel_trace::open(&mut self.panels.trace, scene, view, px, &self.compare)
+            }
+            Action::Undo => self.viewing.undo(),
+            Action::Redo => self.viewing.redo(),
+            Action::NameView(name) => Some(self.viewing.name_view(
+                &mut self.settings.views,
+                path,
+                &name,
+            )),
+            Action::CompareImage(path, kind) => self.compare.with_file(&self.against(), path, kind),
+            Action::CompareQuality => {
+                let quality = self.settings.quality;
+                self.compare.with_quality(&self.against(), quality)
+            }
+            other => return self.carry_out_quietly(other),
+        };
+        self.say(status);
+    }
+
+    /// Hands `action`, one that says nothing, to the feature that carries it out.
+    fn carry_out_quietly(&mut self, action: Action) {
+        let path = self.scene.loaded.path.as_deref();
         match action {
             Action::OpenDialog(kind) => self.open_dialog(kind),
             Action::Open(path) => self.open_path(&path),
@@ -226,52 +256,23 @@ impl ViewerApp {
                     self.open_bytes(name, std::sync::Arc::from(text.as_bytes()));
                 }
             }
-            Action::Reload => {
-                let status = self.scene.reload(&self.viewing.view, &self.ctx);
-                self.say(status);
-            }
             Action::FrameAll => self.frame_all(),
             Action::ResetView => self.viewing.reset_view(&self.scene.loaded.file_view),
             Action::ResetDepth => self.viewing.reset_depth(&self.scene.loaded.file_view),
-            Action::AutoRange => self.auto_range(),
             Action::UseDepthRange(range) => self.viewing.view.depth_range = range,
-            Action::Undo => {
-                let status = self.viewing.undo();
-                self.say(status);
-            }
-            Action::Redo => {
-                let status = self.viewing.redo();
-                self.say(status);
-            }
-            Action::NameView(name) => {
-                let path = self.scene.loaded.path.as_deref();
-                let status = self
-                    .viewing
-                    .name_view(&mut self.settings.views, path, &name);
-                self.say(Some(status));
-            }
             Action::GoToView(index) => {
-                let path = self.scene.loaded.path.as_deref();
                 self.viewing
                     .go_to_view(&mut self.settings.views, path, index);
             }
             Action::ForgetView(index) => {
-                let path = self.scene.loaded.path.as_deref();
                 viewing::forget_view(&mut self.settings.views, path, index);
             }
             Action::ToggleHelp => self.panels.help_open = !self.panels.help_open,
             Action::ResetMagnifier => self.viewing.magnifier = Default::default(),
-            Action::ExportTo(_) | Action::SaveViewTo(_) | Action::ExportCourseFiles => {
-                self.write_or_ask(action);
-            }
+            Action::Write(write) => self.write_or_ask(write),
             Action::Navigate(navigation) => {
-                let size_px = self
-                    .frames
-                    .shown
-                    .as_ref()
-                    .map(|s| [s.frame.width_px, s.frame.height_px]);
-                self.viewing
-                    .navigate(navigation, &self.scene.loaded.scene, size_px);
+                let (scene, size_px) = (&self.scene.loaded.scene, self.frames.size_px());
+                self.viewing.navigate(navigation, scene, size_px);
             }
             Action::Pin(px) => {
                 // The point itself is pinned, so the pin stays on it while the view moves.
@@ -280,26 +281,19 @@ impl ViewerApp {
                 }
             }
             Action::Unpin => self.viewing.probe.pinned_world = None,
-            Action::Trace => self.open_trace(),
-            Action::CompareImage(path, kind) => {
-                let against = self.against();
-                let status = self.compare.with_file(&against, path, kind);
-                self.say(status);
-            }
-            Action::CompareQuality => {
-                let quality = self.settings.quality;
-                let against = self.against();
-                let status = self.compare.with_quality(&against, quality);
-                self.say(status);
-            }
-            Action::CompareShow(show) => {
-                if self.compare.current.is_some() {
-                    self.compare.show = show;
-                }
-            }
+            Action::CompareShow(show) => self.compare.show_if_open(show),
             Action::CompareFlip => self.compare.flip(),
             Action::CompareDifference => self.compare.toggle_difference(),
             Action::CompareClose => self.compare.close(),
+            // Said above.
+            Action::Reload
+            | Action::AutoRange
+            | Action::Undo
+            | Action::Redo
+            | Action::NameView(_)
+            | Action::Trace
+            | Action::CompareImage(..)
+            | Action::CompareQuality => {}
         }
     }
 
@@ -447,9 +441,22 @@ impl eframe::App for ViewerApp {
             ctx.send_viewport_cmd(egui::ViewportCommand::Close);
         }
         self.poll_platform();
-        self.receive_frame();
+        if self.frames.take_in(&self.ctx, &mut self.status) {
+            let (depth, shown) = (&self.settings.depth, self.frames.shown.as_ref());
+            let (follow, cut) = (depth.follow, depth.auto_cut_percent);
+            self.viewing
+                .follow_depth(follow, shown, self.scene.epoch, cut);
+        }
         self.receive_scene();
-        self.poll_background();
+        let (export, compare_path) = (&mut self.settings.export, &mut self.compare.path_text);
+        if let Some(action) = self.writes.take_dialog(export, compare_path) {
+            self.apply(action);
+        }
+        if let Some(finished) = self.writes.poll() {
+            // A failed write wrote nothing, so no reload of our own follows.
+            self.scene.saving_over &= !finished.is_error();
+            self.status = Some(finished);
+        }
         let (scene, view) = (&self.scene.loaded.scene, &mut self.viewing.view);
         self.compare.take_in(&ctx, scene, view, &mut self.status);
         let help_open = self.panels.help_open;
@@ -465,15 +472,10 @@ impl eframe::App for ViewerApp {
         for action in actions {
             self.apply(action);
         }
-        if self.frames.log.is_some() {
-            let name = self.status_line().scene_name;
-            if let Some(log) = &mut self.frames.log {
-                log.missing_glyphs(&ctx, &name);
-            }
+        if let Some(log) = &mut self.frames.log {
+            log.missing_glyphs(&ctx, &self.scene.loaded.name());
         }
-        self.viewing
-            .history
-            .observe(&self.viewing.view, web_time::Instant::now());
+        self.viewing.observe();
         let wanted = self.wanted();
         self.frames
             .submit_if_changed(&self.scene.loaded.scene, wanted, &self.ctx);

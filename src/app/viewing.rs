@@ -72,6 +72,11 @@ impl Viewing {
 }
 
 impl Viewing {
+    /// Lets the history see the view as it is now (a burst of changes is one step).
+    pub(crate) fn observe(&mut self) {
+        self.history.observe(&self.view, web_time::Instant::now());
+    }
+
     /// A scene was opened (its file's camera already in `view`): in the view it was `last` seen
     /// in, if it was, with a history that starts there, the whole image and nothing pinned.
     pub(crate) fn opened(&mut self, last: Option<&SavedView>) {

@@ -24,12 +24,13 @@ use crate::platform::browser::{
 };
 use crate::platform::browser::{scene_parameter, set_title};
 
-use super::actions::Action;
+use super::actions::{Action, Write};
 use super::compare::ImageKind;
 use super::dialogs::DialogKind;
 use super::status::Status;
 use super::viewer::ViewerApp;
-use crate::output::atomic::{FilesInMemory, Stage};
+use super::writes::Stager;
+use crate::output::atomic::FilesInMemory;
 
 /// What a file that came in is for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -193,7 +194,7 @@ impl ViewerApp {
         clippy::unused_self,
         reason = "a method, as each seam's are: the caller names no seam"
     )]
-    pub(super) fn missing_export_folder(&self, _action: &Action) -> Option<std::path::PathBuf> {
+    pub(super) fn missing_export_folder(&self, _write: &Write) -> Option<std::path::PathBuf> {
         None
     }
 
@@ -261,12 +262,12 @@ impl ViewerApp {
             }
             DialogKind::Export => {
                 let base = std::path::PathBuf::from(self.settings.export.path.trim());
-                self.write_or_ask(Action::ExportTo(base));
+                self.apply(Action::Write(Write::ExportTo(base)));
                 Ok(())
             }
             DialogKind::SaveScene => {
                 let path = std::path::PathBuf::from(self.settings.export.scene_path.trim());
-                self.write_or_ask(Action::SaveViewTo(path));
+                self.apply(Action::Write(Write::SaveViewTo(path)));
                 Ok(())
             }
         };
@@ -277,12 +278,7 @@ impl ViewerApp {
 
     /// The page's way to write the files `stage` stages: each downloaded now, named by its last
     /// part (the desktop writes them: `app::desktop`).
-    pub(super) fn write_files(
-        &mut self,
-        _running: &str,
-        _done: &'static str,
-        stage: impl FnOnce(&mut dyn Stage) -> Result<(), String>,
-    ) {
+    pub(super) fn write_files(&mut self, _running: &str, _done: &'static str, stage: Stager) {
         let mut memory = FilesInMemory::default();
         let files = stage(&mut memory).map(|()| {
             memory

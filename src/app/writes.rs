@@ -1,22 +1,56 @@
-//! The viewer's "writes" feature: exports and saved scenes. A write runs in the background
-//! ([`super::background::Task`]) and says how it went in the status bar; one that would replace
-//! files (or needs a folder made) waits for the user's yes ([`super::confirm`]); a file dialog may
-//! be open to choose where it goes ([`super::dialogs`]).
+//! The viewer's "writes" feature: exports, the course files and saved scenes. It works out the
+//! files a write makes and stages them ([`StagedWrite`]); the platform's seam writes them in the
+//! background ([`super::background::Task`]) or downloads them in a page, and the status bar says
+//! how it went. A write that would replace files (or needs a folder made) waits for the user's
+//! yes ([`super::confirm`]); a file dialog may be open to choose where it goes
+//! ([`super::dialogs`]).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
-use super::actions::Action;
+use super::actions::{Action, Write};
 use super::background::{Poll, Task};
 use super::confirm::PendingReplace;
-use super::dialogs::PendingDialog;
+use super::course_files::{course_files, course_files_stage};
+use super::dialogs::{DialogAnswer, DialogKind, PendingDialog};
+use super::loaded_scene::LoadedScene;
+use super::render_job::{DepthStyle, ViewerJob, prepare_frame};
+use super::render_requests::Shown;
+use super::settings::{ExportFormat, ExportSettings, Settings};
 use super::status::Status;
+use crate::export::{ExportFiles, ExportPlan, stage_export, stage_view_as_scene};
+use crate::output::ImageFormat;
+use crate::output::atomic::Stage;
+use crate::render::{View, check_image_size};
+use crate::scene::Scene;
+
+/// Stages a write's files (into the file system's staging or a page's memory); why not, when it
+/// cannot.
+pub(crate) type Stager = Box<dyn FnOnce(&mut dyn Stage) -> Result<(), String> + Send>;
+
+/// A write ready to start: what the status bar says while it runs and once it is done, and the
+/// files it stages (the platform's seam writes them, or downloads them in a page).
+pub(crate) struct StagedWrite {
+    pub(crate) running: &'static str,
+    pub(crate) done: &'static str,
+    pub(crate) stage: Stager,
+}
+
+/// The scene on screen at its load `epoch` and the view that is written; the frame on screen, if
+/// any (reused when it is exactly what is written).
+pub(crate) struct Written<'a> {
+    pub(crate) loaded: &'a LoadedScene,
+    pub(crate) epoch: u64,
+    pub(crate) view: View,
+    pub(crate) shown: Option<&'a Shown>,
+}
 
 /// The writes' state; it starts a write in the background and takes its outcome in.
 pub(crate) struct Writes {
     /// A background write (export or saved scene): its outcome message.
     pub(crate) task: Option<Task<Result<String, String>>>,
     /// A write that waits for the user to agree to replace files (or to make a folder).
-    pub(crate) pending_replace: Option<PendingReplace<Action>>,
+    pub(crate) pending_replace: Option<PendingReplace<Write>>,
     /// A file dialog that is open.
     pub(crate) dialog: Option<PendingDialog>,
     /// Why no file dialog can be shown here, if none can.
@@ -48,4 +82,206 @@ impl Writes {
         self.task = None;
         Some(finished)
     }
+}
+
+impl Writes {
+    /// What an export to `base_path` writes and the view it renders; `None` when the export
+    /// size is unusable.
+    fn export_plan(
+        &self,
+        base_path: PathBuf,
+        settings: &Settings,
+        written: &Written,
+    ) -> Option<(ExportPlan, View)> {
+        let export = &settings.export;
+        let format = match export.format {
+            ExportFormat::Png => ImageFormat::Png,
+            ExportFormat::Tga => ImageFormat::Tga,
+        };
+        let mut view = written.view;
+        if !export.displayed_size {
+            view.width_px = export.size_px[0];
+            view.height_px = export.size_px[1];
+            check_image_size(view.width_px, view.height_px).ok()?;
+        }
+        let plan = ExportPlan {
+            base_path,
+            name_in_folder: crate::export::name_in_folder(written.loaded.path.as_deref()),
+            format,
+            side_by_side: export.side_by_side,
+            legend: export.legend,
+            colour_map: settings.depth.colour_map,
+            extra_depth: export.extra_depth,
+            program: self.program.clone(),
+        };
+        Some((plan, view))
+    }
+
+    /// The files `write` would make: an export's (from its plan; none yet when its folder is
+    /// missing, `no_folder`), a saved view's, the course files'.
+    pub(crate) fn files_of(
+        &self,
+        write: &Write,
+        no_folder: bool,
+        settings: &Settings,
+        written: &Written,
+    ) -> Vec<PathBuf> {
+        match write {
+            Write::ExportTo(_) if no_folder => Vec::new(),
+            Write::ExportTo(base) => self
+                .export_plan(base.clone(), settings, written)
+                .map(|(plan, _)| ExportFiles::of(&plan).written_by(&plan))
+                .unwrap_or_default(),
+            Write::SaveViewTo(path) => vec![path.clone()],
+            Write::CourseFiles => course_files(&settings.export.path, written.loaded).all(),
+        }
+    }
+
+    /// Stages `write` of `written` with `settings`; why not, when it cannot start.
+    pub(crate) fn stage(
+        &self,
+        write: Write,
+        settings: &Settings,
+        written: &Written,
+    ) -> Result<StagedWrite, Status> {
+        match write {
+            Write::ExportTo(base) => self.export(base, settings, written),
+            Write::CourseFiles => Ok(self.course_files(settings, written)),
+            Write::SaveViewTo(path) => Ok(save_view(&written.loaded.scene, written.view, path)),
+        }
+    }
+
+    /// Exports `written` to `base_path` (see [`crate::export::ExportPaths`]) at `settings`'
+    /// quality; why not, when it cannot start.
+    fn export(
+        &self,
+        base_path: PathBuf,
+        settings: &Settings,
+        written: &Written,
+    ) -> Result<StagedWrite, Status> {
+        if let Some(problem) = export_problem(&settings.export, &base_path) {
+            return Err(Status::error(problem));
+        }
+        let Some((plan, view)) = self.export_plan(base_path, settings, written) else {
+            return Err(Status::error("export: the export size is unusable"));
+        };
+        let quality = settings.quality;
+        // Reuse the frame on screen when it is exactly what would be exported.
+        let ready = written
+            .shown
+            .filter(|s| s.view == view && s.scene_epoch == written.epoch && s.quality == quality)
+            .map(|s| Arc::clone(&s.frame));
+        let job = ViewerJob {
+            scene: Arc::clone(&written.loaded.scene),
+            view,
+            scene_epoch: written.epoch,
+            quality,
+            depth_style: DepthStyle::default(),
+        };
+        let stage = move |set: &mut dyn Stage| {
+            let frame = match ready {
+                Some(frame) => frame,
+                None => prepare_frame(&job).map_err(|e| e.to_string())?.frame,
+            };
+            stage_export(set, &job.scene, &view, &quality, &frame, &plan).map_err(|e| e.to_string())
+        };
+        Ok(StagedWrite {
+            running: "exporting…",
+            done: "exported",
+            stage: Box::new(stage),
+        })
+    }
+
+    /// The course files of `written` (its depth range) into the export folder of `settings`.
+    fn course_files(&self, settings: &Settings, written: &Written) -> StagedWrite {
+        let stage = course_files_stage(
+            written.loaded,
+            &settings.export.path,
+            written.view.depth_range,
+            self.program.clone(),
+        );
+        StagedWrite {
+            running: "writing the course files…",
+            done: "wrote the course files",
+            stage: Box::new(stage),
+        }
+    }
+
+    /// Takes a file dialog's answer: the action it asks for (the path it chose also fills the
+    /// field it belongs to: the export's, the saved scene's, the compared image's).
+    pub(crate) fn take_dialog(
+        &mut self,
+        export: &mut ExportSettings,
+        compare_path: &mut String,
+    ) -> Option<Action> {
+        let (kind, path) = match self.dialog.as_ref()?.poll() {
+            DialogAnswer::Waiting => return None,
+            DialogAnswer::Cancelled(_) => {
+                self.dialog = None;
+                return None;
+            }
+            DialogAnswer::Chosen(kind, path) => (kind, path),
+        };
+        self.dialog = None;
+        let typed = path.display().to_string();
+        Some(match kind {
+            DialogKind::Open => Action::Open(path),
+            DialogKind::Export => {
+                export.path = typed;
+                Action::Write(Write::ExportTo(path))
+            }
+            DialogKind::SaveScene => {
+                export.scene_path = typed;
+                Action::Write(Write::SaveViewTo(path))
+            }
+            DialogKind::CompareImage(kind) => {
+                *compare_path = typed;
+                Action::CompareImage(path, kind)
+            }
+        })
+    }
+}
+
+/// "Save view as scene": the scene with the `view`'s camera, written to `path`.
+fn save_view(scene: &Arc<Scene>, view: View, path: PathBuf) -> StagedWrite {
+    let scene = Arc::clone(scene);
+    StagedWrite {
+        running: "saving the view…",
+        done: "saved the view as",
+        stage: Box::new(move |set: &mut dyn Stage| {
+            stage_view_as_scene(set, &scene, &view, &path).map_err(|e| e.to_string())
+        }),
+    }
+}
+
+/// Why `write` cannot start, if it is an export at an unusable size (asked before anything is
+/// offered or created).
+pub(crate) fn refused(write: &Write, export: &ExportSettings) -> Option<String> {
+    matches!(write, Write::ExportTo(_))
+        .then(|| export_size_problem(export))
+        .flatten()
+}
+
+/// Why an export at the chosen size cannot start, if it cannot.
+fn export_size_problem(export: &ExportSettings) -> Option<String> {
+    if !export.displayed_size
+        && let Err(error) = check_image_size(export.size_px[0], export.size_px[1])
+    {
+        return Some(format!("export: {error}"));
+    }
+    None
+}
+
+/// Why an export to `base_path` cannot start, if it cannot.
+fn export_problem(export: &ExportSettings, base_path: &Path) -> Option<String> {
+    if let Some(problem) = export_size_problem(export) {
+        return Some(problem);
+    }
+    if crate::export::names_a_folder(base_path) && !base_path.is_dir() {
+        return Some(format!(
+            "export: the folder {} does not exist",
+            base_path.display()
+        ));
+    }
+    None
 }

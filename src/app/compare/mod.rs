@@ -87,6 +87,13 @@ fn to_colour_image(image: &RgbImage) -> ColorImage {
 }
 
 impl CompareState {
+    /// Shows `show` in the compared image, when a comparison is open.
+    pub(crate) fn show_if_open(&mut self, show: CompareShow) {
+        if self.current.is_some() {
+            self.show = show;
+        }
+    }
+
     /// A comparison is being computed.
     pub(crate) fn busy(&self) -> bool {
         self.pending.is_some()
