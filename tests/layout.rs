@@ -91,8 +91,8 @@ fn no_import_circles_between_modules() {
     for file in &files {
         let own = module_path(file);
         let text = std::fs::read_to_string(file).unwrap();
-        // The listed files' `impl ViewerApp` blocks are the coordinator's own, not yet in its
-        // file: their use of it is not an import between features.
+        // The seams' `impl ViewerApp` blocks are the coordinator's own platform halves: their use
+        // of it is not an import between features.
         let coordinators_part = STILL_ON_THE_COORDINATOR
             .iter()
             .any(|name| file.ends_with(format!("src/app/{name}")));
@@ -283,11 +283,11 @@ fn every_shared_command_line_case_runs_against_both_programs() {
     }
 }
 
-/// The files besides the coordinator (`src/app/viewer.rs`) that still hold an `impl` block of
-/// `ViewerApp`: the page's and the desktop's seams, and the window's layout.
-/// The list may only shrink: a file that no longer needs it must leave it. When the coordinator's
-/// behaviour is in its one file, the list is empty.
-const STILL_ON_THE_COORDINATOR: [&str; 3] = ["desktop.rs", "layout.rs", "web.rs"];
+/// The files besides the coordinator (`src/app/viewer.rs`) that hold an `impl` block of
+/// `ViewerApp`: the page's and the desktop's seams, its platform halves (each compiled for its
+/// platform alone: what differs by platform is written there and nowhere else). The list may only
+/// shrink: a file that no longer needs it must leave it.
+const STILL_ON_THE_COORDINATOR: [&str; 2] = ["desktop.rs", "web.rs"];
 
 #[test]
 fn the_coordinators_impl_is_in_its_own_file_but_for_the_listed() {

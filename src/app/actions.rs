@@ -4,6 +4,7 @@
 
 use std::path::PathBuf;
 
+use super::confirm::Answer;
 use super::dialogs::DialogKind;
 
 /// Something the user asked for.
@@ -43,6 +44,9 @@ pub(crate) enum Action {
     ResetMagnifier,
     /// Write files: ask first when they would replace any.
     Write(Write),
+    /// The user's yes to a write that waited (the files it replaces were shown), or to making
+    /// its folder first.
+    Confirmed(Answer<Write>),
     /// Move the view or the magnifier.
     Navigate(super::viewing::Navigation),
     /// Pin the point seen at this image position (pixels, y up) of the frame on screen.

@@ -60,6 +60,7 @@ pub(crate) fn wait_for_yes<A>(
 }
 
 /// The user's answer to the modal.
+#[derive(Debug, Clone, PartialEq)]
 pub(crate) enum Answer<A> {
     /// Write (the files it replaces were shown).
     Write(A),

@@ -55,12 +55,13 @@ impl ViewerApp {
             .send_viewport_cmd(egui::ViewportCommand::Title(title.to_owned()));
     }
 
-    /// Nothing comes in between frames on the desktop: files are opened by their paths.
-    #[expect(
-        clippy::unused_self,
-        reason = "the page's side takes its files in here"
-    )]
-    pub(super) fn poll_platform(&mut self) {}
+    /// What comes in between frames on the desktop: a termination signal closes the window
+    /// (eframe saves the settings on the way out). Files are opened by their paths.
+    pub(super) fn poll_platform(&mut self) {
+        if crate::platform::process::stop_requested().is_some() {
+            self.ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+        }
+    }
 
     /// Opens the scene file at `path` (typed in the side panel or given on the command line).
     pub(super) fn open_path(&mut self, path: &Path) {

@@ -39,6 +39,11 @@ const NAVIGATION_KEYS: [Key; 14] = [
     Key::B,
 ];
 
+/// Ctrl+plus and Ctrl+minus zoom the camera in `ctx`'s window; the interface keeps its size.
+pub(super) fn claim_zoom_keys(ctx: &egui::Context) {
+    ctx.options_mut(|options| options.zoom_with_keyboard = false);
+}
+
 /// What the window's input asks for this frame.
 pub(super) struct Input {
     /// Shortcuts, the watched file's reload and navigation keys, in that order.

@@ -8,7 +8,11 @@ use std::path::PathBuf;
 
 use super::actions::{Action, Write};
 use super::compare::{CompareShow, CompareSource, CompareState};
-use super::confirm::{self, Answer};
+use super::confirm;
+use super::probe::Probe;
+use super::render_requests::Frames;
+use super::scene_loading::OpenScene;
+use super::settings::Settings;
 use super::status::Status;
 use super::ui::histogram::HistogramStyle;
 use super::ui::images::{Compared, Footer, ShownImages, images_ui};
@@ -16,8 +20,8 @@ use super::ui::status_bar::{StatusLine, error_overlay_ui, status_bar_ui};
 use super::ui::{
     depth_section, file_sections, help, probe_text, toolbar, view_controls, views_section,
 };
-use super::viewer::ViewerApp;
-use crate::app::probe::pixel_of_point;
+use super::viewing::Viewing;
+use super::writes::Writes;
 use crate::export::numbers::grouped;
 use crate::render::View;
 
@@ -67,9 +71,27 @@ pub(crate) fn panel_points(window_width: f32) -> f32 {
 /// (they shrink, nothing is covered); below it they are a drawer over the images.
 pub(crate) const PUSH_ASIDE_FROM_POINTS: f32 = 640.0;
 
-impl ViewerApp {
+/// The window's parts for one frame's drawing, borrowed from the coordinator: the state of each
+/// feature the panels show and edit. What the user asks for comes back as actions.
+pub(super) struct Window<'a> {
+    pub(super) settings: &'a mut Settings,
+    pub(super) scene: &'a mut OpenScene,
+    pub(super) viewing: &'a mut Viewing,
+    pub(super) frames: &'a Frames,
+    pub(super) writes: &'a mut Writes,
+    pub(super) panels: &'a mut Panels,
+    pub(super) compare: &'a mut CompareState,
+    pub(super) status: Option<&'a Status>,
+}
+
+/// A render, a write or a comparison is under way.
+pub(super) fn busy(frames: &Frames, writes: &Writes, compare: &CompareState) -> bool {
+    frames.worker.as_ref().is_some_and(|w| !w.is_idle()) || writes.task.is_some() || compare.busy()
+}
+
+impl Window<'_> {
     /// The whole window; returns what the user asked for.
-    pub(super) fn layout_ui(&mut self, ui: &mut egui::Ui) -> Vec<Action> {
+    pub(super) fn ui(mut self, ui: &mut egui::Ui) -> Vec<Action> {
         let mut actions = Vec::new();
         let window_width = ui.available_width();
         let narrow = window_width < DRAWER_BELOW_POINTS;
@@ -130,7 +152,7 @@ impl ViewerApp {
         {
             self.scene.error = None;
         }
-        self.confirm_ui(&ctx);
+        actions.extend(self.confirm_ui(&ctx));
         super::pixel_trace::trace_ui(&ctx, &mut self.panels.trace);
         if self.panels.help_open {
             self.panels.help_open = help::help_ui(&ctx);
@@ -158,7 +180,7 @@ impl ViewerApp {
             ui.separator();
             actions.extend(super::ui::compare_section::compare_ui(
                 ui,
-                &mut self.compare,
+                self.compare,
                 &self.settings.quality,
             ));
             ui.separator();
@@ -206,23 +228,9 @@ impl ViewerApp {
         actions
     }
 
-    /// The modal asking whether to replace files; on yes, the write goes ahead (into a folder
-    /// created first when it was missing).
-    fn confirm_ui(&mut self, ctx: &egui::Context) {
-        match confirm::answer(&mut self.writes.pending_replace, ctx) {
-            Some(Answer::Write(write)) => self.write_now(write),
-            // Into the new folder, asking again should anything be there meanwhile.
-            Some(Answer::CreateFolder(folder, write)) => match std::fs::create_dir_all(&folder) {
-                Ok(()) => self.write_or_ask(write),
-                Err(error) => {
-                    self.status = Some(Status::error(format!(
-                        "export: cannot create the folder {}: {error}",
-                        folder.display()
-                    )));
-                }
-            },
-            None => {}
-        }
+    /// The modal asking whether to replace files (or to make the folder first): the user's yes.
+    fn confirm_ui(&mut self, ctx: &egui::Context) -> Option<Action> {
+        confirm::answer(&mut self.writes.pending_replace, ctx).map(Action::Confirmed)
     }
 
     /// What the status bar shows now.
@@ -232,7 +240,7 @@ impl ViewerApp {
             render_ms: shown.map(|s| s.render_ms),
             size_px: shown.map(|s| [s.frame.width_px, s.frame.height_px]),
             stage: shown.map(|s| {
-                if self.showing_preview() {
+                if self.frames.shows_preview_of(&self.settings.quality) {
                     "preview (1 sample)".to_owned()
                 } else {
                     s.quality.describe()
@@ -241,33 +249,20 @@ impl ViewerApp {
             magnification: self.viewing.magnifier.zoom,
             sphere_count: self.scene.loaded.scene.spheres.len(),
             scene_name: self.scene.loaded.name(),
-            busy: self.busy(),
+            busy: busy(self.frames, self.writes, self.compare),
             loading: self
                 .scene
                 .loading
                 .as_ref()
                 .filter(|pending| pending.shows_progress())
                 .map(|pending| (pending.path.display().to_string(), pending.fraction())),
-            message: self.status.as_ref().filter(|status| !status.is_stale()),
+            message: self.status.filter(|status| !status.is_stale()),
         }
     }
 
-    /// A render or a write is under way.
-    pub(super) fn busy(&self) -> bool {
-        self.frames.worker.as_ref().is_some_and(|w| !w.is_idle())
-            || self.writes.task.is_some()
-            || self.compare.busy()
-    }
-
-    /// Where the pinned point is on the frame on screen (image pixels, y up), if it is in view.
-    pub(super) fn pinned_px(&self) -> Option<glam::DVec2> {
-        let shown = self.frames.shown.as_ref()?;
-        let px = pixel_of_point(&shown.view, self.viewing.probe.pinned_world?)?;
-        let inside = px.x >= 0.0
-            && px.y >= 0.0
-            && px.x < f64::from(shown.view.width_px)
-            && px.y < f64::from(shown.view.height_px);
-        inside.then_some(px)
+    /// The probe of the frame on screen at image position `px` (pixels, y up).
+    fn probe_at(&self, px: glam::DVec2) -> Option<Probe> {
+        (self.frames).probe_at(&self.scene.loaded.scene, self.scene.epoch, px)
     }
 
     /// The two images with the probe and the histogram; returns the gestures made on them.
@@ -278,8 +273,10 @@ impl ViewerApp {
             (Some(range), Some(hit)) => style.colour_map.rgb(&range, hit.t, style.no_hit_rgb),
             _ => style.no_hit_rgb,
         };
-        let mut probe_lines =
-            probe_text::probe_lines(self.pinned_probe(), self.hover_probe(), depth_rgb);
+        let pinned_px = self.viewing.pinned_px(self.frames.shown.as_ref());
+        let pinned = pinned_px.and_then(|px| self.probe_at(px));
+        let hover = self.viewing.probe.hover_px.and_then(|px| self.probe_at(px));
+        let mut probe_lines = probe_text::probe_lines(pinned, hover, depth_rgb);
         if let Some(line) = self
             .viewing
             .probe
@@ -289,7 +286,7 @@ impl ViewerApp {
             probe_lines.push(line);
         }
         self.close_stale_measurement();
-        let compared = compared_picture(&self.compare, &self.viewing.view);
+        let compared = compared_picture(self.compare, &self.viewing.view);
         let shown = self.frames.shown.as_ref().map(|s| ShownImages {
             colour: &s.colour,
             depth: &s.depth,
@@ -300,7 +297,7 @@ impl ViewerApp {
         });
         let footer = Footer {
             probe_lines: &probe_lines,
-            pinned: self.pinned_px(),
+            pinned: pinned_px,
             has_pin: self.viewing.probe.pinned_world.is_some(),
             hover: self.viewing.probe.hover_px,
             depth_range: &mut self.viewing.view.depth_range,

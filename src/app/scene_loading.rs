@@ -8,6 +8,7 @@
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
+use super::actions::Write;
 use super::background::{Poll, Task};
 use super::loaded_scene::LoadedScene;
 use super::reload::FileWatcher;
@@ -280,40 +281,44 @@ impl OpenScene {
     }
 
     /// Takes a newly opened scene in: on screen in its file's camera (at `view`'s size), its file
-    /// watched through `ctx` (a scene from no file is not). Says when the file cannot be watched.
+    /// watched through `ctx` (a scene from no file is not). Says that it is open, or that the file
+    /// cannot be watched.
     pub(crate) fn adopt_opened(
         &mut self,
         loaded: LoadedScene,
         path: &Path,
         view: &mut View,
         ctx: &egui::Context,
-    ) -> Option<Status> {
+    ) -> Status {
         self.failed_open = None;
         self.adopt(loaded);
         *view = self.file_view_at(view);
+        let opened = Status::info(format!("opened {}", path.display()));
         if self.loaded.in_memory {
             // No file to watch.
             self.watcher = None;
-            return None;
+            return opened;
         }
         let ctx = ctx.clone();
         match FileWatcher::watch(path, move || ctx.request_repaint()) {
             Ok(watcher) => {
                 self.watcher = Some(watcher);
-                None
+                opened
             }
             Err(error) => {
                 self.watcher = None;
-                Some(Status::error(format!("live reload is off: {error}")))
+                Status::error(format!("live reload is off: {error}"))
             }
         }
     }
 
-    /// "Save view as scene" is writing to `path`: over the open scene, its reload keeps the
-    /// save's message.
-    pub(crate) fn saving_to(&mut self, path: &Path) {
-        let open = self.loaded.path.as_deref();
-        self.saving_over = open.is_some_and(|open| same_file(open, path));
+    /// Notes a `write` starting: "save view as scene" over the open scene reloads it, and that
+    /// reload keeps the save's message.
+    pub(crate) fn note_write(&mut self, write: &Write) {
+        if let Write::SaveViewTo(path) = write {
+            let open = self.loaded.path.as_deref();
+            self.saving_over = open.is_some_and(|open| same_file(open, path));
+        }
     }
 
     /// The open scene's file camera and depth range at `view`'s image size.

@@ -10,7 +10,7 @@ use std::time::Duration;
 use glam::DVec2;
 
 use super::actions::{Action, Write};
-use super::confirm;
+use super::confirm::{self, Answer};
 use super::depth_stats::DepthHistogram;
 use super::loaded_scene::LoadedScene;
 use super::probe::{Probe, point_of_probe};
@@ -54,9 +54,7 @@ impl ViewerApp {
     /// scene, or the embedded default), and the render worker.
     pub fn new(cc: &eframe::CreationContext<'_>, request: ViewerRequest) -> Self {
         let settings = Settings::from_storage(cc.storage, request.size_px);
-        // Ctrl+plus and Ctrl+minus zoom the camera; the interface keeps its size.
-        cc.egui_ctx
-            .options_mut(|options| options.zoom_with_keyboard = false);
+        input::claim_zoom_keys(&cc.egui_ctx);
         let (frames, status) = render_requests::Frames::start(&cc.egui_ctx, cc.gl.is_some());
         let loaded = LoadedScene::default_scene();
         let mut app = Self {
@@ -72,8 +70,6 @@ impl ViewerApp {
             page: super::web::Page::default(),
             ctx: cc.egui_ctx.clone(),
         };
-        let ctx = cc.egui_ctx.clone();
-        crate::platform::process::set_wake(move || ctx.request_repaint());
         app.open_first(request.input);
         app
     }
@@ -89,8 +85,8 @@ impl ViewerApp {
 
     /// Shows what a feature had to say, if anything, in the status bar.
     pub(super) fn say(&mut self, status: Option<Status>) {
-        if let Some(status) = status {
-            self.status = Some(status);
+        if status.is_some() {
+            self.status = status;
         }
     }
 
@@ -147,9 +143,7 @@ impl ViewerApp {
         self.settings
             .follow_open(previous, view, &path, loaded.in_memory);
         // An older message (an error of an earlier try included) is not left beside it.
-        self.status = Some(Status::info(format!("opened {}", path.display())));
-        let status = self.scene.adopt_opened(loaded, &path, view, &self.ctx);
-        self.say(status);
+        self.status = Some(self.scene.adopt_opened(loaded, &path, view, &self.ctx));
         let last = self.settings.views.last.get(&SceneViews::key(&path));
         self.viewing.opened(last);
         self.panels.fields.path_text = path.display().to_string();
@@ -159,7 +153,7 @@ impl ViewerApp {
     /// Carries out `write` now if it replaces nothing; otherwise asks first
     /// ([`confirm::wait_for_yes`]). An export that cannot start is refused before anything is
     /// offered or created; a folder it would create is asked for first (a page has none).
-    pub(super) fn write_or_ask(&mut self, write: Write) {
+    fn write_or_ask(&mut self, write: Write) {
         if let Some(problem) = writes::refused(&write, &self.settings.export) {
             self.status = Some(Status::error(problem));
             return;
@@ -175,10 +169,8 @@ impl ViewerApp {
     }
 
     /// Carries out `write` (the user has agreed to replace what it replaces).
-    pub(super) fn write_now(&mut self, write: Write) {
-        if let Write::SaveViewTo(path) = &write {
-            self.scene.saving_to(path);
-        }
+    fn write_now(&mut self, write: Write) {
+        self.scene.note_write(&write);
         match (self.writes).stage(write, &self.settings, &self.written()) {
             Ok(staged) => self.write_files(staged.running, staged.done, staged.stage),
             Err(status) => self.status = Some(status),
@@ -225,7 +217,8 @@ impl ViewerApp {
             }
             Action::Trace => {
                 let view = self.frames.shown.as_ref().map(|shown| &shown.view);
-                let (scene, px) = (&self.scene.loaded.scene, self.pinned_px());
+                let px = self.viewing.pinned_px(self.frames.shown.as_ref());
+                let scene = &self.scene.loaded.scene;
                 pixel_trace::open(&mut self.panels.trace, scene, view, px, &self.compare)
             }
             Action::Undo => self.viewing.undo(),
@@ -270,6 +263,14 @@ impl ViewerApp {
             Action::ToggleHelp => self.panels.help_open = !self.panels.help_open,
             Action::ResetMagnifier => self.viewing.magnifier = Default::default(),
             Action::Write(write) => self.write_or_ask(write),
+            Action::Confirmed(Answer::Write(write)) => self.write_now(write),
+            // Into the new folder, asking again should anything be there meanwhile.
+            Action::Confirmed(Answer::CreateFolder(folder, write)) => {
+                match writes::create_folder(&folder) {
+                    Ok(()) => self.write_or_ask(write),
+                    Err(status) => self.status = Some(status),
+                }
+            }
             Action::Navigate(navigation) => {
                 let (scene, size_px) = (&self.scene.loaded.scene, self.frames.size_px());
                 self.viewing.navigate(navigation, scene, size_px);
@@ -360,7 +361,8 @@ impl ViewerApp {
     /// The probe of the pinned point, where it is on the frame on screen (`None` when it is out
     /// of view or nothing is pinned).
     pub fn pinned_probe(&self) -> Option<Probe> {
-        self.pinned_px().and_then(|px| self.probe_at(px))
+        let shown = self.frames.shown.as_ref();
+        (self.viewing.pinned_px(shown)).and_then(|px| self.probe_at(px))
     }
 
     /// The magnifier: which part of the frame the images show.
@@ -436,31 +438,22 @@ impl eframe::App for ViewerApp {
         if let Some(log) = &mut self.frames.log {
             log.ui(frame.info().cpu_usage);
         }
-        if crate::platform::process::stop_requested().is_some() {
-            // A termination signal: close (eframe saves the settings on the way out).
-            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
-        }
         self.poll_platform();
         if self.frames.take_in(&self.ctx, &mut self.status) {
             let (depth, shown) = (&self.settings.depth, self.frames.shown.as_ref());
-            let (follow, cut) = (depth.follow, depth.auto_cut_percent);
-            self.viewing
-                .follow_depth(follow, shown, self.scene.epoch, cut);
+            self.viewing.follow_depth(depth, shown, self.scene.epoch);
         }
         self.receive_scene();
         let (export, compare_path) = (&mut self.settings.export, &mut self.compare.path_text);
-        if let Some(action) = self.writes.take_dialog(export, compare_path) {
+        let saving_over = &mut self.scene.saving_over;
+        if let Some(action) =
+            (self.writes).take_in(export, compare_path, saving_over, &mut self.status)
+        {
             self.apply(action);
-        }
-        if let Some(finished) = self.writes.poll() {
-            // A failed write wrote nothing, so no reload of our own follows.
-            self.scene.saving_over &= !finished.is_error();
-            self.status = Some(finished);
         }
         let (scene, view) = (&self.scene.loaded.scene, &mut self.viewing.view);
         self.compare.take_in(&ctx, scene, view, &mut self.status);
-        let help_open = self.panels.help_open;
-        let watcher = self.scene.watcher.as_ref();
+        let (help_open, watcher) = (self.panels.help_open, self.scene.watcher.as_ref());
         let input = input::read(&ctx, watcher, help_open, &self.viewing.view);
         for action in input.actions {
             self.apply(action);
@@ -468,8 +461,17 @@ impl eframe::App for ViewerApp {
         if let Some(file) = input.dropped {
             self.open_dropped(file);
         }
-        let actions = self.layout_ui(ui);
-        for action in actions {
+        let window = layout::Window {
+            settings: &mut self.settings,
+            scene: &mut self.scene,
+            viewing: &mut self.viewing,
+            frames: &self.frames,
+            writes: &mut self.writes,
+            panels: &mut self.panels,
+            compare: &mut self.compare,
+            status: self.status.as_ref(),
+        };
+        for action in window.ui(ui) {
             self.apply(action);
         }
         if let Some(log) = &mut self.frames.log {
@@ -479,7 +481,7 @@ impl eframe::App for ViewerApp {
         let wanted = self.wanted();
         self.frames
             .submit_if_changed(&self.scene.loaded.scene, wanted, &self.ctx);
-        if self.busy() {
+        if layout::busy(&self.frames, &self.writes, &self.compare) {
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }
     }

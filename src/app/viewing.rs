@@ -6,8 +6,10 @@ use std::path::Path;
 
 use glam::{DVec2, DVec3};
 
+use super::probe::pixel_of_point;
 use super::render_requests::Shown;
 use super::saved_views::{History, NamedView, SavedView, SceneViews};
+use super::settings::DepthDisplay;
 use super::status::Status;
 use super::ui::magnifier::Magnifier;
 use crate::app::depth_stats::auto_range;
@@ -127,15 +129,15 @@ impl Viewing {
     }
 
     /// "Follow": once `shown` (the frame on screen, of a scene load `current_epoch` when it is of
-    /// the open scene) is of a changed camera, fits the depth range to it. `follow` off forgets
-    /// the camera last followed.
+    /// the open scene) is of a changed camera, fits the depth range to it (`depth`'s cut at each
+    /// end). "Follow" off in `depth` forgets the camera last followed.
     pub(crate) fn follow_depth(
         &mut self,
-        follow: bool,
+        depth: &DepthDisplay,
         shown: Option<&Shown>,
         current_epoch: u64,
-        cut_percent: f64,
     ) {
+        let (follow, cut_percent) = (depth.follow, depth.auto_cut_percent);
         if !follow {
             self.followed = None;
             return;
@@ -154,6 +156,18 @@ impl Viewing {
         if let Some(range) = auto_range(&shown.frame, cut_percent) {
             self.view.depth_range = range;
         }
+    }
+
+    /// Where the pinned point is on the frame on screen, `shown` (image pixels, y up), if it is
+    /// in view.
+    pub(crate) fn pinned_px(&self, shown: Option<&Shown>) -> Option<DVec2> {
+        let shown = shown?;
+        let px = pixel_of_point(&shown.view, self.probe.pinned_world?)?;
+        let inside = px.x >= 0.0
+            && px.y >= 0.0
+            && px.x < f64::from(shown.view.width_px)
+            && px.y < f64::from(shown.view.height_px);
+        inside.then_some(px)
     }
 
     /// "Frame all": fits centre and size to `scene`'s bounds (direction and up stay).

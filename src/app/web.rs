@@ -377,7 +377,7 @@ impl WebHandle {
     /// of the current view at the full quality.
     pub fn settled(&self) -> bool {
         self.with_app(|app| {
-            !app.busy()
+            !super::layout::busy(&app.frames, &app.writes, &app.compare)
                 && app.scene.loading.is_none()
                 && app.page.inbox.borrow().is_empty()
                 && app.frame_is_current()

@@ -72,7 +72,7 @@ impl Writes {
     }
 
     /// The finished write's message (an error when it failed); `None` while none finished.
-    pub(crate) fn poll(&mut self) -> Option<Status> {
+    fn poll(&mut self) -> Option<Status> {
         let finished = match self.task.as_ref().map(Task::poll)? {
             Poll::Running => return None,
             Poll::Done(Ok(done)) => Status::info(done),
@@ -207,9 +207,26 @@ impl Writes {
         }
     }
 
+    /// Takes a finished write in (its message into `status`; a failed one wrote nothing, so the
+    /// save over the open scene, `saving_over`, ends) and a file dialog's answer: the action it
+    /// asks for (see [`Self::take_dialog`]).
+    pub(crate) fn take_in(
+        &mut self,
+        export: &mut ExportSettings,
+        compare_path: &mut String,
+        saving_over: &mut bool,
+        status: &mut Option<Status>,
+    ) -> Option<Action> {
+        if let Some(finished) = self.poll() {
+            *saving_over &= !finished.is_error();
+            *status = Some(finished);
+        }
+        self.take_dialog(export, compare_path)
+    }
+
     /// Takes a file dialog's answer: the action it asks for (the path it chose also fills the
     /// field it belongs to: the export's, the saved scene's, the compared image's).
-    pub(crate) fn take_dialog(
+    fn take_dialog(
         &mut self,
         export: &mut ExportSettings,
         compare_path: &mut String,
@@ -252,6 +269,16 @@ fn save_view(scene: &Arc<Scene>, view: View, path: PathBuf) -> StagedWrite {
             stage_view_as_scene(set, &scene, &view, &path).map_err(|e| e.to_string())
         }),
     }
+}
+
+/// Makes the `folder` a write goes into (the user agreed to); why not, when it cannot.
+pub(crate) fn create_folder(folder: &Path) -> Result<(), Status> {
+    std::fs::create_dir_all(folder).map_err(|error| {
+        Status::error(format!(
+            "export: cannot create the folder {}: {error}",
+            folder.display()
+        ))
+    })
 }
 
 /// Why `write` cannot start, if it is an export at an unusable size (asked before anything is

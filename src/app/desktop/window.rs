@@ -92,6 +92,9 @@ fn run_with(
         options,
         Box::new(|cc| {
             opened.set(true);
+            // A termination signal wakes the window, which then closes.
+            let ctx = cc.egui_ctx.clone();
+            crate::platform::process::set_wake(move || ctx.request_repaint());
             Ok(Box::new(ViewerApp::new(cc, request)))
         }),
     )
