@@ -1,5 +1,6 @@
 //! The viewer's writes, driven through its buttons (egui_kittest): it asks before replacing any
-//! file and warns when one is the open scene, writes into a folder when given one, and gives
+//! file and warns when one is the open scene, writes into a folder when given one (refusing an
+//! unusable size before it offers to make one), and gives
 //! written files the modes the command line gives them; "Course files" writes the course's images
 //! and their command line, and exports are named after the scene; a scene file dropped on the
 //! window opens.
@@ -181,6 +182,23 @@ fn a_missing_folder_is_created_when_the_user_agrees() {
         assert!(missing.join(colour).exists(), "{typed}: {message}");
         std::fs::remove_dir_all(folder.path().join("new")).unwrap();
     }
+}
+
+#[test]
+fn an_export_at_an_unusable_size_is_refused_before_a_folder_is_offered() {
+    let folder = tempfile::tempdir().unwrap();
+    let mut harness = viewer(Some(scene_path("scene1_02.txt")));
+    let missing = folder.path().join("new");
+    let export = &mut harness.state_mut().settings_mut().export;
+    export.path = format!("{}/", missing.display());
+    // Each side within the size fields' range, the whole over the pixel limit.
+    export.displayed_size = false;
+    export.size_px = [16_384, 16_384];
+    press(&mut harness, "Export to path");
+    assert!(harness.query_by_label("Create this folder?").is_none());
+    let (message, is_error) = harness.state().message().unwrap();
+    assert!(is_error && message.starts_with("export: "), "{message}");
+    assert!(!missing.exists());
 }
 
 #[test]

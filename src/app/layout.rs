@@ -262,7 +262,8 @@ impl Window<'_> {
 
     /// The probe of the frame on screen at image position `px` (pixels, y up).
     fn probe_at(&self, px: glam::DVec2) -> Option<Probe> {
-        (self.frames).probe_at(&self.scene.loaded.scene, self.scene.epoch, px)
+        self.frames
+            .probe_at(&self.scene.loaded.scene, self.scene.epoch, px)
     }
 
     /// The two images with the probe and the histogram; returns the gestures made on them.

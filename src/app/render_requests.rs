@@ -103,7 +103,9 @@ impl Frames {
 
     /// The size of the frame on screen (pixels), if one is.
     pub(crate) fn size_px(&self) -> Option<[u32; 2]> {
-        (self.shown.as_ref()).map(|s| [s.frame.width_px, s.frame.height_px])
+        self.shown
+            .as_ref()
+            .map(|s| [s.frame.width_px, s.frame.height_px])
     }
 
     /// Probes the frame on screen at image position `px` (pixels, y up), if it is a frame of

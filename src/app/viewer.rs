@@ -154,24 +154,23 @@ impl ViewerApp {
     /// ([`confirm::wait_for_yes`]). An export that cannot start is refused before anything is
     /// offered or created; a folder it would create is asked for first (a page has none).
     fn write_or_ask(&mut self, write: Write) {
-        if let Some(problem) = writes::refused(&write, &self.settings.export) {
-            self.status = Some(Status::error(problem));
-            return;
-        }
         let missing_folder = self.missing_export_folder(&write);
-        let no_folder = missing_folder.is_some();
-        let files = (self.writes).files_of(&write, no_folder, &self.settings, &self.written());
+        let written = self.written();
+        let asked =
+            self.writes
+                .files_of(&write, missing_folder.is_some(), &self.settings, &written);
         let scene = self.scene.loaded.path.as_deref();
-        match confirm::wait_for_yes(write, missing_folder, files, scene) {
-            Ok(write) => self.write_now(write),
-            Err(pending) => self.writes.pending_replace = Some(pending),
+        match asked.map(|files| confirm::wait_for_yes(write, missing_folder, files, scene)) {
+            Ok(Ok(write)) => self.write_now(write),
+            Ok(Err(pending)) => self.writes.pending_replace = Some(pending),
+            Err(refused) => self.status = Some(refused),
         }
     }
 
     /// Carries out `write` (the user has agreed to replace what it replaces).
     fn write_now(&mut self, write: Write) {
         self.scene.note_write(&write);
-        match (self.writes).stage(write, &self.settings, &self.written()) {
+        match self.writes.stage(write, &self.settings, &self.written()) {
             Ok(staged) => self.write_files(staged.running, staged.done, staged.stage),
             Err(status) => self.status = Some(status),
         }
@@ -361,8 +360,8 @@ impl ViewerApp {
     /// The probe of the pinned point, where it is on the frame on screen (`None` when it is out
     /// of view or nothing is pinned).
     pub fn pinned_probe(&self) -> Option<Probe> {
-        let shown = self.frames.shown.as_ref();
-        (self.viewing.pinned_px(shown)).and_then(|px| self.probe_at(px))
+        let px = self.viewing.pinned_px(self.frames.shown.as_ref());
+        px.and_then(|px| self.probe_at(px))
     }
 
     /// The magnifier: which part of the frame the images show.
@@ -445,9 +444,10 @@ impl eframe::App for ViewerApp {
         }
         self.receive_scene();
         let (export, compare_path) = (&mut self.settings.export, &mut self.compare.path_text);
-        let saving_over = &mut self.scene.saving_over;
-        if let Some(action) =
-            (self.writes).take_in(export, compare_path, saving_over, &mut self.status)
+        let (saving_over, status) = (&mut self.scene.saving_over, &mut self.status);
+        if let Some(action) = self
+            .writes
+            .take_in(export, compare_path, saving_over, status)
         {
             self.apply(action);
         }

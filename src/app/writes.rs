@@ -118,15 +118,19 @@ impl Writes {
     }
 
     /// The files `write` would make: an export's (from its plan; none yet when its folder is
-    /// missing, `no_folder`), a saved view's, the course files'.
+    /// missing, `no_folder`), a saved view's, the course files'. An export at an unusable size is
+    /// refused, before anything is offered or created.
     pub(crate) fn files_of(
         &self,
         write: &Write,
         no_folder: bool,
         settings: &Settings,
         written: &Written,
-    ) -> Vec<PathBuf> {
-        match write {
+    ) -> Result<Vec<PathBuf>, Status> {
+        Ok(match write {
+            Write::ExportTo(_) if let Some(problem) = export_size_problem(&settings.export) => {
+                return Err(Status::error(problem));
+            }
             Write::ExportTo(_) if no_folder => Vec::new(),
             Write::ExportTo(base) => self
                 .export_plan(base.clone(), settings, written)
@@ -134,7 +138,7 @@ impl Writes {
                 .unwrap_or_default(),
             Write::SaveViewTo(path) => vec![path.clone()],
             Write::CourseFiles => course_files(&settings.export.path, written.loaded).all(),
-        }
+        })
     }
 
     /// Stages `write` of `written` with `settings`; why not, when it cannot start.
@@ -279,14 +283,6 @@ pub(crate) fn create_folder(folder: &Path) -> Result<(), Status> {
             folder.display()
         ))
     })
-}
-
-/// Why `write` cannot start, if it is an export at an unusable size (asked before anything is
-/// offered or created).
-pub(crate) fn refused(write: &Write, export: &ExportSettings) -> Option<String> {
-    matches!(write, Write::ExportTo(_))
-        .then(|| export_size_problem(export))
-        .flatten()
 }
 
 /// Why an export at the chosen size cannot start, if it cannot.
