@@ -150,16 +150,10 @@ impl RunReport {
     }
 }
 
-/// The depth range used when only a colour image is asked for (it does not affect the output).
-const UNUSED_DEPTH_RANGE: DepthRange = DepthRange {
-    min_t: 0.0,
-    max_t: 1.0,
-};
-
 /// The view a request renders: the scene's camera at the requested size and depth range (of
 /// `-depth`, else of `-depth16`).
 pub(crate) fn request_view(scene: &Scene, request: &RenderRequest) -> View {
-    let range = request.outputs.depth_range().unwrap_or(UNUSED_DEPTH_RANGE);
+    let range = request.outputs.depth_range().unwrap_or(DepthRange::UNUSED);
     View::of_camera(&scene.camera, request.width_px, request.height_px, range)
 }
 

@@ -74,12 +74,6 @@ pub enum GradeError {
     Report(String),
 }
 
-/// The depth range of a line without `-depth` (nothing is drawn with it).
-const UNUSED_DEPTH_RANGE: DepthRange = DepthRange {
-    min_t: 0.0,
-    max_t: 1.0,
-};
-
 /// Grades the class of `request` and writes its report; returns what was found.
 pub fn grade(request: &GradeRequest) -> Result<ClassReport, GradeError> {
     let tasks = read_assignment(&request.assignment)?;
@@ -104,7 +98,7 @@ pub fn grade(request: &GradeRequest) -> Result<ClassReport, GradeError> {
             line,
             source,
         })?;
-        let range = task.depth.as_ref().map_or(UNUSED_DEPTH_RANGE, |d| d.0);
+        let range = task.depth.as_ref().map_or(DepthRange::UNUSED, |d| d.0);
         let view = View::of_camera(&scene.camera, task.size_px.0, task.size_px.1, range);
         let frame = render(&scene, &view).map_err(|source| GradeError::View {
             assignment: assignment.clone(),

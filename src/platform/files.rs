@@ -260,43 +260,36 @@ const MAX_LINKS: usize = 40;
 /// something other than a file (a pipe through `/dev/stdout`, a device) is left as it is, so that
 /// what it leads to is judged, not a name the kernel made up (`pipe:[N]`).
 pub fn through_links_to_write(path: &Path) -> std::io::Result<PathBuf> {
-    let mut current = path.to_path_buf();
-    for _ in 0..=MAX_LINKS {
-        let is_link = std::fs::symlink_metadata(&current)
-            .is_ok_and(|metadata| metadata.file_type().is_symlink());
-        let leads_to_a_file_or_nothing =
-            std::fs::metadata(&current).map_or(true, |metadata| metadata.is_file());
-        if !is_link || !leads_to_a_file_or_nothing {
-            return Ok(current);
-        }
-        let Ok(target) = std::fs::read_link(&current) else {
-            return Ok(current);
-        };
-        current = if target.is_absolute() {
-            target
-        } else {
-            folder_of(&current).join(target)
-        };
-    }
-    Err(std::io::Error::new(
-        std::io::ErrorKind::InvalidInput,
-        "too many levels of symbolic links (a loop?): nothing written",
-    ))
+    let leads_to_a_file_or_nothing =
+        |link: &Path| std::fs::metadata(link).map_or(true, |metadata| metadata.is_file());
+    follow_links(path, leads_to_a_file_or_nothing).map_err(|_| {
+        std::io::Error::new(
+            std::io::ErrorKind::InvalidInput,
+            "too many levels of symbolic links (a loop?): nothing written",
+        )
+    })
 }
 
 /// The file `path` names once its symbolic links are followed, as `cp` and the shell follow
 /// them when they write: each link's target, relative to the link's folder, until a name that
 /// is no link (which need not exist yet). A loop or an unreadable link ends the walk there.
 pub fn through_links(path: &Path) -> PathBuf {
+    follow_links(path, |_| true).unwrap_or_else(|last| last)
+}
+
+/// Follows `path`'s symbolic links, each target relative to the link's folder, while `follow`
+/// takes the link: the name reached (no link, an unreadable one, or one `follow` refused), or
+/// `Err` with the last name when links remain after [`MAX_LINKS`].
+fn follow_links(path: &Path, follow: impl Fn(&Path) -> bool) -> Result<PathBuf, PathBuf> {
     let mut current = path.to_path_buf();
-    for _ in 0..MAX_LINKS {
+    for _ in 0..=MAX_LINKS {
         let is_link = std::fs::symlink_metadata(&current)
             .is_ok_and(|metadata| metadata.file_type().is_symlink());
-        if !is_link {
-            break;
+        if !is_link || !follow(&current) {
+            return Ok(current);
         }
         let Ok(target) = std::fs::read_link(&current) else {
-            break;
+            return Ok(current);
         };
         current = if target.is_absolute() {
             target
@@ -304,7 +297,7 @@ pub fn through_links(path: &Path) -> PathBuf {
             folder_of(&current).join(target)
         };
     }
-    current
+    Err(current)
 }
 
 /// The identity of the file `path` names (through its links); `None` when not even its folder

@@ -25,6 +25,13 @@ pub struct DepthRange {
 }
 
 impl DepthRange {
+    /// The range a render takes when no depth image is asked for: only the colour image is
+    /// written, and it does not depend on the range.
+    pub const UNUSED: Self = Self {
+        min_t: 0.0,
+        max_t: 1.0,
+    };
+
     /// The range `[min_t, max_t]`.
     pub fn new(min_t: f64, max_t: f64) -> Self {
         Self { min_t, max_t }
