@@ -88,7 +88,7 @@ fn in_window_section() -> String {
     match std::fs::read_to_string(source) {
         Ok(report) => {
             section.push_str(
-                "The same views in the real window, copied from the last run of `cargo xtask report window-frame-times` ([window-frame-times.md](window-frame-times.md), which says how each column is measured; it runs apart, under Xvfb, so its figures come from its own run, not this one):\n\n",
+                "The same views in the real window, copied from the last run of `cargo xtask report window-frame-times` ([window-frame-times.md](window-frame-times.md), which says how each column is measured; it runs apart, under Xvfb, so its figures come from its own run, not this one; `cargo xtask report sync` copies it again after each run):\n\n<!-- from docs/window-frame-times.md -->\n",
             );
             for line in report.lines().filter(|line| line.starts_with('|')) {
                 section.push_str(line);
