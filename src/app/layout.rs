@@ -234,7 +234,7 @@ impl Window<'_> {
     }
 
     /// What the status bar shows now.
-    pub(super) fn status_line(&self) -> StatusLine<'_> {
+    fn status_line(&self) -> StatusLine<'_> {
         let shown = self.frames.shown.as_ref();
         StatusLine {
             render_ms: shown.map(|s| s.render_ms),
