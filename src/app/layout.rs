@@ -238,7 +238,7 @@ impl Window<'_> {
         let shown = self.frames.shown.as_ref();
         StatusLine {
             render_ms: shown.map(|s| s.render_ms),
-            size_px: shown.map(|s| [s.frame.width_px, s.frame.height_px]),
+            size_px: self.frames.size_px(),
             stage: shown.map(|s| {
                 if self.frames.shows_preview_of(&self.settings.quality) {
                     "preview (1 sample)".to_owned()

@@ -38,6 +38,13 @@ pub(crate) struct Status {
     pub(crate) created: Instant,
 }
 
+/// Puts `said` in the status bar's `status`, if anything was said.
+pub(crate) fn say(status: &mut Option<Status>, said: Option<Status>) {
+    if said.is_some() {
+        *status = said;
+    }
+}
+
 impl Status {
     /// Information that stays until replaced.
     pub(crate) fn info(text: impl Into<String>) -> Self {

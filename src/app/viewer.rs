@@ -17,7 +17,7 @@ use super::probe::{Probe, point_of_probe};
 use super::saved_views::SceneViews;
 use super::scene_loading::{LoadKind, OpenScene};
 use super::settings::Settings;
-use super::status::Status;
+use super::status::{self, Status};
 use super::ui::magnifier::Magnifier;
 use super::{compare, input, layout, pixel_trace, render_requests, viewing, writes};
 use crate::cli::ViewerRequest;
@@ -84,10 +84,8 @@ impl ViewerApp {
     }
 
     /// Shows what a feature had to say, if anything, in the status bar.
-    pub(super) fn say(&mut self, status: Option<Status>) {
-        if status.is_some() {
-            self.status = status;
-        }
+    pub(super) fn say(&mut self, said: Option<Status>) {
+        status::say(&mut self.status, said);
     }
 
     /// "Auto range" on the frame on screen (the settings' cut at each ends).

@@ -85,14 +85,14 @@ impl Writes {
 }
 
 impl Writes {
-    /// What an export to `base_path` writes and the view it renders; `None` when the export
-    /// size is unusable.
+    /// What an export to `base_path` writes and the view it renders; why not, when the chosen
+    /// export size is unusable.
     fn export_plan(
         &self,
         base_path: PathBuf,
         settings: &Settings,
         written: &Written,
-    ) -> Option<(ExportPlan, View)> {
+    ) -> Result<(ExportPlan, View), Status> {
         let export = &settings.export;
         let format = match export.format {
             ExportFormat::Png => ImageFormat::Png,
@@ -102,7 +102,8 @@ impl Writes {
         if !export.displayed_size {
             view.width_px = export.size_px[0];
             view.height_px = export.size_px[1];
-            check_image_size(view.width_px, view.height_px).ok()?;
+            check_image_size(view.width_px, view.height_px)
+                .map_err(|error| Status::error(format!("export: {error}")))?;
         }
         let plan = ExportPlan {
             base_path,
@@ -114,7 +115,7 @@ impl Writes {
             extra_depth: export.extra_depth,
             program: self.program.clone(),
         };
-        Some((plan, view))
+        Ok((plan, view))
     }
 
     /// The files `write` would make: an export's (from its plan; none yet when its folder is
@@ -128,14 +129,14 @@ impl Writes {
         written: &Written,
     ) -> Result<Vec<PathBuf>, Status> {
         Ok(match write {
-            Write::ExportTo(_) if let Some(problem) = export_size_problem(&settings.export) => {
-                return Err(Status::error(problem));
+            Write::ExportTo(base) => {
+                let (plan, _) = self.export_plan(base.clone(), settings, written)?;
+                if no_folder {
+                    Vec::new()
+                } else {
+                    ExportFiles::of(&plan).written_by(&plan)
+                }
             }
-            Write::ExportTo(_) if no_folder => Vec::new(),
-            Write::ExportTo(base) => self
-                .export_plan(base.clone(), settings, written)
-                .map(|(plan, _)| ExportFiles::of(&plan).written_by(&plan))
-                .unwrap_or_default(),
             Write::SaveViewTo(path) => vec![path.clone()],
             Write::CourseFiles => course_files(&settings.export.path, written.loaded).all(),
         })
@@ -163,12 +164,14 @@ impl Writes {
         settings: &Settings,
         written: &Written,
     ) -> Result<StagedWrite, Status> {
-        if let Some(problem) = export_problem(&settings.export, &base_path) {
-            return Err(Status::error(problem));
+        let (plan, view) = self.export_plan(base_path, settings, written)?;
+        let base_path = &plan.base_path;
+        if crate::export::names_a_folder(base_path) && !base_path.is_dir() {
+            return Err(Status::error(format!(
+                "export: the folder {} does not exist",
+                base_path.display()
+            )));
         }
-        let Some((plan, view)) = self.export_plan(base_path, settings, written) else {
-            return Err(Status::error("export: the export size is unusable"));
-        };
         let quality = settings.quality;
         // Reuse the frame on screen when it is exactly what would be exported.
         let ready = written
@@ -283,28 +286,4 @@ pub(crate) fn create_folder(folder: &Path) -> Result<(), Status> {
             folder.display()
         ))
     })
-}
-
-/// Why an export at the chosen size cannot start, if it cannot.
-fn export_size_problem(export: &ExportSettings) -> Option<String> {
-    if !export.displayed_size
-        && let Err(error) = check_image_size(export.size_px[0], export.size_px[1])
-    {
-        return Some(format!("export: {error}"));
-    }
-    None
-}
-
-/// Why an export to `base_path` cannot start, if it cannot.
-fn export_problem(export: &ExportSettings, base_path: &Path) -> Option<String> {
-    if let Some(problem) = export_size_problem(export) {
-        return Some(problem);
-    }
-    if crate::export::names_a_folder(base_path) && !base_path.is_dir() {
-        return Some(format!(
-            "export: the folder {} does not exist",
-            base_path.display()
-        ));
-    }
-    None
 }

@@ -28,7 +28,7 @@ pub(crate) use pixels::{OFF_LEVELS, REFERENCE_SAMPLES};
 
 use super::background::{Poll, Task};
 use super::reload::{FileWatcher, WatchState};
-use super::status::Status;
+use super::status::{Status, say};
 use crate::compare::picture::{heat_map, heat_map_highlighted, heat_map_marked};
 use crate::compare::their_image::{TheirImageError, read_their_image};
 use crate::explore::trace::PixelTrace;
@@ -403,10 +403,11 @@ impl CompareState {
         view: &mut View,
         status: &mut Option<Status>,
     ) {
-        let against = Against {
+        // Made only when a comparison starts again, not on every frame.
+        let against = |view: View| Against {
             ctx: ctx.clone(),
             scene: Arc::clone(scene),
-            view: *view,
+            view,
         };
         // (Asked only between comparisons: a change seen while one runs waits for it.)
         let seen = self
@@ -417,10 +418,8 @@ impl CompareState {
         match seen {
             Some((path, kind, WatchState::Changed)) => {
                 let path = path.clone();
-                say(
-                    status,
-                    self.theirs(&against, path, kind, None, read_their_image),
-                );
+                let said = self.theirs(&against(*view), path, kind, None, read_their_image);
+                say(status, said);
                 return;
             }
             Some((_, _, WatchState::Settling(wait))) => ctx.request_repaint_after(wait),
@@ -429,7 +428,8 @@ impl CompareState {
         if !self.busy() {
             let range = view.depth_range;
             if let Some((path, theirs)) = self.stale_depth_image(range) {
-                let said = self.theirs(&against, path, ImageKind::Depth, Some(range), move |_| {
+                let again = against(*view);
+                let said = self.theirs(&again, path, ImageKind::Depth, Some(range), move |_| {
                     Ok(theirs)
                 });
                 say(status, said);
@@ -451,12 +451,5 @@ impl CompareState {
             }
             Err(error) => *status = Some(error),
         }
-    }
-}
-
-/// Puts `said` in the status bar, if anything was said.
-fn say(status: &mut Option<Status>, said: Option<Status>) {
-    if said.is_some() {
-        *status = said;
     }
 }
