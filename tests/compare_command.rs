@@ -234,7 +234,8 @@ fn a_depth_image_without_its_range_is_compared_over_the_range_it_was_made_over()
     assert_eq!(value(&output, "depth_range_inferred"), "6.3 10.7");
     assert_eq!(diagnosis(&output), ["flipped-vertically"]);
     assert_eq!(value(&output, "unexplained_pixels"), "0");
-    // With a range given, that range is used, and the inferred one still printed.
+    // With a range given, that range is used and said as given: nothing is said to be inferred,
+    // and the range their image was drawn over is the depth-range statement's.
     let output = run(
         folder.path(),
         &[
@@ -246,7 +247,13 @@ fn a_depth_image_without_its_range_is_compared_over_the_range_it_was_made_over()
             "depth.png",
         ],
     );
-    assert_eq!(value(&output, "depth_range_inferred"), "6.3 10.7");
+    assert_eq!(value(&output, "depth_range_given"), "6 10");
+    assert!(!stdout(&output).contains("depth_range_inferred"));
+    assert!(
+        stdout(&output).contains("diagnosis: depth-range 6.3 10.7:"),
+        "{}",
+        stdout(&output)
+    );
     assert_ne!(diagnosis(&output), ["flipped-vertically"]);
     // A range a coarse rounding would move by most of a grey level (6.385 to 6.4) is read back
     // finely enough that the exact image matches.

@@ -7,7 +7,7 @@ mod command;
 mod compare_run;
 
 use command::stderr;
-use compare_run::{SCENE, compare, diagnosis, path, run, value, write_mistaken};
+use compare_run::{SCENE, compare, diagnosis, path, run, stdout, value, write_mistaken};
 use raytracer::compare::{Mistake, MistakeSet};
 
 /// `-compare_format json` prints the answer as one JSON document (docs/compare-json.md): the
@@ -25,7 +25,7 @@ fn the_answer_as_json_carries_the_statements_and_their_values() {
     assert_eq!(json.status.code(), Some(3), "{}", stderr(&json));
     let answer: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
     assert_eq!(answer["format"], "raytracer-compare");
-    assert_eq!(answer["version"], 1);
+    assert_eq!(answer["version"], 2);
     assert_eq!(answer["match"], false);
     assert_eq!(answer["verdict"], "explained");
     let names: Vec<&str> = answer["statements"]
@@ -54,11 +54,11 @@ fn the_answer_as_json_carries_the_statements_and_their_values() {
             .to_string(),
         value(&lines, "depth_pixels_differing")
     );
-    // The range read back from their depth image under the range asked for: that one.
-    assert_eq!(
-        answer["depth_range_inferred"],
-        serde_json::json!([6.0, 10.0])
-    );
+    // The range given is said as given, and nothing is said to be inferred.
+    assert_eq!(answer["depth_range_given"], serde_json::json!([6.0, 10.0]));
+    assert_eq!(answer["depth_range_inferred"], serde_json::Value::Null);
+    assert_eq!(value(&lines, "depth_range_given"), "6 10");
+    assert!(!stdout(&lines).contains("depth_range_inferred"));
 }
 
 /// The format flag is checked like any other: an unknown format and a format with nothing to

@@ -61,7 +61,7 @@ pub(crate) const JUSTIFIED_BY: &[(&str, &[&str])] = &[
     ("flipped-vertically", &["flipped-vertically"]),
     ("raw-up", &["raw-up"]),
     ("t-ramp", &["raw-up", "t-ramp"]),
-    ("only-block", &["square-block", "loops-swapped"]),
+    ("only-block", &["square-block", "loops-swapped", "loops-to"]),
     (
         "no-depth-test",
         &["no-depth-test-first", "no-depth-test-last"],
@@ -98,7 +98,11 @@ pub(crate) const JUSTIFIED_BY: &[(&str, &[&str])] = &[
     ("depth-outside-black", &["depth-outside-black"]),
     (
         "depth-outside",
-        &["depth-outside-background", "depth-outside-black"],
+        &[
+            "depth-outside-background",
+            "depth-outside-black",
+            "depth-outside-colour",
+        ],
     ),
     ("depth-no-hit", &["depth-no-hit"]),
 ];

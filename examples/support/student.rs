@@ -53,6 +53,8 @@ pub(crate) enum OutsideRule {
     Clamp,
     Wrap,
     Black,
+    /// Drawn in a colour of its own.
+    Colour([u8; 3]),
 }
 
 /// A student's program: every knob at the course's value is the course's program.
@@ -64,6 +66,9 @@ pub(crate) struct Program {
     pub(crate) axis_lengths: (f64, f64),
     /// How much of the direction the up vector keeps (the course's: 0, made perpendicular).
     pub(crate) up_along_direction: f64,
+    /// The screen's horizontal and up turned about the direction by this many degrees
+    /// (counter-clockwise as seen along the direction; the course's: 0).
+    pub(crate) turn_degrees: f64,
     /// `up × direction` for the horizontal.
     pub(crate) mirrored: bool,
     /// Rows written top row first.
@@ -71,6 +76,9 @@ pub(crate) struct Program {
     /// x samples the screen's v and y its u.
     pub(crate) swapped: bool,
     pub(crate) non_square: NonSquare,
+    /// The pixel loops stop at these columns and rows (the rest keeps the background), the
+    /// mapping unchanged (`None`: the whole image).
+    pub(crate) loops_to: Option<(u32, u32)>,
     pub(crate) keep: Keep,
     /// Hits below tmin are refused (the course's: −∞).
     pub(crate) tmin: f64,
@@ -93,10 +101,12 @@ impl Program {
             sample: (0.5, 0.5),
             axis_lengths: (1.0, 1.0),
             up_along_direction: 0.0,
+            turn_degrees: 0.0,
             mirrored: false,
             upside_down: false,
             swapped: false,
             non_square: NonSquare::Centred,
+            loops_to: None,
             keep: Keep::Nearest,
             tmin: f64::NEG_INFINITY,
             far_when_refused: true,
@@ -128,6 +138,9 @@ impl Program {
         if self.up_along_direction != 0.0 {
             truth.push(format!("t-ramp={}", self.up_along_direction));
         }
+        if self.turn_degrees != 0.0 {
+            truth.push(format!("axes={}", self.turn_degrees));
+        }
         if self.mirrored {
             truth.push("mirrored".to_owned());
         }
@@ -142,6 +155,9 @@ impl Program {
             NonSquare::Stretched => truth.push("stretched".to_owned()),
             NonSquare::BottomStrip => truth.push("crop-strip".to_owned()),
             NonSquare::Block => truth.push("square-block".to_owned()),
+        }
+        if let Some((columns, rows)) = self.loops_to {
+            truth.push(format!("loops-to={columns},{rows}"));
         }
         match self.keep {
             Keep::Nearest => {}
@@ -174,6 +190,9 @@ impl Program {
             OutsideRule::Clamp => {}
             OutsideRule::Wrap => truth.push("depth-no-clamp".to_owned()),
             OutsideRule::Black => truth.push("depth-outside-black".to_owned()),
+            OutsideRule::Colour(c) => {
+                truth.push(format!("depth-outside-colour={},{},{}", c[0], c[1], c[2]));
+            }
         }
         if self.depth_no_hit_background {
             truth.push("depth-no-hit".to_owned());
@@ -233,6 +252,12 @@ pub(crate) fn render(
     // The camera as the program builds it.
     let up_perpendicular = normalised(sub(up_given, scale(direction, dot(up_given, direction))));
     let mut horizontal = normalised(cross(direction, up_perpendicular));
+    let (sin, cos) = program.turn_degrees.to_radians().sin_cos();
+    let (horizontal_turned, up_perpendicular) = (
+        add(scale(horizontal, cos), scale(up_perpendicular, sin)),
+        sub(scale(up_perpendicular, cos), scale(horizontal, sin)),
+    );
+    horizontal = horizontal_turned;
     if program.mirrored {
         horizontal = scale(horizontal, -1.0);
     }
@@ -261,8 +286,9 @@ pub(crate) fn render(
             c.map(|c| byte(f64::from(c), program.rounded))
         })
         .collect();
-    let (loop_w, loop_h) = match program.non_square {
-        NonSquare::Block => (width.min(height), width.min(height)),
+    let (loop_w, loop_h) = match (program.non_square, program.loops_to) {
+        (NonSquare::Block, _) => (width.min(height), width.min(height)),
+        (_, Some((columns, rows))) => (columns.min(width), rows.min(height)),
         _ => (width, height),
     };
     let mut t_of = vec![f64::NAN; (width * height) as usize];
@@ -371,6 +397,12 @@ pub(crate) fn render(
             }
             OutsideRule::Black if !(0.0..=1.0).contains(&value) => 0,
             OutsideRule::Black => byte(value, program.rounded),
+            OutsideRule::Colour(c) if !(0.0..=1.0).contains(&value) => {
+                let (x, y) = (index as u32 % width, index as u32 / width);
+                depth.put_pixel(x, y, Rgb(c));
+                continue;
+            }
+            OutsideRule::Colour(_) => byte(value, program.rounded),
         };
         let (x, y) = (index as u32 % width, index as u32 / width);
         depth.put_pixel(x, y, Rgb([grey; 3]));

@@ -32,7 +32,7 @@ fn trace_text(
     let traced = trace_pixel(scene, view, x_px, y_up_px, Some(view.depth_range))
         .map_err(|error| Status::error(format!("trace: {error}")))?;
     let mut text = traced.text();
-    if let Some(theirs) = compare.their_pixel(&traced) {
+    if let Some(theirs) = compare.their_pixel(scene, &traced) {
         text.push_str(&theirs);
     }
     Ok(text)

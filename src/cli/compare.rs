@@ -10,7 +10,7 @@ use image::RgbImage;
 
 use super::flags::Flag;
 use super::request::CompareRequest;
-use crate::compare::judge::{NoDepthRange, judge};
+use crate::compare::judge::{NoDepthRange, judge, their_depth_at};
 use crate::compare::picture::{Row, difference_picture};
 use crate::compare::their_image::read_their_image;
 use crate::compare::{Deviation, Diagnosis, Difference, Theirs};
@@ -94,8 +94,11 @@ pub struct CompareReport {
     pub(crate) depth: Option<Difference>,
     /// The mistakes named.
     pub(crate) diagnosis: Diagnosis,
-    /// With a depth image: the range it was most likely made over (`None`: no ramp to fit).
+    /// With a depth image given without a range: the range it was most likely made over
+    /// (`None`: no ramp to fit). `None` when a range was given.
     pub(crate) depth_range_inferred: Option<Option<DepthRange>>,
+    /// With a depth image given with a range (`-compare_depth DMIN DMAX FILE`): that range.
+    pub(crate) depth_range_given: Option<DepthRange>,
     /// With a depth image: the range it was judged under (given, or read back).
     pub(crate) depth_range_used: Option<DepthRange>,
 }
@@ -124,6 +127,9 @@ impl CompareReport {
                     difference.max_difference()
                 );
             }
+        }
+        if let Some(given) = self.depth_range_given {
+            let _ = writeln!(text, "depth_range_given: {} {}", given.min_t, given.max_t);
         }
         if let Some(inferred) = self.depth_range_inferred {
             let _ = match inferred {
@@ -180,7 +186,7 @@ impl CompareReport {
 
 /// Version of the JSON form of the answer (docs/compare-json.md); raised when a field changes
 /// meaning or goes.
-pub const COMPARE_JSON_VERSION: u32 = 1;
+pub const COMPARE_JSON_VERSION: u32 = 2;
 
 impl CompareReport {
     /// The report as one JSON document (docs/compare-json.md), with the `-stats` lines when
@@ -204,6 +210,9 @@ impl CompareReport {
             "match": self.matches(),
             "colour": difference(&self.colour),
             "depth": difference(&self.depth),
+            "depth_range_given": self
+                .depth_range_given
+                .map_or(Value::Null, |range| json!([range.min_t, range.max_t])),
             "depth_range_inferred": match self.depth_range_inferred {
                 None => Value::Null,
                 Some(None) => json!("none"),
@@ -351,7 +360,8 @@ pub(crate) fn compare(
             colour: judged.colour,
             depth: judged.depth,
             diagnosis: judged.diagnosis,
-            depth_range_inferred: judged.depth_range_inferred,
+            depth_range_inferred: judged.depth_range_inferred.filter(|_| range.is_none()),
+            depth_range_given: range.filter(|_| theirs.depth.is_some()),
             depth_range_used: theirs.depth.as_ref().map(|_| judged.view.depth_range),
         },
         picture,
@@ -359,16 +369,38 @@ pub(crate) fn compare(
 }
 
 /// Their pixel beside the trace of it: their colour and depth bytes at the traced pixel, and
-/// the interval of t their grey stands for over the range the depth image was judged under.
-pub(crate) fn their_pixel_lines(theirs: &TheirImages, traced: &PixelTrace) -> String {
+/// what their grey stands for: as the answer's model of their program draws it (their no-hit grey,
+/// a hit outside their range, a t over their range), else the t over the range the depth image
+/// was judged under.
+pub(crate) fn their_pixel_lines(
+    scene: &Scene,
+    theirs: &TheirImages,
+    traced: &PixelTrace,
+    report: Option<&CompareReport>,
+) -> String {
     let row = traced.size_px.1 - 1 - traced.y_up_px;
     let colour = theirs
         .colour
         .as_ref()
         .map(|image| traced.their_colour_line(image.get_pixel(traced.x_px, row).0));
-    let depth = theirs
-        .depth
-        .as_ref()
-        .map(|image| traced.their_depth_line(image.get_pixel(traced.x_px, row).0[0]));
+    let depth = theirs.depth.as_ref().map(|image| {
+        let grey = image.get_pixel(traced.x_px, row).0[0];
+        let drew = report.and_then(|report| {
+            let view = crate::render::View::of_camera(
+                &scene.camera,
+                traced.size_px.0,
+                traced.size_px.1,
+                report.depth_range_used?,
+            );
+            their_depth_at(
+                scene,
+                &view,
+                report.diagnosis.stated_model()?,
+                (traced.x_px, traced.y_up_px),
+                grey,
+            )
+        });
+        traced.their_depth_line(grey, drew)
+    });
     colour.into_iter().chain(depth).collect()
 }

@@ -391,7 +391,12 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
             traced.depth_range = compare_report.as_ref().and_then(|r| r.depth_range_used);
         }
         let mut text = traced.text();
-        text.push_str(&their_pixel_lines(&theirs, &traced));
+        text.push_str(&their_pixel_lines(
+            &scene,
+            &theirs,
+            &traced,
+            compare_report.as_ref(),
+        ));
         text
     });
     let started = Instant::now();

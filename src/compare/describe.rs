@@ -5,7 +5,7 @@
 
 use glam::{DMat2, DVec2, DVec3};
 
-use super::deviation::Deviation;
+use super::deviation::{Deviation, RangeFrom};
 use super::mistake::{Mistake, MistakeSet};
 use super::model::{DepthMap, Model, Outside, PixelMap, Quantity, Visible, colour_bytes};
 use crate::render::View;
@@ -265,6 +265,7 @@ pub fn describe(scene: &Scene, view: &View, model: &Model) -> Vec<Deviation> {
             black_t,
             given: (view.depth_range.min_t, view.depth_range.max_t),
             per_image: None,
+            from: RangeFrom::Given,
         });
     }
     match depth.outside {
@@ -276,6 +277,7 @@ pub fn describe(scene: &Scene, view: &View, model: &Model) -> Vec<Deviation> {
     if depth.no_hit != [0; 3] {
         more.push(Deviation::DepthNoHit {
             bytes: depth.no_hit,
+            scene_background,
         });
     }
     let mut all: Vec<Deviation> = words.mistakes().into_iter().map(Deviation::Word).collect();
@@ -353,7 +355,7 @@ pub fn rebuild(view: &View, deviations: &[Deviation]) -> Model {
             }
             Deviation::DepthQuantity { quantity } => model.depth.quantity = quantity,
             Deviation::DepthOutside { bytes } => model.depth.outside = Outside::Colour(bytes),
-            Deviation::DepthNoHit { bytes } => model.depth.no_hit = bytes,
+            Deviation::DepthNoHit { bytes, .. } => model.depth.no_hit = bytes,
             _ => {}
         }
     }

@@ -78,6 +78,8 @@ pub enum Deviation {
         /// When the range runs from the nearest to the farthest hit in the image: those t
         /// and their greys.
         per_image: Option<PerImage>,
+        /// Who chose the range the image was judged under.
+        from: RangeFrom,
     },
     /// The depth image maps another quantity than t.
     DepthQuantity {
@@ -93,7 +95,23 @@ pub enum Deviation {
     DepthNoHit {
         /// Its colour, bytes.
         bytes: [u8; 3],
+        /// The scene's background colour, bytes (the clue when they are the same).
+        scene_background: [u8; 3],
     },
+}
+
+/// Who chose the depth range a depth image was judged under: what a `depth-range` statement may
+/// say of it (a range the viewer chose is never blamed on their code).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum RangeFrom {
+    /// Given with the image (`-compare_depth DMIN DMAX`, a course command line): the range their
+    /// program was asked to draw over.
+    #[default]
+    Given,
+    /// Read back from their image: nobody said which range their program was given.
+    ReadBack,
+    /// The viewer's own depth range.
+    Viewer,
 }
 
 /// A depth ramp normalised per image: the nearest and farthest hit and their greys.
@@ -266,7 +284,7 @@ impl Deviation {
             Self::OnlyBlock { drawn_px } => format!("{} {}", drawn_px.0, drawn_px.1),
             Self::Background { bytes: b, .. }
             | Self::DepthOutside { bytes: b }
-            | Self::DepthNoHit { bytes: b } => bytes(*b),
+            | Self::DepthNoHit { bytes: b, .. } => bytes(*b),
             Self::DepthRange {
                 white_t, black_t, ..
             } => format!("{} {}", number(*white_t, 4), number(*black_t, 4)),
@@ -303,7 +321,7 @@ impl Deviation {
             Self::OnlyBlock { drawn_px } => vec![drawn_px.0.into(), drawn_px.1.into()],
             Self::Background { bytes: b, .. }
             | Self::DepthOutside { bytes: b }
-            | Self::DepthNoHit { bytes: b } => bytes(b),
+            | Self::DepthNoHit { bytes: b, .. } => bytes(b),
             Self::DepthRange {
                 white_t, black_t, ..
             } => vec![(*white_t).into(), (*black_t).into()],
@@ -333,48 +351,60 @@ impl Deviation {
         }
     }
 
-    /// What it means and what to check in their code, in one sentence.
+    /// What it means and what to check in their code, in one sentence: the one text the lines,
+    /// the JSON, the viewer and the grader's report give (`tests/statements.rs` measures each
+    /// claim it makes on pictures).
     pub fn explanation(&self) -> String {
         match self {
             Self::Word(mistake) => mistake.advice().to_owned(),
             Self::SampleOffset { offset_px } if offset_px.abs().max_element() <= 1.5 => format!(
-                "each ray starts at ({}, {}) within its pixel instead of the centre (½, ½): \
-                 check the pixel-to-screen formula, (x + ½)/W",
+                "each ray starts at ({}, {}) within its pixel instead of the centre (½, ½), so \
+                 the picture is shifted {}: give generateRay the pixel's centre, ((x + ½)/W, \
+                 (y + ½)/H) for a square image",
                 number(offset_px.x, 3),
-                number(offset_px.y, 3)
+                number(offset_px.y, 3),
+                shift_words(*offset_px)
             ),
             Self::SampleOffset { offset_px } => format!(
-                "the picture is shifted: pixel (0, 0) samples the screen at ({}, {}) of its own \
-                 pixels instead of (½, ½), so the image's centre is not the screen's: check \
-                 how x and y are centred (x − W/2, y − H/2)",
+                "pixel (0, 0) samples the screen at ({}, {}) of its own pixels instead of \
+                 (½, ½), so the picture is shifted {} and its centre is not the screen's: \
+                 check how x and y are centred (x + ½ − W/2, y + ½ − H/2)",
                 number(offset_px.x, 3),
-                number(offset_px.y, 3)
+                number(offset_px.y, 3),
+                shift_words(*offset_px)
             ),
             Self::CropNotCentred { offset_px } => format!(
                 "the image shows a strip of the camera's square that is not its middle (pixel \
-                 (0, 0) samples at ({}, {}) pixels): measure a non-square image's rows and \
-                 columns from the centre, with one pixel size, size/max(W, H)",
+                 (0, 0) samples at ({}, {}) pixels), so the picture is shifted {}: measure a \
+                 non-square image's rows and columns from the centre, with one pixel size, \
+                 size/max(W, H)",
                 number(offset_px.x, 3),
-                number(offset_px.y, 3)
+                number(offset_px.y, 3),
+                shift_words(*offset_px)
             ),
             Self::Scaled { factor } if factor.x == factor.y => format!(
                 "each pixel steps {}× the course's pixel size, so the picture is the right one \
-                 zoomed {} about its centre: are the horizontal and up vectors unit length, and \
-                 is the pixel size size/max(W, H)?",
+                 zoomed {} about its centre (each sphere {}× as wide): are the horizontal and \
+                 up vectors unit length, and is the pixel size size/max(W, H)?",
                 number(factor.x, 4),
-                if factor.x > 1.0 { "out" } else { "in" }
+                if factor.x > 1.0 { "out" } else { "in" },
+                number(1.0 / factor.x, 3)
             ),
             Self::Scaled { factor } => format!(
-                "the screen is {}× as wide and {}× as tall as it should be: are the horizontal \
-                 and up vectors unit length, and is one pixel size, size/max(W, H), used for \
-                 both axes?",
+                "each pixel steps {}× the course's pixel size across and {}× up, so each sphere \
+                 is drawn {}× as wide and {}× as tall (an ellipse): are the horizontal and up \
+                 vectors unit length, and is one pixel size, size/max(W, H), used for both axes?",
                 number(factor.x, 4),
-                number(factor.y, 4)
+                number(factor.y, 4),
+                number(1.0 / factor.x, 3),
+                number(1.0 / factor.y, 3)
             ),
-            Self::SwappedAxes { .. } => "x and y are swapped in the sampling: the column \
-                 decides the screen's v and the row its u; check the loops and which of x, y \
-                 goes with W and H"
-                .to_owned(),
+            Self::SwappedAxes { relative } => format!(
+                "x and y are swapped in the sampling: the column decides the screen's v and the \
+                 row its u, so the picture is {}: check the loops, and which of x and y goes \
+                 with W and with H in the point given to generateRay",
+                swapped_picture(relative)
+            ),
             Self::Axes { relative } => format!(
                 "the screen's axes are sheared or turned (one pixel along x moves ({}, {}), \
                  along y ({}, {}) course pixels): is the up vector made perpendicular to the \
@@ -387,16 +417,18 @@ impl Deviation {
             Self::Tilt { per_unit } => format!(
                 "t grows by {} per unit of the screen to the right and {} per unit up: the ray \
                  origins slide along the direction, so the horizontal or up vector is not \
-                 perpendicular to it",
+                 perpendicular to it: take up = horizontal × direction with horizontal = \
+                 normalize(direction × up)",
                 number(per_unit.x, 4),
                 number(per_unit.y, 4)
             ),
             Self::NoDepthTest { last_wins: true } => "the spheres are drawn in file order and \
-                 the last one hit wins, nearer or not: keep the nearest hit (compare t before \
-                 replacing it)"
+                 the last one hit wins, nearer or not: in Group::intersect replace the hit only \
+                 when the new t is smaller"
                 .to_owned(),
             Self::NoDepthTest { last_wins: false } => "the first sphere in the file that the \
-                 ray hits is drawn, nearer or not: test every sphere and keep the nearest"
+                 ray hits is drawn, nearer or not: in Group::intersect test every sphere and \
+                 keep the smallest t"
                 .to_owned(),
             Self::OnlyBlock { drawn_px } => format!(
                 "only the lower-left {}×{} pixels are drawn and the rest keeps the background: \
@@ -405,20 +437,23 @@ impl Deviation {
             ),
             Self::NearRootOnly { tmin } => format!(
                 "hits before t = {} are refused and the far root is not tried, so a sphere \
-                 around the ray origins vanishes: the course's tmin is −∞",
+                 whose near root lies before t = {} vanishes: the orthographic camera's tmin is \
+                 −∞ (-INFINITY)",
+                number(*tmin, 6),
                 number(*tmin, 6)
             ),
             Self::Background { bytes: b, scene } => {
                 if *b == [0; 3] {
                     format!(
                         "the background is black where the scene says {}: the image starts \
-                         black and the background colour is never used",
+                         black and the background colour is never used; fill the image with \
+                         the scene's background colour before tracing",
                         bytes(*scene)
                     )
                 } else {
                     format!(
-                        "the background is {} where the scene says {}: check where the \
-                         background colour is read and written",
+                        "the background is {} where the scene says {}: fill the image with the \
+                         background colour the scene file gives (its Background block)",
                         bytes(*b),
                         bytes(*scene)
                     )
@@ -429,44 +464,142 @@ impl Deviation {
                 black_t,
                 given,
                 per_image: Some(p),
+                from,
             } => format!(
                 "the depth ramp runs from t = {} (grey {}) to t = {} (grey {}), the nearest and \
                  farthest hits in this image, white at t = {} and black at {}: you normalise \
-                 per image and -depth {} {} is ignored",
+                 per image {}",
                 number(p.near_t, 4),
                 number(p.near_grey, 0),
                 number(p.far_t, 4),
                 number(p.far_grey, 0),
                 number(*white_t, 4),
                 number(*black_t, 4),
-                number(given.0, 4),
-                number(given.1, 4)
+                match from {
+                    RangeFrom::Given => format!(
+                        "and -depth {} {} is ignored: use DMIN and DMAX in the depth formula",
+                        number(given.0, 4),
+                        number(given.1, 4)
+                    ),
+                    RangeFrom::ReadBack | RangeFrom::Viewer => {
+                        "instead of using DMIN and DMAX in the depth formula".to_owned()
+                    }
+                }
             ),
             Self::DepthRange {
                 white_t,
                 black_t,
                 given,
                 per_image: None,
-            } => format!(
-                "the depth image is drawn with white at t = {} and black at t = {}, not over \
-                 -depth {} {}: check how DMIN and DMAX are read and used",
-                number(*white_t, 4),
-                number(*black_t, 4),
-                number(given.0, 4),
-                number(given.1, 4)
-            ),
+                from,
+            } => {
+                let drawn = format!(
+                    "the depth image is drawn with white at t = {} and black at t = {}",
+                    number(*white_t, 4),
+                    number(*black_t, 4)
+                );
+                match from {
+                    RangeFrom::Given => format!(
+                        "{drawn}, not over -depth {} {}: check how DMIN and DMAX are read and \
+                         used in the depth formula",
+                        number(given.0, 4),
+                        number(given.1, 4)
+                    ),
+                    RangeFrom::ReadBack => format!(
+                        "{drawn}: if your program was given other values of DMIN and DMAX, \
+                         check how they are read and used in the depth formula"
+                    ),
+                    RangeFrom::Viewer => format!(
+                        "{drawn}, not over the viewer's depth range {} … {}: set the depth \
+                         range to theirs to judge it under its own",
+                        number(given.0, 4),
+                        number(given.1, 4)
+                    ),
+                }
+            }
             Self::DepthQuantity { quantity } => format!(
-                "the depth image maps {} of each hit, not its t along the ray",
+                "the depth image maps {} of each hit, not its t along the ray: put the hit's t \
+                 in the depth formula",
                 quantity_name(*quantity)
             ),
             Self::DepthOutside { bytes: b } => format!(
-                "depth outside the range is drawn {} instead of clamped to white or black",
+                "depth outside the range is drawn {} instead of clamped to white or black: \
+                 clamp v to 0 … 1 in the depth formula",
                 bytes(*b)
             ),
-            Self::DepthNoHit { bytes: b } => format!(
-                "where no ray hits, the depth image is {} instead of black",
+            Self::DepthNoHit {
+                bytes: b,
+                scene_background,
+            } if b == scene_background => format!(
+                "where no ray hits, the depth image is {}, your scene's background colour, \
+                 instead of black: the depth image starts filled with the background; fill it \
+                 black (0 0 0) instead",
+                bytes(*b)
+            ),
+            Self::DepthNoHit { bytes: b, .. } => format!(
+                "where no ray hits, the depth image is {} instead of black: write 0 0 0 to the \
+                 depth image where no ray hits",
                 bytes(*b)
             ),
         }
+    }
+
+    /// The statement with the depth range it speaks of said as chosen by `from`.
+    #[must_use]
+    pub fn with_range_from(self, from: RangeFrom) -> Self {
+        match self {
+            Self::DepthRange {
+                white_t,
+                black_t,
+                given,
+                per_image,
+                ..
+            } => Self::DepthRange {
+                white_t,
+                black_t,
+                given,
+                per_image,
+                from,
+            },
+            other => other,
+        }
+    }
+}
+
+/// How the picture moves when each ray starts at `offset_px` in its pixel instead of its centre:
+/// a feature the exact picture draws at pixel x is drawn at x + ½ − offset (`0.3 px right and
+/// 0.2 px up`; an axis that does not move is left out).
+fn shift_words(offset_px: DVec2) -> String {
+    let moved = DVec2::splat(0.5) - offset_px;
+    let along = |amount: f64, positive: &str, negative: &str| {
+        let shown = number(amount.abs(), 3);
+        (shown != "0").then(|| {
+            let unit = if shown == "1" { "pixel" } else { "pixels" };
+            format!(
+                "{shown} {unit} {}",
+                if amount > 0.0 { positive } else { negative }
+            )
+        })
+    };
+    let parts: Vec<String> = [
+        along(moved.x, "right", "left"),
+        along(moved.y, "up", "down"),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
+    if parts.is_empty() {
+        "by less than a thousandth of a pixel".to_owned()
+    } else {
+        parts.join(" and ")
+    }
+}
+
+/// What a swapped sampling does to the picture, by the signs of the swapped axes.
+fn swapped_picture(relative: &DMat2) -> &'static str {
+    match (relative.y_axis.x > 0.0, relative.x_axis.y > 0.0) {
+        (true, true) => "mirrored across its diagonal from the lower left to the upper right",
+        (false, false) => "mirrored across its diagonal from the upper left to the lower right",
+        _ => "turned a quarter",
     }
 }

@@ -12,7 +12,7 @@
 //! least a tenth on its own; the pixels they leave are counted as unexplained.
 
 use super::describe::{describe, rebuild};
-use super::deviation::Deviation;
+use super::deviation::{Deviation, RangeFrom};
 use super::fit::fit;
 use super::fit::score::{Scorer, Theirs, Unexplained};
 use super::mistake::{Mistake, MistakeSet};
@@ -112,12 +112,42 @@ impl Diagnosis {
         }
     }
 
+    /// The model of their program the answer states, in full or in part (`None` when it states
+    /// nothing).
+    pub fn stated_model(&self) -> Option<&Model> {
+        match self.verdict {
+            Verdict::Explained | Verdict::Ambiguous(_) | Verdict::Partial => Some(&self.model),
+            Verdict::Same | Verdict::Unexplained => None,
+        }
+    }
+
     /// The alternatives of a near tie (each the part where the rivals differ).
     pub fn alternatives(&self) -> &[Vec<Deviation>] {
         match &self.verdict {
             Verdict::Ambiguous(alternatives) => alternatives,
             _ => &[],
         }
+    }
+
+    /// The answer with its depth-range statements said as chosen by `from` (who chose the range
+    /// the depth image was judged under).
+    #[must_use]
+    pub fn with_range_from(mut self, from: RangeFrom) -> Self {
+        let said = |list: &mut Vec<Deviation>| {
+            for statement in list.iter_mut() {
+                *statement = statement.with_range_from(from);
+            }
+        };
+        said(&mut self.statements);
+        for list in &mut self.same_pixels {
+            said(list);
+        }
+        if let Verdict::Ambiguous(alternatives) = &mut self.verdict {
+            for list in alternatives {
+                said(list);
+            }
+        }
+        self
     }
 
     /// The differing pixels no statement accounts for: all of them when nothing is stated.

@@ -12,8 +12,12 @@ use image::RgbImage;
 
 use super::describe::rebuild;
 use super::fit::score::Scorer;
-use super::model::Quantity;
-use super::{Deviation, Diagnosis, Difference, Theirs, Unexplained, diagnose, infer_depth_range};
+use super::model::{Model, Quantity};
+use super::model_render::{self, depth_pixel, depth_quantity, hit_of_pixel};
+use super::{
+    Deviation, Diagnosis, Difference, RangeFrom, Theirs, Unexplained, diagnose, infer_depth_range,
+};
+use crate::explore::trace::TheirDepth;
 use crate::render::depth_map::DepthRange;
 use crate::render::{Frame, View};
 use crate::scene::Scene;
@@ -101,6 +105,9 @@ pub fn judge(
             }
         }
     }
+    if range.is_none() {
+        diagnosis = diagnosis.with_range_from(RangeFrom::ReadBack);
+    }
     if theirs.depth.is_some() && range.is_some() {
         // The range their depth image was drawn over, as the answer reads it: the one given,
         // unless the answer says another (or a quantity other than t: none to read).
@@ -155,6 +162,44 @@ pub fn explained_by_each(
             }
         })
         .collect()
+}
+
+/// What their program drew at pixel (`x`, `y_up`) of their depth image, whose grey there is
+/// `their_grey`, as `model` (an answer's model of their program, [`Diagnosis::stated_model`])
+/// says: their no-hit grey, a hit outside their range, or a hit over their range;
+/// [`TheirDepth::Unexplained`] where the model draws that pixel otherwise. `None` when their
+/// depth is not of t.
+pub fn their_depth_at(
+    scene: &Scene,
+    view: &View,
+    model: &Model,
+    (x, y_up): (u32, u32),
+    their_grey: u8,
+) -> Option<TheirDepth> {
+    if model.depth.quantity != Quantity::T || x >= view.width_px || y_up >= view.height_px {
+        return None;
+    }
+    let drawn = hit_of_pixel(scene, view, model, x, y_up);
+    let t = drawn.map_or(f64::INFINITY, |(t, _)| t);
+    let q = depth_quantity(
+        view,
+        &model_render::Frame::of(view),
+        model,
+        t,
+        x,
+        view.height_px - 1 - y_up,
+    );
+    if depth_pixel(model, q)[0] != their_grey {
+        return Some(TheirDepth::Unexplained);
+    }
+    let (white_t, black_t) = model.depth.white_black_t();
+    Some(match drawn {
+        None => TheirDepth::NoHit,
+        Some(_) if !(0.0..=1.0).contains(&model.depth.value(q)) => {
+            TheirDepth::Outside { white_t, black_t }
+        }
+        Some(_) => TheirDepth::Hit { white_t, black_t },
+    })
 }
 
 /// The depth range a statement of the answer names (a range of t, one for all images).

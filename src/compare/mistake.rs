@@ -122,63 +122,78 @@ impl Mistake {
     pub fn advice(self) -> &'static str {
         match self {
             Self::PixelCorners => {
-                "rays pass through pixel corners x/W instead of centres (x + ½)/W: the picture \
-                 is shifted half a pixel down and left; add ½ to x and y"
+                "rays pass through pixel corners x/W instead of centres (x + ½)/W, so the \
+                 picture is shifted half a pixel right and up: add ½ to x and y before \
+                 dividing, in the point you give generateRay"
             }
             Self::NoSquareRoot => {
-                "t = w − (r² − d²) instead of w − √(r² − d²): the depth is wrong where spheres \
-                 are hit; check the discriminant's square root"
+                "t = w − (r² − d²) instead of w − √(r² − d²), so the depth is wrong where a \
+                 sphere is hit (and where spheres overlap, the nearer may lose): take the \
+                 square root of the discriminant in Sphere::intersect"
             }
             Self::TminZero => {
-                "tmin is 0 instead of −∞: what lies behind the camera centre is lost or seen \
-                 from inside; the course's orthographic rays take every t"
+                "tmin is 0 instead of −∞, so what lies behind the camera centre is lost, and a \
+                 sphere around it is seen from inside (its far root): the orthographic camera's \
+                 tmin is −∞ (-INFINITY), give that to Group::intersect"
             }
             Self::TminMinusOne => {
-                "tmin is −1 (as -FP_INFINITE gives, the constant 1 negated) instead of −∞: a \
-                 sphere whose near root lies more than 1 behind the camera centre is lost"
+                "tmin is −1 (as -FP_INFINITE gives, the constant 1 negated) instead of −∞, so a \
+                 sphere whose near root lies more than 1 behind the camera centre is lost: give \
+                 -INFINITY (or -FLT_MAX) as the orthographic camera's tmin"
             }
             Self::FarRoot => {
-                "the larger root is taken: the back of each sphere is seen; take the smaller \
-                 root"
+                "the larger root is taken, so the back of each sphere is seen and every hit is \
+                 farther than it should be: in Sphere::intersect keep the smaller root, \
+                 t = −b − √disc"
             }
             Self::Stretched => {
                 "a non-square image is stretched over the whole square screen instead of \
-                 cropped from its middle: use one pixel size, size/max(W, H), for both axes"
+                 cropped from its middle, so spheres are drawn as ellipses, longer along the \
+                 image's longer side: in generateRay use one pixel size, size/max(W, H), for \
+                 both axes"
             }
             Self::FlippedVertically => {
                 "the picture is upside down: rows are written top row first while the file \
-                 says bottom row first (or the screen's up is reversed)"
+                 says bottom row first (or the screen's up is reversed): SetPixel(x, y) with \
+                 y = 0 the bottom row, and up = horizontal × direction"
             }
             Self::DepthReversed => {
                 "near is black and far is white: the grey is (t − DMIN)/(DMAX − DMIN) instead \
-                 of (DMAX − t)/(DMAX − DMIN)"
+                 of (DMAX − t)/(DMAX − DMIN); swap them in the depth formula"
             }
             Self::DepthNoClamp => {
-                "depth outside the range wraps around ((v·255) mod 256) instead of clamping: \
-                 clamp v to 0 … 1 before making a byte"
+                "depth outside the range wraps around ((v·255) mod 256) instead of clamping, so \
+                 what lies beyond DMIN or DMAX is striped: clamp v to 0 … 1 in the depth \
+                 formula before making a byte"
             }
             Self::DepthOutsideBlack => {
-                "depth outside the range is drawn black instead of clamped: what is nearer than \
-                 DMIN should be white"
+                "depth outside the range is drawn black instead of clamped, so what is nearer \
+                 than DMIN is black where it should be white: clamp v to 0 … 1 in the depth \
+                 formula instead of skipping it"
             }
             Self::Rounded => {
-                "8-bit values are rounded instead of truncated: the course writes (int)(v·255)"
+                "8-bit values are rounded instead of truncated, so some are one level brighter: \
+                 the course writes (int)(v·255), without adding ½"
             }
             Self::LastWins => {
-                "on an exact tie of t the later sphere wins instead of the earlier: replace \
-                 the hit only when t is strictly smaller"
+                "on an exact tie of t the later sphere wins instead of the earlier: in the \
+                 group's loop replace the hit only when t is strictly smaller"
             }
             Self::Mirrored => {
                 "the picture is mirrored left to right: the horizontal is up × direction \
-                 instead of direction × up"
+                 instead of direction × up; swap the cross product's operands in the camera"
             }
             Self::RawUp => {
                 "the camera's up is used as the screen's vertical as written, neither made \
-                 perpendicular to the direction nor unit: the picture is stretched or sheared"
+                 perpendicular to the direction nor unit, so the picture's height is divided by \
+                 the length of up across the direction (and, where up leans along the \
+                 direction, depth ramps up the image): in the camera take horizontal = \
+                 normalize(direction × up), then up = horizontal × direction"
             }
             Self::UnnormalizedDirection => {
                 "t is measured along the direction as written, not the unit direction (or the \
-                 depth range is scaled the same way): normalise the direction"
+                 depth range is scaled the same way), so every t is divided by the direction's \
+                 length: normalise the direction in the camera's constructor"
             }
         }
     }

@@ -29,7 +29,7 @@ pub mod picture;
 pub mod their_image;
 
 pub use depth_range::infer_depth_range;
-pub use deviation::Deviation;
+pub use deviation::{Deviation, RangeFrom};
 pub use diagnosis::{Diagnosis, Verdict, diagnose};
 pub use difference::Difference;
 pub use fit::score::{Theirs, Unexplained};

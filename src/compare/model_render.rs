@@ -232,6 +232,29 @@ pub fn render_hits_every(scene: &Scene, view: &View, model: &Model, stride: u32)
     }
 }
 
+/// The hit `model` draws at pixel `(x, y_up)` of `view` (t with the model's ramp, and the sphere),
+/// or `None` where its ray hits nothing or the pixel is not drawn: one pixel, every sphere tried.
+pub fn hit_of_pixel(
+    scene: &Scene,
+    view: &View,
+    model: &Model,
+    x: u32,
+    y_up: u32,
+) -> Option<(f64, u32)> {
+    if model
+        .drawn_px
+        .is_some_and(|(columns, rows)| x >= columns || y_up >= rows)
+    {
+        return None;
+    }
+    let discs = discs(scene, view);
+    let every: Vec<u32> = (0..discs.len() as u32).collect();
+    let screen = model
+        .pixels
+        .screen_of(DVec2::new(f64::from(x), f64::from(y_up)));
+    hit_at(model, &discs, &every, screen, ramp_at(model, screen))
+}
+
 /// The colour image `model` draws of `hits`: each sphere's colour, else the background.
 pub fn colour_image(scene: &Scene, hits: &Hits, model: &Model) -> RgbImage {
     let colours: Vec<[u8; 3]> = scene

@@ -215,6 +215,12 @@ impl PixelTrace {
             out,
             "tmin: −∞ (orthographic: the near root counts wherever the disc covers the pixel)"
         );
+        let _ = writeln!(
+            out,
+            "each sphere (centre c, radius r): f = origin − c; the textbook's t² + b·t + c' = 0 \
+             has b = 2 f·d and c' = f·f − r², so Δ/4 = (f·d)² − c' = r² − |f − (f·d)d|² and the \
+             roots are t = −f·d ∓ √(Δ/4)"
+        );
         for sphere in &self.spheres {
             let _ = write!(
                 out,
@@ -303,25 +309,88 @@ impl PixelTrace {
         format!("theirs, colour: {r} {g} {b} (exact {er} {eg} {eb})\n")
     }
 
-    /// Their depth grey beside the exact one, and the t it stands for over the trace's range, as
-    /// a line.
-    pub fn their_depth_line(&self, grey: u8) -> String {
+    /// Their depth grey beside the exact one, and what it stands for: with `drew` (what the
+    /// fitted model of their program draws at this pixel), their no-hit grey, a hit outside
+    /// their range, or the t their grey stands for over their own range; without, the t it stands
+    /// for over the trace's range, as a line.
+    pub fn their_depth_line(&self, grey: u8, drew: Option<TheirDepth>) -> String {
         let exact = self
             .grey_byte()
             .map_or_else(|| "unknown".to_owned(), |byte| byte.to_string());
         let head = format!("theirs, depth: grey {grey} (exact {exact})");
+        match drew {
+            Some(TheirDepth::NoHit) => {
+                return format!(
+                    "{head}: {grey} is your program's no-hit grey: your program hit nothing here\n"
+                );
+            }
+            Some(TheirDepth::Outside { white_t, black_t }) => {
+                return format!(
+                    "{head}: your program's hit here lies outside your range (white at t = \
+                     {white_t}, black at t = {black_t}), drawn {grey}\n"
+                );
+            }
+            Some(TheirDepth::Hit { white_t, black_t }) if grey != 0 && grey != 255 => {
+                // Their grey is floor(255·(black − t)/(black − white)).
+                let t_at = |level: f64| black_t - level / 255.0 * (black_t - white_t);
+                let (a, b) = (t_at(f64::from(grey)), t_at(f64::from(grey) + 1.0));
+                return format!(
+                    "{head}: over your range (white at t = {white_t}, black at t = {black_t}) \
+                     your grey stands for t in [{}, {})\n",
+                    a.min(b),
+                    a.max(b)
+                );
+            }
+            Some(TheirDepth::Hit { white_t, black_t }) => {
+                return format!(
+                    "{head}: grey {grey} is an end of your range (white at t = {white_t}, black \
+                     at t = {black_t}), or beyond it\n"
+                );
+            }
+            Some(TheirDepth::Unexplained) | None => {}
+        }
+        let unexplained = if drew == Some(TheirDepth::Unexplained) {
+            " (a pixel the answer does not explain)"
+        } else {
+            ""
+        };
         match self
             .depth_range
             .map(|range| (range, t_of_grey(range, grey)))
         {
             Some((range, Some((low, high)))) => format!(
-                "{head}: over {} … {} their grey stands for t in [{low}, {high})\n",
+                "{head}: over {} … {} their grey stands for t in [{low}, {high}){unexplained}\n",
                 range.min_t, range.max_t
             ),
-            Some((_, None)) => {
-                format!("{head}: grey {grey} is the range's end, or beyond it (or no hit, for 0)\n")
-            }
-            None => format!("{head}\n"),
+            Some((_, None)) => format!(
+                "{head}: grey {grey} is the range's end, or beyond it (or no hit, for \
+                 0){unexplained}\n"
+            ),
+            None => format!("{head}{unexplained}\n"),
         }
     }
+}
+
+/// What their program drew at a traced pixel's depth, as the fitted model of it says: what the
+/// trace says their grey stands for.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum TheirDepth {
+    /// Their program's ray hits nothing here: their grey is its no-hit grey.
+    NoHit,
+    /// Their program's hit lies outside its own range (white at `white_t`, black at `black_t`).
+    Outside {
+        /// The t their program draws white.
+        white_t: f64,
+        /// The t their program draws black.
+        black_t: f64,
+    },
+    /// Their program drew a hit's t over its own range.
+    Hit {
+        /// The t their program draws white.
+        white_t: f64,
+        /// The t their program draws black.
+        black_t: f64,
+    },
+    /// The fitted model draws this pixel otherwise than their image: nothing is known of it.
+    Unexplained,
 }

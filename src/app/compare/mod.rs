@@ -29,6 +29,7 @@ pub(crate) use pixels::{OFF_LEVELS, REFERENCE_SAMPLES};
 use super::background::{Poll, Task};
 use super::reload::{FileWatcher, WatchState};
 use super::status::{Status, say};
+use crate::compare::judge::their_depth_at;
 use crate::compare::picture::{heat_map, heat_map_highlighted, heat_map_marked};
 use crate::compare::their_image::{TheirImageError, read_their_image};
 use crate::explore::trace::PixelTrace;
@@ -254,7 +255,7 @@ impl CompareState {
 
     /// Their pixel beside a trace of it, while their image is compared at the traced size: its
     /// value and, for a depth image, the t its grey stands for.
-    pub(crate) fn their_pixel(&self, traced: &PixelTrace) -> Option<String> {
+    pub(crate) fn their_pixel(&self, scene: &Scene, traced: &PixelTrace) -> Option<String> {
         let pixels = &self.current.as_ref()?.pixels;
         if !matches!(pixels.source, CompareSource::File(_))
             || pixels.theirs.dimensions() != traced.size_px
@@ -265,11 +266,22 @@ impl CompareState {
         let pixel = pixels.theirs.get_pixel(traced.x_px, row).0;
         Some(match pixels.kind {
             ImageKind::Colour => traced.their_colour_line(pixel),
-            ImageKind::Depth => PixelTrace {
-                depth_range: Some(pixels.view.depth_range),
-                ..traced.clone()
+            ImageKind::Depth => {
+                let drew = pixels.model.as_ref().and_then(|model| {
+                    their_depth_at(
+                        scene,
+                        &pixels.view,
+                        model,
+                        (traced.x_px, traced.y_up_px),
+                        pixel[0],
+                    )
+                });
+                PixelTrace {
+                    depth_range: Some(pixels.view.depth_range),
+                    ..traced.clone()
+                }
+                .their_depth_line(pixel[0], drew)
             }
-            .their_depth_line(pixel[0]),
         })
     }
 

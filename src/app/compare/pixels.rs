@@ -8,7 +8,8 @@ use image::RgbImage;
 use web_time::Instant;
 
 use crate::compare::judge::{NoDepthRange, explained_by_each, judge};
-use crate::compare::{Deviation, Difference, Theirs};
+use crate::compare::model::Model;
+use crate::compare::{Deviation, Difference, RangeFrom, Theirs};
 use crate::render::depth_map::DepthRange;
 use crate::render::sampling::Sampling;
 use crate::render::{Quality, View, render_with};
@@ -81,6 +82,9 @@ pub struct ComparisonPixels {
     pub exact: RgbImage,
     /// How they differ.
     pub difference: Difference,
+    /// The model of their program the answer states (`None`: it states nothing): what the trace
+    /// asks what their program drew at a pixel.
+    pub model: Option<Model>,
     /// The statements that explain the difference (empty: none does, or none was looked for).
     pub statements: Vec<Deviation>,
     /// The alternatives of a near tie, each a `+`-joined list of statements (empty: no tie).
@@ -163,7 +167,11 @@ pub fn compare_file(
             ),
         },
     };
-    let judged = judged.map_err(|error| error.to_string())?;
+    let mut judged = judged.map_err(|error| error.to_string())?;
+    if range_source != RangeSource::ReadBack {
+        // The range judged under is the viewer's, never one their program was given.
+        judged.diagnosis = judged.diagnosis.with_range_from(RangeFrom::Viewer);
+    }
     let diagnosis = &judged.diagnosis;
     let (exact, difference, unexplained) = match kind {
         ImageKind::Colour => (
@@ -205,6 +213,7 @@ pub fn compare_file(
         view: judged.view,
         exact,
         difference,
+        model: diagnosis.stated_model().copied(),
         statements: diagnosis.stated().to_vec(),
         alternatives: diagnosis
             .alternatives()
@@ -276,6 +285,7 @@ pub fn compare_quality(
         theirs,
         exact,
         difference,
+        model: None,
         statements: Vec::new(),
         alternatives: Vec::new(),
         partial: Vec::new(),
