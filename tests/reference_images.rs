@@ -161,7 +161,7 @@ fn the_pixel_trace_agrees_with_the_high_precision_oracle_and_the_files_written()
             }
             // Its colour and grey bytes are those of the files the course's command writes.
             let row = 199 - y_up;
-            let bytes: Vec<u8> = traced_after(&trace, "colour:", "floor(255·c) = ")
+            let bytes: Vec<u8> = traced_after(&trace, "colour:", "floor(255·colour) = ")
                 .split(' ')
                 .map(|b| b.parse().unwrap())
                 .collect();
@@ -229,7 +229,7 @@ fn the_pixel_trace_beside_their_image_gives_their_pixel_and_the_t_their_grey_sta
     let lines = document["trace"].as_array().expect("a trace array");
     assert_eq!(
         lines[0],
-        "pixel: x 100 y 100 of 200×200 (y from the bottom; row 99 from the top)"
+        "pixel: x 100 y 100 of W×H = 200×200 (y from the bottom; row 99 from the top)"
     );
     assert!(
         lines
@@ -252,4 +252,97 @@ fn the_pixel_trace_beside_their_image_gives_their_pixel_and_the_t_their_grey_sta
     assert_eq!(output.status.code(), Some(2), "{error}");
     assert!(error.contains("outside the 200×100 image"), "{error}");
     assert!(!folder.path().join("o.tga").exists());
+}
+
+/// Where their program hit nothing and drew its no-hit grey (here the scene's background, 76, as
+/// a depth image filled with the background has it), the trace says so, never a t; where it hit,
+/// their grey's t over their range (the answer's) holds the exact t; and every symbol the trace
+/// prints is defined in it.
+#[test]
+fn the_pixel_trace_says_where_their_program_hit_nothing() {
+    let folder = tempfile::tempdir().unwrap();
+    // The course's depth image of scene1_04 (-depth 12 17), its no-hit pixels the background's
+    // grey: what the exact depth image has as 0 where nothing is hit becomes 76.
+    let mut depth = image::open(project_path("tests/reference/depth1_04.png"))
+        .unwrap()
+        .to_rgb8();
+    let exact = render_exact("scene1_04", 12.0, 17.0);
+    for (x, row, pixel) in depth.enumerate_pixels_mut() {
+        if !exact.t[(row * 200 + x) as usize].is_finite() {
+            *pixel = image::Rgb([76; 3]);
+        }
+    }
+    depth.save(folder.path().join("theirs.png")).unwrap();
+    let trace = |x: &str, y: &str| {
+        let output = Command::new(env!("CARGO_BIN_EXE_raytracer"))
+            .arg("-input")
+            .arg(project_path("scenes/scene1_04.txt"))
+            .args(["-compare_depth", "12", "17", "theirs.png", "-trace", x, y])
+            .current_dir(folder.path())
+            .output()
+            .unwrap();
+        String::from_utf8(output.stdout).unwrap()
+    };
+    let corner = trace("2", "2");
+    assert!(
+        corner.contains("diagnosis: depth-no-hit 76 76 76: "),
+        "{corner}"
+    );
+    assert!(
+        corner.contains("your scene's background colour"),
+        "{corner}"
+    );
+    let theirs = corner
+        .lines()
+        .find(|l| l.starts_with("theirs, depth:"))
+        .unwrap();
+    assert_eq!(
+        theirs,
+        "theirs, depth: grey 76 (exact 0): 76 is your program's no-hit grey: your program hit \
+         nothing here"
+    );
+    let centre = trace("100", "100");
+    let t: f64 = traced_after(&centre, "hit:", " at t = ")
+        .split(' ')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(
+        centre.contains("over your range (white at t = 12, black at t = 17)"),
+        "{centre}"
+    );
+    let interval = traced_after(&centre, "theirs, depth:", "stands for t in [");
+    let (low, high) = interval.trim_end_matches(')').split_once(", ").unwrap();
+    let (low, high): (f64, f64) = (low.parse().unwrap(), high.parse().unwrap());
+    assert!(low <= t && t < high, "{t} in [{low}, {high}) of\n{centre}");
+    // Each symbol of the trace's formulas, defined where it first appears.
+    for definition in [
+        "W×H = 200×200",
+        "pixel = size / max(W, H)",
+        "u = (x + 0.5 − W/2)·pixel",
+        "d = normalize(direction)",
+        "horizontal = normalize(d × up)",
+        "screen_up = horizontal × d",
+        "origin = camera centre + u·horizontal + v·screen_up",
+        "(centre C, radius r): f = origin − C",
+        "b = 2 f·d and c = f·f − r²",
+        "Δ/4 = (f·d)² − c",
+        "t0, t1 = −f·d ∓ √(Δ/4)",
+        "-depth DMIN DMAX = 12 17",
+    ] {
+        assert!(centre.contains(definition), "{definition} in\n{centre}");
+    }
+}
+
+/// The exact frame of a course scene at 200×200 over `min_t` … `max_t`.
+fn render_exact(name: &str, min_t: f64, max_t: f64) -> raytracer::render::Frame {
+    let scene = raytracer::scene::load_scene(&project_path(&format!("scenes/{name}.txt"))).unwrap();
+    let view = raytracer::render::View::of_camera(
+        &scene.camera,
+        200,
+        200,
+        raytracer::render::depth_map::DepthRange::new(min_t, max_t),
+    );
+    raytracer::render::render(&scene, &view).unwrap()
 }

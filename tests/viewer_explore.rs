@@ -377,7 +377,7 @@ fn the_probe_reports_the_sphere_under_the_pointer_a_click_pins_it_and_trace_show
     for expected in [
         format!("pixel: x {} y {} of", pinned.x_px, pinned.y_up_px),
         format!("hit: sphere {sphere} at t = "),
-        format!("floor(255·c) = {r} {g} {b}"),
+        format!("floor(255·colour) = {r} {g} {b}"),
     ] {
         assert!(
             harness.query_by_label_contains(&expected).is_some(),

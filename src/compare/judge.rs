@@ -192,7 +192,10 @@ pub fn their_depth_at(
     if depth_pixel(model, q)[0] != their_grey {
         return Some(TheirDepth::Unexplained);
     }
+    // As the answer says them: to nine decimals.
+    let clean = |t: f64| (t * 1e9).round() / 1e9;
     let (white_t, black_t) = model.depth.white_black_t();
+    let (white_t, black_t) = (clean(white_t), clean(black_t));
     Some(match drawn {
         None => TheirDepth::NoHit,
         Some(_) if !(0.0..=1.0).contains(&model.depth.value(q)) => {

@@ -61,7 +61,7 @@ pub struct PixelTrace {
     pub hit: Option<(usize, f64)>,
     /// The colour seen (the sphere's diffuse colour, or the background).
     pub colour: [f32; 3],
-    /// Its bytes, `floor(255·c)` per channel.
+    /// Its bytes, `floor(255·colour)` per channel.
     pub colour_bytes: [u8; 3],
     /// The depth range of the depth image, if known.
     pub depth_range: Option<DepthRange>,
@@ -185,14 +185,14 @@ impl PixelTrace {
         let (u, v) = self.screen_uv;
         let _ = writeln!(
             out,
-            "pixel: x {} y {} of {width}×{height} (y from the bottom; row {} from the top)",
+            "pixel: x {} y {} of W×H = {width}×{height} (y from the bottom; row {} from the top)",
             self.x_px,
             self.y_up_px,
             height - 1 - self.y_up_px
         );
         let _ = writeln!(
             out,
-            "pixel size: size / max(W, H) = {}",
+            "pixel size: pixel = size / max(W, H) = {} (size: the camera's)",
             self.pixel_size_world
         );
         let _ = writeln!(
@@ -201,14 +201,15 @@ impl PixelTrace {
         );
         let _ = writeln!(
             out,
-            "basis: d = {}, horizontal = {}, screen_up = {}",
+            "basis: d = normalize(direction) = {}, horizontal = normalize(d × up) = {}, \
+             screen_up = horizontal × d = {}",
             vector(self.basis.direction),
             vector(self.basis.horizontal),
             vector(self.basis.screen_up)
         );
         let _ = writeln!(
             out,
-            "ray: origin = centre + u·horizontal + v·screen_up = {}, direction = d",
+            "ray: origin = camera centre + u·horizontal + v·screen_up = {}, direction = d",
             vector(self.origin_world)
         );
         let _ = writeln!(
@@ -217,9 +218,9 @@ impl PixelTrace {
         );
         let _ = writeln!(
             out,
-            "each sphere (centre c, radius r): f = origin − c; the textbook's t² + b·t + c' = 0 \
-             has b = 2 f·d and c' = f·f − r², so Δ/4 = (f·d)² − c' = r² − |f − (f·d)d|² and the \
-             roots are t = −f·d ∓ √(Δ/4)"
+            "each sphere (centre C, radius r): f = origin − C; the textbook's a·t² + b·t + c = 0 has \
+             a = d·d = 1, b = 2 f·d and c = f·f − r², so Δ/4 = (f·d)² − c = r² − |f − (f·d)d|² and the roots \
+             are t0, t1 = −f·d ∓ √(Δ/4)"
         );
         for sphere in &self.spheres {
             let _ = write!(
@@ -259,15 +260,15 @@ impl PixelTrace {
             );
             let _ = writeln!(
                 out,
-                "colour: its diffuse ({r}, {g}, {b}) → floor(255·c) = {rb} {gb} {bb}"
+                "colour: its diffuse colour ({r}, {g}, {b}) → floor(255·colour) = {rb} {gb} {bb}"
             );
             match (self.depth_range, self.grey(), self.grey_byte()) {
                 (Some(range), Some(grey), Some(byte)) => {
                     let _ = writeln!(
                         out,
-                        "depth: grey = clamp((DMAX − t)/(DMAX − DMIN), 0, 1) = ({} − {t})/({} \
-                         − {}) → {grey} → floor(255·grey) = {byte}",
-                        range.max_t, range.max_t, range.min_t,
+                        "depth: over -depth DMIN DMAX = {} {}, grey = clamp((DMAX − t)/(DMAX − DMIN), 0, \
+                         1) = ({} − {t})/({} − {}) → {grey} → floor(255·grey) = {byte}",
+                        range.min_t, range.max_t, range.max_t, range.max_t, range.min_t,
                     );
                 }
                 _ => {
@@ -281,7 +282,7 @@ impl PixelTrace {
             let _ = writeln!(out, "hit: none");
             let _ = writeln!(
                 out,
-                "colour: the background ({r}, {g}, {b}) → floor(255·c) = {rb} {gb} {bb}"
+                "colour: the background colour ({r}, {g}, {b}) → floor(255·colour) = {rb} {gb} {bb}"
             );
             let _ = writeln!(out, "depth: no hit → grey 0");
         }
