@@ -223,6 +223,21 @@ fn a_depth_image_is_judged_under_the_range_read_from_it_then_follows_the_depth_r
         "judged under 5 … 12 (the depth range above)"
     ));
     assert!(label_shown(&harness, "their range looks like 6 … 10:"));
+    // The range judged under is the viewer's: the statement says so, and never blames their
+    // code's DMIN and DMAX for it.
+    let statements = harness.state().comparison().unwrap().statements.clone();
+    let range = statements
+        .iter()
+        .find(|s| s.word() == "depth-range")
+        .expect("a depth-range statement");
+    let sentence = range.explanation();
+    assert!(
+        sentence.contains("not over the viewer's depth range 5 … 12"),
+        "{sentence}"
+    );
+    assert!(label_shown(&harness, &sentence));
+    assert!(!label_shown(&harness, "check how DMIN"));
+    assert!(!label_shown(&harness, "-depth 5 12"));
     click(&mut harness, "use it");
     harness.run_steps(2);
     wait_for_comparison(&mut harness);

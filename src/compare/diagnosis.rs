@@ -18,6 +18,7 @@ use super::fit::score::{Scorer, Theirs, Unexplained};
 use super::mistake::{Mistake, MistakeSet};
 use super::model::Model;
 use super::needed::{NEEDED_SHARE, needed, per_image, rounded};
+use super::shorter::shorter_answers;
 use crate::render::View;
 use crate::scene::Scene;
 
@@ -250,9 +251,20 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
     // must explain to be needed.
     let fewest = options.iter().map(|(_, left)| *left).min().unwrap_or(0);
     let needed_px = (NEEDED_SHARE * differing_exact as f64).max(1.0) as usize;
-    options.sort_by_key(|(statements, left)| {
+    let order = |(statements, left): &(Vec<Deviation>, usize)| {
         (*left > fewest + needed_px, complexity(statements), *left)
-    });
+    };
+    options.sort_by_key(order);
+    // Never a longer story while a shorter one draws their pixels as well: one or two known
+    // mistakes are tried against the answer's length.
+    if let Some((best, best_left)) = options.first().cloned() {
+        for shorter in shorter_answers(&mut scorer, &best, best_left, near, differing_exact) {
+            if !options.iter().any(|(s, _)| *s == shorter.0) {
+                options.push(shorter);
+            }
+        }
+        options.sort_by_key(order);
+    }
     let (statements, left) = options.remove(0);
     // Where rays start as each model seen has it, with the rest of the answer: a symmetric
     // scene's other maps are rivals of the answer itself.

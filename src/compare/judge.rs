@@ -87,8 +87,9 @@ pub fn judge(
     let mut diagnosis = diagnose(scene, &view, theirs);
     if theirs.depth.is_some() && range.is_none() {
         // Read back with both images, the range their program used may differ from the one the
-        // depth image alone suggested: the answer's own is kept where the exact images under it
-        // differ from theirs in fewer pixels.
+        // depth image alone suggested: the answer's own is kept where the answer under it
+        // explains more of their pixels, or as much with fewer statements, or as much as
+        // briefly while the exact images under it differ from theirs in fewer pixels.
         if let Some(fitted) = stated_range(&diagnosis) {
             let refitted = diagnose(
                 scene,
@@ -98,7 +99,14 @@ pub fn judge(
                 },
                 theirs,
             );
-            if refitted.differing_exact < diagnosis.differing_exact {
+            let key = |answer: &Diagnosis| {
+                (
+                    answer.unexplained_pixels(),
+                    answer.stated().len() + answer.partial().len(),
+                    answer.differing_exact,
+                )
+            };
+            if key(&refitted) < key(&diagnosis) {
                 depth_range_inferred = Some(Some(fitted));
                 view.depth_range = fitted;
                 diagnosis = refitted;

@@ -11,6 +11,7 @@
 //! * [`diagnosis`]: the answer: the statements the images need, and how far they explain them.
 //! * [`judge`]: their images against the exact ones, under a depth range given or read back.
 //! * [`depth_range`]: the depth range a depth image was most likely made over.
+//! * `shorter`: the shortest true story, tried against a longer answer.
 //! * [`sentence`]: what a statement says in words, and what to change in code.
 //! * [`picture`]: the difference picture (theirs, exact, heat map, legend).
 //! * [`their_image`]: reading the image a user compares.
@@ -28,6 +29,7 @@ pub mod model_render;
 pub mod needed;
 pub mod picture;
 pub mod sentence;
+mod shorter;
 pub mod their_image;
 
 pub use depth_range::infer_depth_range;

@@ -1,0 +1,104 @@
+//! The shortest true story: of two answers that draw their pixels equally well, the one with
+//! fewer statements is said. The fit follows the pixels, and on a scene that looks alike under
+//! a mirror or a flip it can settle on a longer story (the far root and no depth test, say, for
+//! a mirrored depth image) that draws their pixels as well as one known mistake does. Here the
+//! answer's own length is challenged: every single known mistake (and, against an answer of three
+//! or more statements, every possible pair) — alone, with the answer's statements about how depth
+//! and colour become bytes, and with a depth map fitted again under it — is scored against their
+//! images; those that leave no more pixels
+//! than the answer (within the near-tie allowance) are offered as answers, and the diagnosis
+//! states the shortest.
+
+use super::describe::{describe, rebuild};
+use super::deviation::Deviation;
+use super::fit::depth::{fit_depth_quickly, fit_depth_untilted};
+use super::fit::score::Scorer;
+use super::mistake::{Mistake, MistakeSet};
+use super::needed::needed;
+
+/// Statements of `answer` that say how hits become bytes (the depth map, the colour's bytes),
+/// kept beside a shorter story of where rays go and which hit is drawn.
+fn byte_statements(answer: &[Deviation]) -> Vec<Deviation> {
+    answer
+        .iter()
+        .copied()
+        .filter(|statement| match statement {
+            Deviation::Word(mistake) => !mistake.changes_hits(),
+            Deviation::Tilt { .. } => false,
+            other => {
+                (!other.is_about_geometry() && other.is_about_depth())
+                    || matches!(other, Deviation::Background { .. })
+            }
+        })
+        .collect()
+}
+
+/// Answers shorter than `answer` (which leaves `left` pixels) made of one or two known mistakes,
+/// alone or with `answer`'s statements about bytes, that leave at most `left + near` pixels: each
+/// pruned to the statements the images need, with the pixels it leaves.
+pub(super) fn shorter_answers(
+    scorer: &mut Scorer<'_>,
+    answer: &[Deviation],
+    left: usize,
+    near: usize,
+    differing_exact: usize,
+) -> Vec<(Vec<Deviation>, usize)> {
+    if answer.len() < 2 {
+        return Vec::new();
+    }
+    let view = *scorer.view;
+    let mut sets: Vec<MistakeSet> = Mistake::ALL
+        .iter()
+        .map(|&mistake| MistakeSet::of(&[mistake]))
+        .collect();
+    if answer.len() >= 3 {
+        for (i, &first) in Mistake::ALL.iter().enumerate() {
+            for &second in &Mistake::ALL[i + 1..] {
+                let pair = MistakeSet::of(&[first, second]);
+                if pair.is_possible() {
+                    sets.push(pair);
+                }
+            }
+        }
+    }
+    let bytes = byte_statements(answer);
+    let mut candidates: Vec<Vec<Deviation>> = Vec::new();
+    for set in sets {
+        let words: Vec<Deviation> = set.mistakes().into_iter().map(Deviation::Word).collect();
+        let mut each = vec![words.clone(), [words.clone(), bytes.clone()].concat()];
+        if scorer.theirs.depth.is_some() {
+            // With their depth image: the depth map fitted again under the shorter story (a
+            // mirror can need the range the other way round from the longer one's).
+            let model = rebuild(&view, &words);
+            let fitted = if set.len() == 1 {
+                fit_depth_untilted(scorer, &model)
+            } else {
+                fit_depth_quickly(scorer, &model)
+            };
+            each.push(describe(scorer.scene, &view, &fitted));
+        }
+        for candidate in each {
+            let mut unique: Vec<Deviation> = Vec::new();
+            for statement in candidate {
+                if !unique.contains(&statement) {
+                    unique.push(statement);
+                }
+            }
+            if unique.len() < answer.len() && !candidates.contains(&unique) {
+                candidates.push(unique);
+            }
+        }
+    }
+    let models: Vec<_> = candidates.iter().map(|c| rebuild(&view, c)).collect();
+    let scores = scorer.scores_of(&models);
+    let mut shorter = Vec::new();
+    for (candidate, score) in candidates.into_iter().zip(scores) {
+        if score.is_some_and(|score| score <= left + near) {
+            let pruned = needed(scorer, candidate, differing_exact);
+            if pruned.0.len() < answer.len() && !shorter.iter().any(|(s, _)| *s == pruned.0) {
+                shorter.push(pruned);
+            }
+        }
+    }
+    shorter
+}
