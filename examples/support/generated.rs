@@ -18,6 +18,17 @@ use crate::student::{Draw, Program, draw_program, render};
 /// The image sizes drawn from.
 const SIZES: [(u32, u32); 3] = [(200, 200), (160, 90), (90, 140)];
 
+/// Which of a case's images are compared.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Given {
+    /// The colour and the depth image together.
+    Both,
+    /// The colour image alone.
+    Colour,
+    /// The depth image alone, with its range.
+    Depth,
+}
+
 /// One generated case.
 pub(crate) struct Case {
     pub(crate) seed: u64,
@@ -71,6 +82,12 @@ impl Case {
     /// Diagnoses the case's images: the verdict, the statements said (with values; "one of"
     /// for a near tie), the pixels left unexplained.
     pub(crate) fn diagnose(&self) -> (Verdict, Vec<String>, usize) {
+        self.diagnose_given(Given::Both)
+    }
+
+    /// Diagnoses the case's images `given` (both, or one alone with the range of its command
+    /// line), as [`Self::diagnose`] does.
+    pub(crate) fn diagnose_given(&self, given: Given) -> (Verdict, Vec<String>, usize) {
         let (colour, depth) = self.images();
         let view = View::of_camera(
             &self.scene.camera,
@@ -78,21 +95,19 @@ impl Case {
             self.height,
             DepthRange::new(self.range.0, self.range.1),
         );
-        let answer = diagnose(
-            &self.scene,
-            &view,
-            Theirs {
-                colour: Some(&colour),
-                depth: Some(&depth),
-            },
-        );
+        let theirs = Theirs {
+            colour: (given != Given::Depth).then_some(&colour),
+            depth: (given != Given::Colour).then_some(&depth),
+        };
+        let answer = diagnose(&self.scene, &view, theirs);
+        let images = if given == Given::Both { 2 } else { 1 };
         let names = |list: &[Deviation]| -> Vec<String> {
             list.iter().map(|d| d.word().to_owned()).collect()
         };
         let stated: Vec<String> = [names(answer.stated()), names(answer.partial())].concat();
         let alternatives: Vec<Vec<String>> =
             answer.alternatives().iter().map(|a| names(a)).collect();
-        let pixels = 2 * u64::from(self.width) * u64::from(self.height);
+        let pixels = images * u64::from(self.width) * u64::from(self.height);
         let verdict = judge(
             answer.differing_exact == 0,
             &stated,

@@ -15,8 +15,10 @@ use super::fit::score::Scorer;
 use super::model::{Model, Quantity};
 use super::model_render::{self, depth_pixel, depth_quantity, hit_of_pixel};
 use super::{
-    Deviation, Diagnosis, Difference, RangeFrom, Theirs, Unexplained, diagnose, infer_depth_range,
+    Deviation, Diagnosis, Difference, RangeFrom, Theirs, Unexplained, Verdict, diagnose,
+    infer_depth_range,
 };
+use super::depth_range::range_by_rank;
 use crate::explore::trace::TheirDepth;
 use crate::render::depth_map::DepthRange;
 use crate::render::{Frame, View};
@@ -73,9 +75,18 @@ pub fn judge(
         range.unwrap_or(DepthRange::new(0.0, 1.0)),
     );
     let mut depth_range_inferred = None;
+    // A range read back by fitting the model, and one read by rank (what a mirror or a flip
+    // keeps): the second is tried where the first is missing or its answer is not one brief
+    // statement.
+    let by_rank = match (theirs.depth, range) {
+        (Some(depth), None) => range_by_rank(scene, &view, depth),
+        _ => None,
+    };
     let mut view = match (theirs.depth, range) {
         (Some(depth), None) => {
-            let read = infer_depth_range(scene, &view, depth).ok_or(NoDepthRange)?;
+            let read = infer_depth_range(scene, &view, depth)
+                .or(by_rank)
+                .ok_or(NoDepthRange)?;
             depth_range_inferred = Some(Some(read));
             View {
                 depth_range: read,
@@ -85,6 +96,21 @@ pub fn judge(
         _ => view,
     };
     let mut diagnosis = diagnose(scene, &view, theirs);
+    if let Some(ranked) = by_rank
+        && ranked != view.depth_range
+        && !(diagnosis.verdict == Verdict::Explained && diagnosis.stated().len() <= 1)
+    {
+        let other = View {
+            depth_range: ranked,
+            ..view
+        };
+        let again = diagnose(scene, &other, theirs);
+        if answer_key(&again) < answer_key(&diagnosis) {
+            depth_range_inferred = Some(Some(ranked));
+            view = other;
+            diagnosis = again;
+        }
+    }
     if theirs.depth.is_some() && range.is_none() {
         // Read back with both images, the range their program used may differ from the one the
         // depth image alone suggested: the answer's own is kept where the answer under it
@@ -99,14 +125,7 @@ pub fn judge(
                 },
                 theirs,
             );
-            let key = |answer: &Diagnosis| {
-                (
-                    answer.unexplained_pixels(),
-                    answer.stated().len() + answer.partial().len(),
-                    answer.differing_exact,
-                )
-            };
-            if key(&refitted) < key(&diagnosis) {
+            if answer_key(&refitted) < answer_key(&diagnosis) {
                 depth_range_inferred = Some(Some(fitted));
                 view.depth_range = fitted;
                 diagnosis = refitted;
@@ -136,6 +155,17 @@ pub fn judge(
         exact_colour,
         exact_depth,
     })
+}
+
+/// How good an answer under a range read back is, smaller better: the pixels it leaves
+/// unexplained, then how many statements it makes, then how many pixels the exact images under
+/// that range differ in.
+fn answer_key(answer: &Diagnosis) -> (usize, usize, usize) {
+    (
+        answer.unexplained_pixels(),
+        answer.stated().len() + answer.partial().len(),
+        answer.differing_exact,
+    )
 }
 
 /// For each of `statements` (an answer's, said of `view`), the pixels it explains on its own:

@@ -33,6 +33,24 @@ fn byte_statements(answer: &[Deviation]) -> Vec<Deviation> {
         .collect()
 }
 
+/// Statements of `answer` that say which hit is drawn and are not known mistakes (no depth test,
+/// a tmin with the near root only, a block of the image drawn), kept beside a shorter story of
+/// where rays go.
+fn hit_statements(answer: &[Deviation]) -> Vec<Deviation> {
+    answer
+        .iter()
+        .copied()
+        .filter(|statement| {
+            matches!(
+                statement,
+                Deviation::NoDepthTest { .. }
+                    | Deviation::NearRootOnly { .. }
+                    | Deviation::OnlyBlock { .. }
+            )
+        })
+        .collect()
+}
+
 /// Answers shorter than `answer` (which leaves `left` pixels) made of one or two known mistakes,
 /// alone or with `answer`'s statements about bytes, that leave at most `left + near` pixels: each
 /// pruned to the statements the images need, with the pixels it leaves.
@@ -62,20 +80,28 @@ pub(super) fn shorter_answers(
         }
     }
     let bytes = byte_statements(answer);
+    let rules = hit_statements(answer);
     let mut candidates: Vec<Vec<Deviation>> = Vec::new();
     for set in sets {
         let words: Vec<Deviation> = set.mistakes().into_iter().map(Deviation::Word).collect();
         let mut each = vec![words.clone(), [words.clone(), bytes.clone()].concat()];
         if scorer.theirs.depth.is_some() {
             // With their depth image: the depth map fitted again under the shorter story (a
-            // mirror can need the range the other way round from the longer one's).
-            let model = rebuild(&view, &words);
-            let fitted = if set.len() == 1 {
-                fit_depth_untilted(scorer, &model)
-            } else {
-                fit_depth_quickly(scorer, &model)
-            };
-            each.push(describe(scorer.scene, &view, &fitted));
+            // mirror can need the range the other way round from the longer one's), with the
+            // answer's rule for which hit is drawn or without it.
+            let mut rule_sets = vec![Vec::new()];
+            if !rules.is_empty() {
+                rule_sets.push(rules.clone());
+            }
+            for with_rules in rule_sets {
+                let model = rebuild(&view, &[words.clone(), with_rules].concat());
+                let fitted = if set.len() == 1 {
+                    fit_depth_untilted(scorer, &model)
+                } else {
+                    fit_depth_quickly(scorer, &model)
+                };
+                each.push(describe(scorer.scene, &view, &fitted));
+            }
         }
         for candidate in each {
             let mut unique: Vec<Deviation> = Vec::new();
