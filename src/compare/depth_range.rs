@@ -129,8 +129,15 @@ pub fn range_by_rank(scene: &Scene, view: &View, theirs: &RgbImage) -> Option<De
     let level_t = (black_t - white_t).abs() / 255.0;
     let rounded = [1.0, 0.5, 0.25, 0.1, 0.05, 0.01, 0.001]
         .into_iter()
-        .map(|step| ((white_t / step).round() * step, (black_t / step).round() * step))
-        .find(|&(w, k)| (w - white_t).abs() <= 1.5 * level_t && (k - black_t).abs() <= 1.5 * level_t)
+        .map(|step| {
+            (
+                (white_t / step).round() * step,
+                (black_t / step).round() * step,
+            )
+        })
+        .find(|&(w, k)| {
+            (w - white_t).abs() <= 1.5 * level_t && (k - black_t).abs() <= 1.5 * level_t
+        })
         .unwrap_or((white_t, black_t));
     let clean = |t: f64| (t * 1e9).round() / 1e9;
     let (white_t, black_t) = (clean(rounded.0), clean(rounded.1));

@@ -10,6 +10,7 @@
 
 use image::RgbImage;
 
+use super::depth_range::range_by_rank;
 use super::describe::rebuild;
 use super::fit::score::Scorer;
 use super::model::{Model, Quantity};
@@ -18,7 +19,6 @@ use super::{
     Deviation, Diagnosis, Difference, RangeFrom, Theirs, Unexplained, Verdict, diagnose,
     infer_depth_range,
 };
-use super::depth_range::range_by_rank;
 use crate::explore::trace::TheirDepth;
 use crate::render::depth_map::DepthRange;
 use crate::render::{Frame, View};

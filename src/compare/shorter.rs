@@ -11,7 +11,7 @@
 
 use super::describe::{describe, rebuild};
 use super::deviation::Deviation;
-use super::fit::depth::{fit_depth_quickly, fit_depth_untilted};
+use super::fit::depth::fit_depth_quickly;
 use super::fit::score::Scorer;
 use super::mistake::{Mistake, MistakeSet};
 use super::needed::needed;
@@ -95,11 +95,7 @@ pub(super) fn shorter_answers(
             }
             for with_rules in rule_sets {
                 let model = rebuild(&view, &[words.clone(), with_rules].concat());
-                let fitted = if set.len() == 1 {
-                    fit_depth_untilted(scorer, &model)
-                } else {
-                    fit_depth_quickly(scorer, &model)
-                };
+                let fitted = fit_depth_quickly(scorer, &model);
                 each.push(describe(scorer.scene, &view, &fitted));
             }
         }
