@@ -1,7 +1,9 @@
 //! How long a user waits for the diagnosis: the whole command
 //! (`raytracer -input … -compare_output … -compare_depth … …`, a new process each time: load,
 //! render the exact images, fit the model, say it) on real students' images and on images with
-//! known mistakes at 200² and 1024² (both images, or one), the median of RUNS runs. Writes `docs/diagnosis-speed.md`.
+//! known mistakes at 200² and 1024² (both images, or one), and on random scenes of 1,000 to
+//! 1,000,000 spheres (a model is fitted to scenes of up to `MAX_FITTED_SPHERES`), the median of
+//! RUNS runs. Writes `docs/diagnosis-speed.md`.
 //! Needs the release binary beside this example (`cargo build --release` first):
 //!
 //! ```sh
@@ -13,6 +15,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
+use raytracer::compare::diagnosis::MAX_FITTED_SPHERES;
 use raytracer::compare::{Mistake, MistakeSet};
 use raytracer::oracle::mistaken::render_variant;
 use raytracer::render::View;
@@ -21,7 +24,7 @@ use raytracer::render::depth_map::DepthRange;
 /// One comparison timed: what it is, the scene, their two images and the range asked for.
 struct Case {
     what: String,
-    scene: &'static str,
+    scene: PathBuf,
     colour: Option<PathBuf>,
     depth: Option<PathBuf>,
     range: (f64, f64),
@@ -53,10 +56,10 @@ fn corpus_case(program: &str, number: &str, range: (f64, f64), what: &str) -> Ca
     let folder = root().join("tests/corpus").join(program);
     Case {
         what: format!("{what} (`tests/corpus/{program}`, scene1_{number})"),
-        scene: match number {
-            "03" => "scene1_03",
-            _ => "scene1_05",
-        },
+        scene: root().join(match number {
+            "03" => "scenes/scene1_03.txt",
+            _ => "scenes/scene1_05.txt",
+        }),
         colour: Some(folder.join(format!("output1_{number}.png"))),
         depth: Some(folder.join(format!("depth1_{number}.png"))),
         range,
@@ -92,11 +95,52 @@ fn made_case(
     depth.save(&depth_path).expect("writes the depth image");
     Case {
         what: format!("known mistakes: {set} ({scene_name})"),
-        scene: scene_name,
+        scene: root().join(format!("scenes/{scene_name}.txt")),
         colour: Some(colour_path),
         depth: Some(depth_path),
         range,
         size_px,
+    }
+}
+
+/// A case on a seeded random scene of `count` spheres (`raytracer::oracle::random_scene`, the
+/// benchmarks' workload) at 200², its images made by the variant renderer with `mistakes`, its
+/// depth range the exact image's nearest to farthest hit.
+fn large_case(folder: &Path, count: usize, mistakes: &[Mistake]) -> Case {
+    let scene = raytracer::oracle::random_scene(1, count);
+    let scene_path = folder.join(format!("random-{count}.txt"));
+    if !scene_path.exists() {
+        std::fs::write(&scene_path, raytracer::scene::scene_to_text(&scene))
+            .expect("writes the scene");
+    }
+    let wide = View::of_camera(&scene.camera, 200, 200, DepthRange::new(0.0, 1.0));
+    let exact = raytracer::render::render(&scene, &wide).expect("renders");
+    let (near, far) = exact
+        .t
+        .iter()
+        .filter(|t| t.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &t| {
+            (a.min(t), b.max(t))
+        });
+    let range = (near.floor(), far.ceil());
+    let view = View {
+        depth_range: DepthRange::new(range.0, range.1),
+        ..wide
+    };
+    let set = MistakeSet::of(mistakes);
+    let (colour, depth) = render_variant(&scene, &view, set);
+    let stem = format!("random-{count}-{}", set.to_string().replace(" + ", "-"));
+    let colour_path = folder.join(format!("{stem}.png"));
+    let depth_path = folder.join(format!("{stem}-depth.png"));
+    colour.save(&colour_path).expect("writes the colour image");
+    depth.save(&depth_path).expect("writes the depth image");
+    Case {
+        what: format!("known mistakes: {set} (a random scene of {count} spheres)"),
+        scene: scene_path,
+        colour: Some(colour_path),
+        depth: Some(depth_path),
+        range,
+        size_px: 200,
     }
 }
 
@@ -108,7 +152,7 @@ fn only(case: &Case, colour: bool) -> Case {
             case.what,
             if colour { "colour" } else { "depth" }
         ),
-        scene: case.scene,
+        scene: case.scene.clone(),
         colour: case.colour.clone().filter(|_| colour),
         depth: case.depth.clone().filter(|_| !colour),
         range: case.range,
@@ -119,9 +163,7 @@ fn only(case: &Case, colour: bool) -> Case {
 /// Runs the command once: its seconds and the `diagnosis` lines it printed.
 fn run_once(binary: &Path, case: &Case) -> (f64, Vec<String>) {
     let mut command = Command::new(binary);
-    command
-        .arg("-input")
-        .arg(root().join(format!("scenes/{}.txt", case.scene)));
+    command.arg("-input").arg(&case.scene);
     if let Some(colour) = &case.colour {
         command.arg("-compare_output").arg(colour);
     }
@@ -150,6 +192,12 @@ fn run_once(binary: &Path, case: &Case) -> (f64, Vec<String>) {
             let mut parts = line.splitn(3, ": ");
             let kind = parts.next().unwrap_or_default();
             let name = parts.next().unwrap_or_default();
+            // "none (no model fitted: …)": the reason in short.
+            let name = if name.starts_with("none (no model fitted") {
+                "none (no model fitted: too many spheres)"
+            } else {
+                name
+            };
             format!("{kind}: {name}")
         })
         .collect();
@@ -199,7 +247,33 @@ fn main() {
             &[Mistake::PixelCorners, Mistake::Mirrored],
         ),
         raw_up,
-    ];
+    ]
+    .into_iter()
+    .chain(
+        [
+            1_000,
+            10_000,
+            MAX_FITTED_SPHERES,
+            MAX_FITTED_SPHERES + 1,
+            1_000_000,
+        ]
+        .into_iter()
+        .flat_map(|count| {
+            [
+                large_case(
+                    folder.path(),
+                    count,
+                    &[Mistake::PixelCorners, Mistake::Mirrored],
+                ),
+                large_case(
+                    folder.path(),
+                    count,
+                    &[Mistake::FlippedVertically, Mistake::DepthReversed],
+                ),
+            ]
+        }),
+    )
+    .collect::<Vec<_>>();
     let threads = std::thread::available_parallelism().map_or(1, usize::from);
     let mut table = String::new();
     let _ = writeln!(
@@ -234,7 +308,10 @@ fn main() {
          hardware threads. \
          Generated by `cargo build --release && cargo run --release --example diagnosis_speed` \
          (`examples/diagnosis_speed.rs`); the images with known mistakes are made by the \
-         project's variant renderer.\n\n{table}"
+         project's variant renderer. A model of their program is fitted to scenes of up to \
+         {MAX_FITTED_SPHERES} spheres; on a larger one the command compares the pixels and says \
+         why it says nothing more (`diagnosis: none (no model fitted: …)`), the rows of 20,001 \
+         and 1,000,000 spheres.\n\n{table}"
     );
     let path = root().join("docs/diagnosis-speed.md");
     std::fs::write(&path, text).expect("writes docs/diagnosis-speed.md");

@@ -430,3 +430,68 @@ fn a_large_depth_image_is_named_as_a_small_one_is() {
         stdout(&output)
     );
 }
+
+/// A scene of more spheres than a model of their program is fitted to: the pixels are compared,
+/// and the answer says why nothing more is said (in the lines and the JSON), with no fit begun.
+#[test]
+fn a_scene_too_large_to_fit_is_compared_and_says_why_no_model_was_fitted() {
+    use raytracer::compare::diagnosis::MAX_FITTED_SPHERES;
+    let folder = tempfile::tempdir().unwrap();
+    let spheres = MAX_FITTED_SPHERES + 1;
+    let scene = raytracer::oracle::random_scene(7, spheres);
+    std::fs::write(
+        folder.path().join("big.txt"),
+        raytracer::scene::scene_to_text(&scene),
+    )
+    .unwrap();
+    let made = run(
+        folder.path(),
+        &[
+            "-input",
+            "big.txt",
+            "-size",
+            "120",
+            "120",
+            "-output",
+            "exact.tga",
+        ],
+    );
+    assert_eq!(made.status.code(), Some(0), "{}", stderr(&made));
+    // Their image: the exact one, its header saying the rows run top first (upside down).
+    let mut tga = std::fs::read(folder.path().join("exact.tga")).unwrap();
+    tga[17] ^= 0x20;
+    std::fs::write(folder.path().join("theirs.tga"), tga).unwrap();
+    let output = run(
+        folder.path(),
+        &["-input", "big.txt", "-compare_output", "theirs.tga"],
+    );
+    assert_eq!(output.status.code(), Some(3), "{}", stderr(&output));
+    assert!(value(&output, "colour_pixels_differing") != "0");
+    assert_eq!(
+        value(&output, "diagnosis"),
+        format!(
+            "none (no model fitted: the scene has {spheres} spheres, and a model of your program \
+             is fitted to scenes of up to {MAX_FITTED_SPHERES} (beyond, the fit would take longer \
+             than a comparison may): the pixels are compared, nothing is said of why they differ)"
+        )
+    );
+    let json = run(
+        folder.path(),
+        &[
+            "-input",
+            "big.txt",
+            "-compare_output",
+            "theirs.tga",
+            "-compare_format",
+            "json",
+        ],
+    );
+    let answer: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    assert_eq!(answer["verdict"], "not-fitted");
+    assert!(
+        answer["not_fitted_because"]
+            .as_str()
+            .unwrap()
+            .contains(&format!("{spheres} spheres"))
+    );
+}

@@ -143,7 +143,9 @@ impl CompareReport {
         }
         let _ = writeln!(text, "match: {}", if self.matches() { "yes" } else { "no" });
         let stated = self.diagnosis.stated();
-        if stated.is_empty() {
+        if let Some(because) = self.diagnosis.not_fitted_because() {
+            let _ = writeln!(text, "diagnosis: none (no model fitted: {because})");
+        } else if stated.is_empty() {
             let _ = writeln!(text, "diagnosis: none");
         }
         for deviation in stated {
@@ -219,6 +221,7 @@ impl CompareReport {
                 Some(Some(range)) => json!([range.min_t, range.max_t]),
             },
             "verdict": verdict,
+            "not_fitted_because": self.diagnosis.not_fitted_because(),
             "statements": statements(self.diagnosis.stated()),
             "partial": statements(self.diagnosis.partial()),
             "alternatives": self.diagnosis.alternatives().iter().map(|a| statements(a)).collect::<Vec<_>>(),

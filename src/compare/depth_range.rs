@@ -8,6 +8,7 @@
 
 use image::RgbImage;
 
+use super::diagnosis::MAX_FITTED_SPHERES;
 use super::fit::fit;
 use super::fit::score::{Scorer, Theirs};
 use super::model::{Model, Quantity};
@@ -20,6 +21,10 @@ use crate::scene::Scene;
 /// `view`'s camera at their size (see the module docs); `None` when the image holds no ramp to
 /// fit (every pixel black or white, too few pixels, or no straight line from t).
 pub fn infer_depth_range(scene: &Scene, view: &View, theirs: &RgbImage) -> Option<DepthRange> {
+    if scene.spheres.len() > MAX_FITTED_SPHERES {
+        // No model is fitted to so many spheres: the range is read by rank alone.
+        return None;
+    }
     let (width_px, height_px) = theirs.dimensions();
     // A range no image is drawn over, so that the fit's line is its own.
     let view = View {

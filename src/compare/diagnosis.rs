@@ -37,6 +37,12 @@ const PARTIAL_SHARE_EACH: f64 = 0.1;
 /// Share of the differing pixels a partial answer must explain in all: more than half.
 const PARTIAL_SHARE_ALL: f64 = 0.5;
 
+/// Spheres beyond which no model of their program is fitted: the fit renders their scene some
+/// hundreds of times, and this many random spheres keep the whole comparison within 10 s on two
+/// cores (docs/diagnosis-speed.md measures it, with the sizes around it); beyond, the comparison
+/// counts the pixels and says why it stops there.
+pub const MAX_FITTED_SPHERES: usize = 20_000;
+
 /// Models seen on the way that are said and compared with the fitted one, at most.
 const MAX_RIVALS: usize = 16;
 
@@ -54,6 +60,11 @@ pub enum Verdict {
     Partial,
     /// Nothing explains it.
     Unexplained,
+    /// No model was fitted: the scene has more spheres than [`MAX_FITTED_SPHERES`].
+    NotFitted {
+        /// The scene's spheres.
+        spheres: usize,
+    },
 }
 
 /// What the diagnosis found.
@@ -85,6 +96,7 @@ impl Diagnosis {
             Verdict::Ambiguous(_) => "ambiguous",
             Verdict::Partial => "partial",
             Verdict::Unexplained => "unexplained",
+            Verdict::NotFitted { .. } => "not-fitted",
         }
     }
 
@@ -118,7 +130,7 @@ impl Diagnosis {
     pub fn stated_model(&self) -> Option<&Model> {
         match self.verdict {
             Verdict::Explained | Verdict::Ambiguous(_) | Verdict::Partial => Some(&self.model),
-            Verdict::Same | Verdict::Unexplained => None,
+            Verdict::Same | Verdict::Unexplained | Verdict::NotFitted { .. } => None,
         }
     }
 
@@ -151,10 +163,22 @@ impl Diagnosis {
         self
     }
 
+    /// Why no model was fitted, in a sentence (`None` when one was).
+    pub fn not_fitted_because(&self) -> Option<String> {
+        match self.verdict {
+            Verdict::NotFitted { spheres } => Some(format!(
+                "the scene has {spheres} spheres, and a model of your program is fitted to scenes \
+                 of up to {MAX_FITTED_SPHERES} (beyond, the fit would take longer than a \
+                 comparison may): the pixels are compared, nothing is said of why they differ"
+            )),
+            _ => None,
+        }
+    }
+
     /// The differing pixels no statement accounts for: all of them when nothing is stated.
     pub fn unexplained_pixels(&self) -> usize {
         match self.verdict {
-            Verdict::Unexplained => self.differing_exact,
+            Verdict::Unexplained | Verdict::NotFitted { .. } => self.differing_exact,
             Verdict::Same => 0,
             _ => self.differing_left,
         }
@@ -209,6 +233,24 @@ fn complexity(statements: &[Deviation]) -> (usize, usize) {
 /// the one their depth image was asked for), and where the pixels left are.
 pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
     let mut scorer = Scorer::new(scene, view, theirs);
+    if scene.spheres.len() > MAX_FITTED_SPHERES {
+        let differing_exact = scorer.score(&Model::course(view));
+        return Diagnosis {
+            verdict: if differing_exact == 0 {
+                Verdict::Same
+            } else {
+                Verdict::NotFitted {
+                    spheres: scene.spheres.len(),
+                }
+            },
+            statements: Vec::new(),
+            same_pixels: Vec::new(),
+            differing_exact,
+            differing_left: differing_exact,
+            unexplained: Unexplained::default(),
+            model: Model::course(view),
+        };
+    }
     let fitted = fit(&mut scorer);
     let differing_exact = fitted.differing_exact;
     let course = Model::course(view);

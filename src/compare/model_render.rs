@@ -8,7 +8,7 @@ use glam::{DVec2, DVec3};
 use image::{Rgb, RgbImage};
 use rayon::prelude::*;
 
-use super::model::{Model, Outside, Quantity, colour_bytes, depth_level};
+use super::model::{Model, Outside, Quantity, Visible, colour_bytes, depth_level};
 use crate::render::View;
 use crate::scene::Scene;
 
@@ -77,6 +77,39 @@ pub fn discs(scene: &Scene, view: &View) -> Vec<Disc> {
         .collect()
 }
 
+/// The discs of a scene (in file order, indexed as its spheres), with their indices nearest
+/// first: by `w − r`, the least t a ray can take of a sphere, its root taken or not, before any
+/// shift. Tiles hold their discs in that order, so that the nearest hit is found without trying
+/// the discs that lie wholly behind it.
+#[derive(Debug, Clone)]
+pub struct Discs {
+    /// The discs, in file order.
+    pub all: Vec<Disc>,
+    /// Their indices, by `w − r` ascending (file order among equals).
+    pub near_first: Vec<u32>,
+}
+
+impl Discs {
+    /// The discs of `scene` through `view`.
+    pub fn of(scene: &Scene, view: &View) -> Self {
+        let all = discs(scene, view);
+        let mut near_first: Vec<u32> = (0..all.len() as u32).collect();
+        near_first.sort_by(|&a, &b| {
+            let (a, b) = (&all[a as usize], &all[b as usize]);
+            (a.w - a.radius).total_cmp(&(b.w - b.radius))
+        });
+        Self { all, near_first }
+    }
+}
+
+impl std::ops::Deref for Discs {
+    type Target = [Disc];
+
+    fn deref(&self) -> &[Disc] {
+        &self.all
+    }
+}
+
 /// What each pixel's ray hit: top row first, t along the unit direction (`+∞`: no hit).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Hits {
@@ -136,12 +169,13 @@ pub struct Tiles {
 }
 
 impl Tiles {
-    /// Bins `discs` by the pixels `model` maps into them.
-    pub fn of(model: &Model, discs: &[Disc], width: u32, height: u32) -> Self {
+    /// Bins `discs` by the pixels `model` maps into them, each tile's discs nearest first.
+    pub fn of(model: &Model, discs: &Discs, width: u32, height: u32) -> Self {
         let tiles_x = width.div_ceil(TILE_PX);
         let tiles_y = height.div_ceil(TILE_PX);
         let mut tiles: Vec<Vec<u32>> = vec![Vec::new(); (tiles_x * tiles_y) as usize];
-        for (index, disc) in (0u32..).zip(discs) {
+        for &index in &discs.near_first {
+            let disc = &discs.all[index as usize];
             let [x0, x1, y0, y1] = footprint(model, disc, width, height);
             if x0 > x1 || y0 > y1 {
                 continue;
@@ -155,13 +189,17 @@ impl Tiles {
         Self { tiles_x, tiles }
     }
 
-    /// The discs that may cover pixel `(x, y_up)`, in file order.
+    /// The discs that may cover pixel `(x, y_up)`, nearest first.
     pub fn at(&self, x: u32, y_up: u32) -> &[u32] {
         &self.tiles[((y_up / TILE_PX) * self.tiles_x + x / TILE_PX) as usize]
     }
 }
 
-/// The hit `model` draws at screen point `screen` with t shifted by `shift`: (t, sphere).
+/// The hit `model` draws at screen point `screen` with t shifted by `shift`: (t, sphere), of the
+/// discs `candidates`, nearest first as [`Discs::near_first`] orders them (a tile's discs are):
+/// the search for the nearest hit stops at the first disc wholly behind it. Among hits of equal
+/// t, and for the rules without a depth test, the spheres' order in the file decides, as the
+/// model's rule says.
 pub fn hit_at(
     model: &Model,
     discs: &[Disc],
@@ -170,13 +208,33 @@ pub fn hit_at(
     shift: f64,
 ) -> Option<(f64, u32)> {
     let rule = &model.hits;
+    // With the root taken, no t of a sphere is less than w − r (plus the shift).
+    let stops = rule.visible == Visible::Nearest && rule.square_root;
     let mut best: Option<(f64, u32)> = None;
     for &index in candidates {
         let disc = &discs[index as usize];
+        if stops && best.is_some_and(|(best_t, _)| disc.w - disc.radius + shift > best_t) {
+            break;
+        }
         let across_sq = (screen - disc.center_uv).length_squared();
-        if let Some(t) = rule.sphere_t(disc.w, across_sq, disc.radius, shift)
-            && rule.replaces(t, best.map_or(f64::INFINITY, |b| b.0), best.is_some())
-        {
+        let Some(t) = rule.sphere_t(disc.w, across_sq, disc.radius, shift) else {
+            continue;
+        };
+        let replaces = match (best, rule.visible) {
+            (None, _) => true,
+            (Some((_, best_index)), Visible::FirstInFile) => index < best_index,
+            (Some((_, best_index)), Visible::LastInFile) => index > best_index,
+            (Some((best_t, best_index)), Visible::Nearest) => {
+                t < best_t
+                    || (t == best_t
+                        && if rule.later_wins_ties {
+                            index > best_index
+                        } else {
+                            index < best_index
+                        })
+            }
+        };
+        if replaces {
             best = Some((t, index));
         }
     }
@@ -192,11 +250,16 @@ pub fn render_hits(scene: &Scene, view: &View, model: &Model) -> Hits {
 /// (rows and columns 0, `stride`, 2·`stride`… of the image, top row first): hits of an image
 /// `stride` times smaller in each axis.
 pub fn render_hits_every(scene: &Scene, view: &View, model: &Model, stride: u32) -> Hits {
+    render_hits_of(&Discs::of(scene, view), view, model, stride)
+}
+
+/// [`render_hits_every`] of the discs `discs` (a scene's, through `view`), made once by the
+/// caller.
+pub fn render_hits_of(discs: &Discs, view: &View, model: &Model, stride: u32) -> Hits {
     let stride = stride.max(1);
     let (width, height) = (view.width_px.max(1), view.height_px.max(1));
     let (sampled_width, sampled_height) = (width.div_ceil(stride), height.div_ceil(stride));
-    let discs = discs(scene, view);
-    let tiles = Tiles::of(model, &discs, width, height);
+    let tiles = Tiles::of(model, discs, width, height);
     let pixels = (sampled_width * sampled_height) as usize;
     let mut t = vec![f64::INFINITY; pixels];
     let mut sphere = vec![u32::MAX; pixels];
@@ -216,8 +279,7 @@ pub fn render_hits_every(scene: &Scene, view: &View, model: &Model, stride: u32)
                 let pixel = DVec2::new(f64::from(x), f64::from(y_up));
                 let screen = model.pixels.screen_of(pixel);
                 let shift = ramp_at(model, screen);
-                if let Some((hit_t, index)) =
-                    hit_at(model, &discs, tiles.at(x, y_up), screen, shift)
+                if let Some((hit_t, index)) = hit_at(model, discs, tiles.at(x, y_up), screen, shift)
                 {
                     t_row[sampled_x as usize] = hit_t;
                     sphere_row[sampled_x as usize] = index;
@@ -247,12 +309,17 @@ pub fn hit_of_pixel(
     {
         return None;
     }
-    let discs = discs(scene, view);
-    let every: Vec<u32> = (0..discs.len() as u32).collect();
+    let discs = Discs::of(scene, view);
     let screen = model
         .pixels
         .screen_of(DVec2::new(f64::from(x), f64::from(y_up)));
-    hit_at(model, &discs, &every, screen, ramp_at(model, screen))
+    hit_at(
+        model,
+        &discs,
+        &discs.near_first,
+        screen,
+        ramp_at(model, screen),
+    )
 }
 
 /// The colour image `model` draws of `hits`: each sphere's colour, else the background.

@@ -85,6 +85,8 @@ pub struct ComparisonPixels {
     /// The model of their program the answer states (`None`: it states nothing): what the trace
     /// asks what their program drew at a pixel.
     pub model: Option<Model>,
+    /// Why no model of their program was fitted (`None`: one was, or none was looked for).
+    pub not_fitted_because: Option<String>,
     /// The statements that explain the difference (empty: none does, or none was looked for).
     pub statements: Vec<Deviation>,
     /// The alternatives of a near tie, each a `+`-joined list of statements (empty: no tie).
@@ -214,6 +216,7 @@ pub fn compare_file(
         exact,
         difference,
         model: diagnosis.stated_model().copied(),
+        not_fitted_because: diagnosis.not_fitted_because(),
         statements: diagnosis.stated().to_vec(),
         alternatives: diagnosis
             .alternatives()
@@ -286,6 +289,7 @@ pub fn compare_quality(
         exact,
         difference,
         model: None,
+        not_fitted_because: None,
         statements: Vec::new(),
         alternatives: Vec::new(),
         partial: Vec::new(),

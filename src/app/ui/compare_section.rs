@@ -195,6 +195,8 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
             let diagnosis = if pixels.statements.is_empty() {
                 if matches {
                     "none needed".to_owned()
+                } else if let Some(because) = &pixels.not_fitted_because {
+                    format!("none (no model fitted: {because})")
                 } else if !pixels.alternatives.is_empty() {
                     "none (several explanations fit equally)".to_owned()
                 } else if !pixels.partial.is_empty() {

@@ -16,7 +16,7 @@ use rayon::prelude::*;
 
 use super::labels::{Label, Labels};
 use crate::compare::model::{Model, PixelMap};
-use crate::compare::model_render::{Disc, Tiles, hit_at, ramp_at};
+use crate::compare::model_render::{Disc, Discs, Tiles, hit_at, ramp_at};
 
 /// Images up to this many pixels are fitted on every pixel; larger ones on a sample.
 const ALL_PIXELS_UP_TO: u64 = 90_000;
@@ -108,7 +108,7 @@ impl Affine {
 /// What the fit works on: the scene's discs, the labels, the model's other parts.
 pub struct Problem<'a> {
     /// The spheres projected on the screen.
-    pub discs: &'a [Disc],
+    pub discs: &'a Discs,
     /// Their image's labels.
     pub labels: &'a Labels,
     /// The course's pixel step, world units.

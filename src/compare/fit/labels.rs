@@ -64,7 +64,7 @@ impl Labels {
 /// The most common colour of `image` that no sphere of `scene` has (truncated or rounded), with
 /// its count: the background their program drew, when the scene's is not it.
 pub fn background_candidate(scene: &Scene, image: &RgbImage) -> Option<([u8; 3], usize)> {
-    let sphere_colours: Vec<[u8; 3]> = scene
+    let sphere_colours: std::collections::HashSet<[u8; 3]> = scene
         .spheres
         .iter()
         .flat_map(|s| {

@@ -33,7 +33,6 @@ use self::polish::{
 use self::score::Scorer;
 use self::starts::{block_square, named_geometry, only_block, starts};
 use super::model::{Model, Visible, colour_bytes};
-use super::model_render::discs;
 
 /// Levenberg–Marquardt steps from each start before the best few are carried on.
 const FIRST_STEPS: usize = 6;
@@ -231,7 +230,7 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
         return fitted;
     }
     let step = Model::step_world(&view);
-    let discs = discs(scene, &view);
+    let discs = scorer.discs.clone();
     let depth_no_hit = scorer
         .theirs
         .depth

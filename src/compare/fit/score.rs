@@ -12,7 +12,7 @@ use rayon::prelude::*;
 
 use crate::compare::model::{Model, Visible, colour_bytes};
 use crate::compare::model_render::{
-    Frame, Hits, colour_image, depth_image, depth_pixel, depth_quantity, render_hits_every,
+    Discs, Frame, Hits, colour_image, depth_image, depth_pixel, depth_quantity, render_hits_of,
 };
 use crate::render::View;
 use crate::scene::Scene;
@@ -116,6 +116,8 @@ pub struct Scorer<'a> {
     pub view: &'a View,
     /// Their images.
     pub theirs: Theirs<'a>,
+    /// The scene's discs through the view, made once.
+    pub discs: Discs,
     hits: HashMap<(HitKey, u32), Arc<Hits>>,
     order: Vec<(HitKey, u32)>,
     /// Models scored so far.
@@ -129,6 +131,7 @@ impl<'a> Scorer<'a> {
             scene,
             view,
             theirs,
+            discs: Discs::of(scene, view),
             hits: HashMap::new(),
             order: Vec::new(),
             evaluated: 0,
@@ -151,7 +154,7 @@ impl<'a> Scorer<'a> {
             let oldest = self.order.remove(0);
             self.hits.remove(&oldest);
         }
-        let hits = Arc::new(render_hits_every(self.scene, self.view, model, stride));
+        let hits = Arc::new(render_hits_of(&self.discs, self.view, model, stride));
         self.hits.insert(key, Arc::clone(&hits));
         self.order.push(key);
         hits
