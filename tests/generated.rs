@@ -164,3 +164,42 @@ fn an_own_depth_range_that_wraps_is_said_with_its_range() {
     );
     assert_eq!(left, 0, "{said:?}");
 }
+
+/// A tmin of any value with the far root tried where the near one is refused (−1 and −0.81 on
+/// scene1_07, whose camera sits among the spheres): found with its value, as `tmin`, and nothing
+/// else said.
+#[test]
+fn a_tmin_of_any_value_with_the_far_root_is_found_with_its_value() {
+    for tmin in [-1.0, -0.81] {
+        let program = student::Program {
+            tmin,
+            ..student::Program::course()
+        };
+        let (said, left) = diagnosed("scene1_07", &program, (-2.0, 2.0), (-2.0, 2.0));
+        assert_eq!(said.len(), 1, "{tmin}: {said:?}");
+        let value: f64 = said[0]
+            .strip_prefix("tmin ")
+            .unwrap_or_else(|| panic!("{tmin}: {said:?}"))
+            .parse()
+            .unwrap();
+        assert!((value - tmin).abs() <= 0.05, "{tmin}: {said:?}");
+        assert_eq!(left, 0, "{tmin}: {said:?}");
+    }
+}
+
+/// Several samples per pixel on a fixed grid over the screen (1024 a side, whatever the image's
+/// size), the last or the first sample that hits setting the pixel: found with its size and
+/// order, every sphere drawn larger.
+#[test]
+fn a_grid_of_samples_where_the_last_hit_wins_is_found() {
+    for (side, last) in [(1024, true), (600, false)] {
+        let program = student::Program {
+            grid: Some((side, last)),
+            ..student::Program::course()
+        };
+        let (said, left) = diagnosed("scene1_02", &program, (8.0, 12.0), (8.0, 12.0));
+        let order = if last { "last" } else { "first" };
+        assert_eq!(said, [format!("sample-grid {side} {order}")], "{said:?}");
+        assert!(left <= 400, "{left} px left: {said:?}");
+    }
+}

@@ -16,6 +16,8 @@
 mod cases;
 #[path = "common/claims.rs"]
 mod claims;
+#[path = "common/command.rs"]
+mod command;
 #[path = "common/compare_run.rs"]
 mod compare_run;
 #[path = "common/measure.rs"]
@@ -28,6 +30,13 @@ mod student;
 use rayon::prelude::*;
 use raytracer::compare::judge::judge;
 use raytracer::compare::{Deviation, Mistake, MistakeSet, Theirs};
+
+use command::stderr;
+use compare_run::{path, run, stdout, value};
+use raytracer::oracle::mistaken::render_variant;
+use raytracer::render::View;
+use raytracer::render::depth_map::DepthRange;
+use raytracer::scene::load_scene;
 
 use cases::cases;
 use claims::{Claim, claims_of};
@@ -191,4 +200,130 @@ fn every_statement_has_a_case() {
         .filter(|name| !covered.contains(&name.as_str()))
         .collect();
     assert!(missing.is_empty(), "statements without a case: {missing:?}");
+}
+
+/// A scene of more spheres than a model of their program is fitted to: the pixels are compared,
+/// and the answer says why nothing more is said (in the lines and the JSON), with no fit begun.
+#[test]
+fn a_scene_too_large_to_fit_is_compared_and_says_why_no_model_was_fitted() {
+    use raytracer::compare::diagnosis::MAX_FITTED_SPHERES;
+    let folder = tempfile::tempdir().unwrap();
+    let spheres = MAX_FITTED_SPHERES + 1;
+    let scene = raytracer::oracle::random_scene(7, spheres);
+    std::fs::write(
+        folder.path().join("big.txt"),
+        raytracer::scene::scene_to_text(&scene),
+    )
+    .unwrap();
+    let made = run(
+        folder.path(),
+        &[
+            "-input",
+            "big.txt",
+            "-size",
+            "120",
+            "120",
+            "-output",
+            "exact.tga",
+        ],
+    );
+    assert_eq!(made.status.code(), Some(0), "{}", stderr(&made));
+    // Their image: the exact one, its header saying the rows run top first (upside down).
+    let mut tga = std::fs::read(folder.path().join("exact.tga")).unwrap();
+    tga[17] ^= 0x20;
+    std::fs::write(folder.path().join("theirs.tga"), tga).unwrap();
+    let output = run(
+        folder.path(),
+        &["-input", "big.txt", "-compare_output", "theirs.tga"],
+    );
+    assert_eq!(output.status.code(), Some(3), "{}", stderr(&output));
+    assert!(value(&output, "colour_pixels_differing") != "0");
+    assert_eq!(
+        value(&output, "diagnosis"),
+        format!(
+            "none (no model fitted: the scene has {spheres} spheres, and a model of your program \
+             is fitted to scenes of up to {MAX_FITTED_SPHERES} (beyond, the fit would take longer \
+             than a comparison may): the pixels are compared, nothing is said of why they differ)"
+        )
+    );
+    let json = run(
+        folder.path(),
+        &[
+            "-input",
+            "big.txt",
+            "-compare_output",
+            "theirs.tga",
+            "-compare_format",
+            "json",
+        ],
+    );
+    let answer: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    assert_eq!(answer["verdict"], "not-fitted");
+    assert!(
+        answer["not_fitted_because"]
+            .as_str()
+            .unwrap()
+            .contains(&format!("{spheres} spheres"))
+    );
+}
+
+/// A tie a single image cannot break says what would: a flipped depth image of scene1_02 alone
+/// (its spheres sit alike flipped and mirrored) is `flipped-vertically | mirrored`, and the line
+/// after names the course's scenes whose pictures the two draw differently; each named scene is
+/// checked with the variant renderer (the two mistakes' images differ there), and each course
+/// scene left out draws them alike.
+#[test]
+fn a_tie_says_which_images_would_tell_it_apart() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = load_scene(&path("scenes/scene1_02.txt")).unwrap();
+    let view = View::of_camera(&scene.camera, 200, 200, DepthRange::new(8.0, 12.0));
+    let (_, depth) = render_variant(&scene, &view, MistakeSet::of(&[Mistake::FlippedVertically]));
+    depth.save(folder.path().join("depth.png")).unwrap();
+    let scene_path = path("scenes/scene1_02.txt");
+    let output = run(
+        folder.path(),
+        &[
+            "-input",
+            scene_path.to_str().unwrap(),
+            "-compare_depth",
+            "8",
+            "12",
+            "depth.png",
+        ],
+    );
+    let text = stdout(&output);
+    assert_eq!(
+        value(&output, "diagnosis_ambiguous"),
+        "flipped-vertically | mirrored",
+        "{text}"
+    );
+    let tell = value(&output, "diagnosis_tell_apart");
+    let named = tell
+        .strip_prefix("your images of the course's ")
+        .and_then(|rest| rest.split(" (their pictures differ there)").next())
+        .unwrap_or_else(|| panic!("{tell}"));
+    let named: Vec<&str> = named.split(", ").collect();
+    assert!(!named.is_empty(), "{tell}");
+    for line in std::fs::read_to_string(path("scenes/assignment1.commands"))
+        .unwrap()
+        .lines()
+        .filter(|line| line.starts_with("raytracer"))
+    {
+        let words: Vec<&str> = line.split_whitespace().collect();
+        let at = |flag: &str| words.iter().position(|w| *w == flag).unwrap() + 1;
+        let name = words[at("-input")].trim_end_matches(".txt");
+        let range = DepthRange::new(
+            words[at("-depth")].parse().unwrap(),
+            words[at("-depth") + 1].parse().unwrap(),
+        );
+        let scene = load_scene(&path(&format!("scenes/{name}.txt"))).unwrap();
+        let view = View::of_camera(&scene.camera, 200, 200, range);
+        let flipped = render_variant(&scene, &view, MistakeSet::of(&[Mistake::FlippedVertically]));
+        let mirrored = render_variant(&scene, &view, MistakeSet::of(&[Mistake::Mirrored]));
+        assert_eq!(
+            named.contains(&name),
+            flipped != mirrored,
+            "{name}: said {tell}"
+        );
+    }
 }

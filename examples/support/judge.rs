@@ -73,6 +73,8 @@ pub(crate) const JUSTIFIED_BY: &[(&str, &[&str])] = &[
         &["near-root-only", "tmin-zero", "tmin-minus-one"],
     ),
     ("tmin-minus-one", &["tmin-minus-one"]),
+    ("tmin", &["tmin", "tmin-zero"]),
+    ("sample-grid", &["sample-grid"]),
     ("far-root", &["far-root"]),
     ("no-square-root", &["no-square-root"]),
     ("background", &["background"]),

@@ -82,6 +82,9 @@ pub(crate) struct Program {
     /// x samples the screen's v and y its u.
     pub(crate) swapped: bool,
     pub(crate) non_square: NonSquare,
+    /// Samples on a grid of this many a side over the screen, each written to the pixel it falls
+    /// in, the last (true) or first that hits setting the pixel (`None`: one ray per pixel).
+    pub(crate) grid: Option<(u32, bool)>,
     /// The pixel loops stop at these columns and rows (the rest keeps the background), the
     /// mapping unchanged (`None`: the whole image).
     pub(crate) loops_to: Option<(u32, u32)>,
@@ -112,6 +115,7 @@ impl Program {
             upside_down: false,
             swapped: false,
             non_square: NonSquare::Centred,
+            grid: None,
             loops_to: None,
             keep: Keep::Nearest,
             tmin: f64::NEG_INFINITY,
@@ -162,6 +166,9 @@ impl Program {
             NonSquare::BottomStrip => truth.push("crop-strip".to_owned()),
             NonSquare::Block => truth.push("square-block".to_owned()),
         }
+        if let Some((side, last)) = self.grid {
+            truth.push(format!("sample-grid={side},{last}"));
+        }
         if let Some((columns, rows)) = self.loops_to {
             truth.push(format!("loops-to={columns},{rows}"));
         }
@@ -174,7 +181,8 @@ impl Program {
             truth.push(match (self.tmin, self.far_when_refused) {
                 (0.0, true) => "tmin-zero".to_owned(),
                 (-1.0, false) => "tmin-minus-one".to_owned(),
-                (t, _) => format!("near-root-only={t}"),
+                (t, true) => format!("tmin={t}"),
+                (t, false) => format!("near-root-only={t}"),
             });
         }
         if let Some(b) = self.background {
@@ -300,8 +308,82 @@ pub(crate) fn render(
     let mut t_of = vec![f64::NAN; (width * height) as usize];
     let mut z_of = vec![f64::NAN; (width * height) as usize];
     let mut colour = RgbImage::from_pixel(width, height, Rgb(background));
+    // The textbook quadratic with a unit direction: t² + 2bt + c = 0, every sphere in turn.
+    let trace = |origin: [f64; 3]| {
+        let mut best: Option<(f64, usize)> = None;
+        for (index, sphere) in scene.spheres.iter().enumerate() {
+            let oc = sub(origin, sphere.center_world.to_array());
+            let b = dot(oc, direction);
+            let c = dot(oc, oc) - sphere.radius_world * sphere.radius_world;
+            let discriminant = b * b - c;
+            if discriminant < 0.0 {
+                continue;
+            }
+            let root = discriminant.sqrt();
+            let (near, far) = (-b - root, -b + root);
+            let t = if near >= program.tmin {
+                near
+            } else if program.far_when_refused && far >= program.tmin {
+                far
+            } else {
+                continue;
+            };
+            let take = match (program.keep, best) {
+                (_, None) => true,
+                (Keep::Nearest, Some((best_t, _))) => t < best_t,
+                (Keep::FirstInFile, Some(_)) => false,
+                (Keep::LastInFile, Some(_)) => true,
+            };
+            if take {
+                best = Some((t, index));
+            }
+        }
+        best
+    };
+    let mut written = vec![false; (width * height) as usize];
+    let mut put = |i: u32, j: u32, origin: [f64; 3], hit: Option<(f64, usize)>, last: bool| {
+        let row = if program.upside_down {
+            j
+        } else {
+            height - 1 - j
+        };
+        let at = (row * width + i) as usize;
+        if let Some((t, index)) = hit
+            && (last || !written[at])
+        {
+            written[at] = true;
+            colour.put_pixel(i, row, Rgb(colours[index]));
+            let hit = add(origin, scale(direction, t));
+            t_of[at] = t;
+            z_of[at] = hit[2];
+        }
+    };
+    if let Some((side, last)) = program.grid {
+        // Samples on a grid over the whole screen, each written to the pixel it falls in.
+        let g = f64::from(side);
+        for j in 0..side {
+            for i in 0..side {
+                let (u, v) = (
+                    (f64::from(i) + 0.5) / g - 0.5,
+                    (f64::from(j) + 0.5) / g - 0.5,
+                );
+                let origin = add(
+                    center,
+                    add(scale(horizontal, u * size), scale(up, v * size)),
+                );
+                let (x, y) = (
+                    (u64::from(i) * u64::from(width) / u64::from(side)) as u32,
+                    (u64::from(j) * u64::from(height) / u64::from(side)) as u32,
+                );
+                put(x, y, origin, trace(origin), last);
+            }
+        }
+    }
     for j in 0..loop_h {
         for i in 0..loop_w {
+            if program.grid.is_some() {
+                break;
+            }
             let (mut x, mut y) = (
                 f64::from(i) + program.sample.0,
                 f64::from(j) + program.sample.1,
@@ -322,46 +404,7 @@ pub(crate) fn render(
                 center,
                 add(scale(horizontal, u * size), scale(up, v * size)),
             );
-            // The textbook quadratic with a unit direction: t² + 2bt + c = 0.
-            let mut best: Option<(f64, usize)> = None;
-            for (index, sphere) in scene.spheres.iter().enumerate() {
-                let oc = sub(origin, sphere.center_world.to_array());
-                let b = dot(oc, direction);
-                let c = dot(oc, oc) - sphere.radius_world * sphere.radius_world;
-                let discriminant = b * b - c;
-                if discriminant < 0.0 {
-                    continue;
-                }
-                let root = discriminant.sqrt();
-                let (near, far) = (-b - root, -b + root);
-                let t = if near >= program.tmin {
-                    near
-                } else if program.far_when_refused && far >= program.tmin {
-                    far
-                } else {
-                    continue;
-                };
-                let take = match (program.keep, best) {
-                    (_, None) => true,
-                    (Keep::Nearest, Some((best_t, _))) => t < best_t,
-                    (Keep::FirstInFile, Some(_)) => false,
-                    (Keep::LastInFile, Some(_)) => true,
-                };
-                if take {
-                    best = Some((t, index));
-                }
-            }
-            let row = if program.upside_down {
-                j
-            } else {
-                height - 1 - j
-            };
-            if let Some((t, index)) = best {
-                colour.put_pixel(i, row, Rgb(colours[index]));
-                let hit = add(origin, scale(direction, t));
-                t_of[(row * width + i) as usize] = t;
-                z_of[(row * width + i) as usize] = hit[2];
-            }
+            put(i, j, origin, trace(origin), true);
         }
     }
     // The depth image, after the loop (per-image normalisation needs the extremes).

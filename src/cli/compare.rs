@@ -12,6 +12,7 @@ use super::flags::Flag;
 use super::request::CompareRequest;
 use crate::compare::judge::{NoDepthRange, judge, their_depth_at};
 use crate::compare::picture::{Row, difference_picture};
+use crate::compare::tell_apart::tell_apart;
 use crate::compare::their_image::read_their_image;
 use crate::compare::{Deviation, Diagnosis, Difference, Theirs};
 use crate::explore::trace::PixelTrace;
@@ -101,6 +102,8 @@ pub struct CompareReport {
     pub(crate) depth_range_given: Option<DepthRange>,
     /// With a depth image: the range it was judged under (given, or read back).
     pub(crate) depth_range_used: Option<DepthRange>,
+    /// With a tie: what would tell its answers apart.
+    pub(crate) tell_apart: Option<String>,
 }
 
 impl CompareReport {
@@ -168,6 +171,9 @@ impl CompareReport {
                 .collect();
             let _ = writeln!(text, "diagnosis_ambiguous: {}", sets.join(" | "));
         }
+        if let Some(tell_apart) = &self.tell_apart {
+            let _ = writeln!(text, "diagnosis_tell_apart: {tell_apart}");
+        }
         for same in &self.diagnosis.same_pixels {
             let names: Vec<String> = same.iter().map(Deviation::name_and_values).collect();
             let _ = writeln!(text, "diagnosis_same_pixels: {}", names.join(" + "));
@@ -222,6 +228,7 @@ impl CompareReport {
             },
             "verdict": verdict,
             "not_fitted_because": self.diagnosis.not_fitted_because(),
+            "tell_apart": self.tell_apart,
             "statements": statements(self.diagnosis.stated()),
             "partial": statements(self.diagnosis.partial()),
             "alternatives": self.diagnosis.alternatives().iter().map(|a| statements(a)).collect::<Vec<_>>(),
@@ -358,6 +365,7 @@ pub(crate) fn compare(
         }
         difference_picture(&rows)
     });
+    let tell_apart = tell_apart(scene, &judged.view, &judged.diagnosis, given);
     Ok((
         CompareReport {
             colour: judged.colour,
@@ -366,6 +374,7 @@ pub(crate) fn compare(
             depth_range_inferred: judged.depth_range_inferred.filter(|_| range.is_none()),
             depth_range_given: range.filter(|_| theirs.depth.is_some()),
             depth_range_used: theirs.depth.as_ref().map(|_| judged.view.depth_range),
+            tell_apart,
         },
         picture,
     ))

@@ -191,6 +191,12 @@ pub fn describe(scene: &Scene, view: &View, model: &Model) -> Vec<Deviation> {
     if let Some(drawn_px) = model.drawn_px {
         more.push(Deviation::OnlyBlock { drawn_px });
     }
+    if let Some(grid) = model.samples {
+        more.push(Deviation::SampleGrid {
+            per_side: grid.per_side,
+            last_wins: grid.last_wins,
+        });
+    }
     // Which hits are drawn.
     let rule = model.hits;
     match rule.visible {
@@ -209,6 +215,9 @@ pub fn describe(scene: &Scene, view: &View, model: &Model) -> Vec<Deviation> {
         (0.0, true) => words = words.with(Mistake::TminZero),
         (tmin, _) if tmin == -1.0 && (!rule.far_when_near_refused || rule.far_only) => {
             words = words.with(Mistake::TminMinusOne);
+        }
+        (tmin, true) if rule.far_when_near_refused && !rule.far_only => {
+            more.push(Deviation::Tmin { tmin });
         }
         (tmin, _) => more.push(Deviation::NearRootOnly { tmin }),
     }
@@ -340,6 +349,19 @@ pub fn rebuild(view: &View, deviations: &[Deviation]) -> Model {
                 };
             }
             Deviation::OnlyBlock { drawn_px } => model.drawn_px = Some(drawn_px),
+            Deviation::SampleGrid {
+                per_side,
+                last_wins,
+            } => {
+                model.samples = Some(crate::compare::model::SampleGrid {
+                    per_side,
+                    last_wins,
+                });
+            }
+            Deviation::Tmin { tmin } => {
+                model.hits.tmin = tmin;
+                model.hits.far_when_near_refused = true;
+            }
             Deviation::NearRootOnly { tmin } => {
                 model.hits.tmin = tmin;
                 model.hits.far_when_near_refused = false;

@@ -60,6 +60,20 @@ pub enum Deviation {
         /// The tmin.
         tmin: f64,
     },
+    /// Several samples per pixel on a grid of the program's own over the screen, the last (or
+    /// first) that hits setting the pixel.
+    SampleGrid {
+        /// Samples along each side of the screen.
+        per_side: u32,
+        /// The last sample that hits sets the pixel (else the first).
+        last_wins: bool,
+    },
+    /// Hits before `tmin` refused, and the far root taken where the near one is (a tmin other
+    /// than the course's −∞, 0 or −1).
+    Tmin {
+        /// The tmin.
+        tmin: f64,
+    },
     /// The colour image's background is not the scene's.
     Background {
         /// Their background, bytes.
@@ -170,6 +184,8 @@ impl Deviation {
             Self::NoDepthTest { .. } => "no-depth-test",
             Self::OnlyBlock { .. } => "only-block",
             Self::NearRootOnly { .. } => "near-root-only",
+            Self::Tmin { .. } => "tmin",
+            Self::SampleGrid { .. } => "sample-grid",
             Self::Background { .. } => "background",
             Self::DepthRange {
                 per_image: Some(_), ..
@@ -202,6 +218,7 @@ impl Deviation {
             | Self::Scaled { .. }
             | Self::Tilt { .. }
             | Self::OnlyBlock { .. }
+            | Self::SampleGrid { .. }
             | Self::DepthRange { .. } => 2,
             Self::Background { .. } | Self::DepthOutside { .. } | Self::DepthNoHit { .. } => 3,
             _ => 1,
@@ -213,13 +230,14 @@ impl Deviation {
         self.is_geometric()
             || matches!(
                 self,
-                Self::Word(
-                    Mistake::PixelCorners
-                        | Mistake::Stretched
-                        | Mistake::FlippedVertically
-                        | Mistake::Mirrored
-                        | Mistake::RawUp
-                )
+                Self::SampleGrid { .. }
+                    | Self::Word(
+                        Mistake::PixelCorners
+                            | Mistake::Stretched
+                            | Mistake::FlippedVertically
+                            | Mistake::Mirrored
+                            | Mistake::RawUp
+                    )
             )
     }
 
@@ -280,7 +298,11 @@ impl Deviation {
             Self::NoDepthTest { last_wins } => {
                 (if *last_wins { "last" } else { "first" }).to_owned()
             }
-            Self::NearRootOnly { tmin } => number(*tmin, 6),
+            Self::NearRootOnly { tmin } | Self::Tmin { tmin } => number(*tmin, 6),
+            Self::SampleGrid {
+                per_side,
+                last_wins,
+            } => format!("{per_side} {}", if *last_wins { "last" } else { "first" }),
             Self::OnlyBlock { drawn_px } => format!("{} {}", drawn_px.0, drawn_px.1),
             Self::Background { bytes: b, .. }
             | Self::DepthOutside { bytes: b }
@@ -317,7 +339,14 @@ impl Deviation {
             Self::NoDepthTest { last_wins } => {
                 vec![(if *last_wins { "last" } else { "first" }).into()]
             }
-            Self::NearRootOnly { tmin } => vec![(*tmin).into()],
+            Self::NearRootOnly { tmin } | Self::Tmin { tmin } => vec![(*tmin).into()],
+            Self::SampleGrid {
+                per_side,
+                last_wins,
+            } => vec![
+                (*per_side).into(),
+                (if *last_wins { "last" } else { "first" }).into(),
+            ],
             Self::OnlyBlock { drawn_px } => vec![drawn_px.0.into(), drawn_px.1.into()],
             Self::Background { bytes: b, .. }
             | Self::DepthOutside { bytes: b }

@@ -13,6 +13,7 @@
 //! * [`depth_range`]: the depth range a depth image was most likely made over.
 //! * `shorter`: the shortest true story, tried against a longer answer.
 //! * [`sentence`]: what a statement says in words, and what to change in code.
+//! * [`tell_apart`]: what would tell a tie apart (their other image, the course's lines).
 //! * [`picture`]: the difference picture (theirs, exact, heat map, legend).
 //! * [`their_image`]: reading the image a user compares.
 
@@ -30,6 +31,7 @@ pub mod needed;
 pub mod picture;
 pub mod sentence;
 mod shorter;
+pub mod tell_apart;
 pub mod their_image;
 
 pub use depth_range::infer_depth_range;

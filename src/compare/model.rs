@@ -253,6 +253,34 @@ pub struct Model {
     /// Only the pixels with `x < .0` and `y_up < .1` are traced (loops that run to the wrong
     /// bound); the rest keep the background (`None`: every pixel).
     pub drawn_px: Option<(u32, u32)>,
+    /// Several samples per pixel on a fixed grid over the screen, one of those that hit setting
+    /// the pixel (`None`: one ray per pixel, through the pixel map).
+    pub samples: Option<SampleGrid>,
+}
+
+/// A grid of samples over the camera's square screen, `per_side` a side, each written to the
+/// pixel it falls in (`floor(i·W/per_side)`, `floor(j·H/per_side)`): where the pixel's samples
+/// hit different spheres, or some miss, the last one that hits (rows bottom up, then columns
+/// left to right) or the first sets the pixel, so silhouettes grow.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct SampleGrid {
+    /// Samples along each side of the screen.
+    pub per_side: u32,
+    /// The last sample that hits sets the pixel (else the first).
+    pub last_wins: bool,
+}
+
+impl SampleGrid {
+    /// The grid's samples `[i0, i1)` along an axis of `pixels` pixels that fall in pixel `p`.
+    pub fn samples_of(&self, p: u32, pixels: u32) -> (u32, u32) {
+        let first = |q: u32| (u64::from(q) * u64::from(self.per_side)).div_ceil(u64::from(pixels));
+        (first(p) as u32, first(p + 1) as u32)
+    }
+
+    /// The screen coordinate of sample `i` along an axis, world units from the camera centre.
+    pub fn screen_of(&self, i: u32, size_world: f64) -> f64 {
+        ((f64::from(i) + 0.5) / f64::from(self.per_side) - 0.5) * size_world
+    }
 }
 
 impl Model {
@@ -266,6 +294,7 @@ impl Model {
             rounded: false,
             depth: DepthMap::of_range(view.depth_range),
             drawn_px: None,
+            samples: None,
         }
     }
 

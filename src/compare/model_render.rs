@@ -8,7 +8,7 @@ use glam::{DVec2, DVec3};
 use image::{Rgb, RgbImage};
 use rayon::prelude::*;
 
-use super::model::{Model, Outside, Quantity, Visible, colour_bytes, depth_level};
+use super::model::{Model, Outside, Quantity, SampleGrid, Visible, colour_bytes, depth_level};
 use crate::render::View;
 use crate::scene::Scene;
 
@@ -241,6 +241,38 @@ pub fn hit_at(
     best
 }
 
+/// The hit `model`'s sample grid sets pixel `(x, y_up)` to: of the samples that fall in it, in
+/// the order the program loops (rows bottom up, then columns left to right), the last that hits
+/// or the first. Every disc is a candidate (the grid ignores the pixel map's tiles).
+fn grid_hit_at(
+    model: &Model,
+    discs: &Discs,
+    grid: &SampleGrid,
+    view: &View,
+    x: u32,
+    y_up: u32,
+) -> Option<(f64, u32)> {
+    let (i0, i1) = grid.samples_of(x, view.width_px);
+    let (j0, j1) = grid.samples_of(y_up, view.height_px);
+    let mut chosen = None;
+    for j in j0..j1 {
+        for i in i0..i1 {
+            let screen = DVec2::new(
+                grid.screen_of(i, view.size_world),
+                grid.screen_of(j, view.size_world),
+            );
+            let shift = ramp_at(model, screen);
+            if let Some(hit) = hit_at(model, discs, &discs.near_first, screen, shift) {
+                if !grid.last_wins {
+                    return Some(hit);
+                }
+                chosen = Some(hit);
+            }
+        }
+    }
+    chosen
+}
+
 /// Renders what each pixel's ray hits under `model`.
 pub fn render_hits(scene: &Scene, view: &View, model: &Model) -> Hits {
     render_hits_every(scene, view, model, 1)
@@ -276,11 +308,15 @@ pub fn render_hits_of(discs: &Discs, view: &View, model: &Model, stride: u32) ->
                 {
                     continue;
                 }
-                let pixel = DVec2::new(f64::from(x), f64::from(y_up));
-                let screen = model.pixels.screen_of(pixel);
-                let shift = ramp_at(model, screen);
-                if let Some((hit_t, index)) = hit_at(model, discs, tiles.at(x, y_up), screen, shift)
-                {
+                let hit = if let Some(grid) = model.samples {
+                    grid_hit_at(model, discs, &grid, view, x, y_up)
+                } else {
+                    let pixel = DVec2::new(f64::from(x), f64::from(y_up));
+                    let screen = model.pixels.screen_of(pixel);
+                    let shift = ramp_at(model, screen);
+                    hit_at(model, discs, tiles.at(x, y_up), screen, shift)
+                };
+                if let Some((hit_t, index)) = hit {
                     t_row[sampled_x as usize] = hit_t;
                     sphere_row[sampled_x as usize] = index;
                 }

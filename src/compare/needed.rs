@@ -80,6 +80,10 @@ pub(super) fn nearest_word(statement: &Deviation) -> Option<Deviation> {
         Deviation::SampleOffset { offset_px } if offset_px.abs().max_element() < 0.25 => {
             Some(Deviation::Word(Mistake::PixelCorners))
         }
+        Deviation::Tmin { tmin } if tmin.abs() < 0.05 => Some(Deviation::Word(Mistake::TminZero)),
+        Deviation::NearRootOnly { tmin } if (tmin + 1.0).abs() < 0.05 => {
+            Some(Deviation::Word(Mistake::TminMinusOne))
+        }
         _ => None,
     }
 }
@@ -131,6 +135,12 @@ pub(super) fn rounded(
                 }
                 Deviation::Tilt { per_unit } => Deviation::Tilt {
                     per_unit: per_unit.map(|v| round(v, decimals)),
+                },
+                Deviation::Tmin { tmin } => Deviation::Tmin {
+                    tmin: round(tmin, decimals),
+                },
+                Deviation::NearRootOnly { tmin } => Deviation::NearRootOnly {
+                    tmin: round(tmin, decimals),
                 },
                 _ => break,
             };

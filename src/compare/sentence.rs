@@ -101,6 +101,22 @@ impl Deviation {
                 number(*tmin, 6),
                 number(*tmin, 6)
             ),
+            Self::SampleGrid {
+                per_side,
+                last_wins,
+            } => format!(
+                "each pixel is set from a {per_side}×{per_side} grid of samples over the screen, \
+                 the {} of its samples that hits a sphere deciding it, so silhouettes grow by up \
+                 to a pixel: trace one ray through each pixel's centre (or average its samples)",
+                if *last_wins { "last" } else { "first" }
+            ),
+            Self::Tmin { tmin } => format!(
+                "hits before t = {} are refused and the far root is taken there, so a sphere \
+                 whose near root lies before t = {} is seen from inside (its back), or lost: \
+                 the orthographic camera's tmin is −∞ (-INFINITY)",
+                number(*tmin, 6),
+                number(*tmin, 6)
+            ),
             Self::Background { bytes: b, scene } => {
                 if *b == [0; 3] {
                     format!(

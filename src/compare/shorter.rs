@@ -45,6 +45,7 @@ fn hit_statements(answer: &[Deviation]) -> Vec<Deviation> {
                 statement,
                 Deviation::NoDepthTest { .. }
                     | Deviation::NearRootOnly { .. }
+                    | Deviation::Tmin { .. }
                     | Deviation::OnlyBlock { .. }
             )
         })

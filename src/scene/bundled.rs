@@ -25,9 +25,46 @@ pub const BUNDLED_SCENES: &[(&str, &str)] = &[
     ),
 ];
 
+/// The course's seven command lines (`scenes/assignment1.commands`), as the handout gives them:
+/// each names a bundled scene, the image size and the depth range of its depth image.
+pub const COURSE_COMMANDS: &str = include_str!("../../scenes/assignment1.commands");
+
+/// The course's command lines as (scene file name, depth range's DMIN and DMAX): the scene of
+/// `-input` and the range of `-depth`, of each line of [`COURSE_COMMANDS`] that gives both.
+pub fn course_lines() -> Vec<(&'static str, f64, f64)> {
+    COURSE_COMMANDS
+        .lines()
+        .filter(|line| !line.trim_start().starts_with('#'))
+        .filter_map(|line| {
+            let words: Vec<&str> = line.split_whitespace().collect();
+            let after = |flag: &str| words.iter().position(|w| *w == flag).map(|i| i + 1);
+            let scene = *words.get(after("-input")?)?;
+            let depth = after("-depth")?;
+            let min = words.get(depth)?.parse().ok()?;
+            let max = words.get(depth + 1)?.parse().ok()?;
+            Some((scene, min, max))
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
-    use super::BUNDLED_SCENES;
+    use super::{BUNDLED_SCENES, course_lines};
+
+    /// The course's seven lines, each naming a bundled scene and a depth range.
+    #[test]
+    fn the_course_lines_name_bundled_scenes_and_ranges() {
+        let lines = course_lines();
+        assert_eq!(lines.len(), 7);
+        assert_eq!(lines[3], ("scene1_04.txt", 12.0, 17.0));
+        for (scene, min, max) in lines {
+            assert!(
+                BUNDLED_SCENES.iter().any(|(name, _)| *name == scene),
+                "{scene}"
+            );
+            assert!(min < max);
+        }
+    }
 
     /// Every scene in `scenes/` is bundled, under its own name, and each parses.
     #[test]

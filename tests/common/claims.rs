@@ -82,6 +82,8 @@ pub(crate) enum Claim {
     MapsAbsZ,
     /// Depth outside the range drawn in this colour.
     OutsideColour([u8; 3]),
+    /// Every sphere drawn larger: each pixel the exact picture lights is lit, and more.
+    SilhouettesGrow,
     /// The depth wrong where a sphere is hit (and right where none is).
     DepthWrongWhereHit,
 }
@@ -278,6 +280,9 @@ pub(crate) fn claims_of(sentence: &str) -> Vec<Claim> {
         && number_at(&words, 0).is_some()
     {
         claims.push(Claim::OutsideColour(bytes_at(&words, 0).unwrap()));
+    }
+    if sentence.contains("silhouettes grow") {
+        claims.push(Claim::SilhouettesGrow);
     }
     if sentence.contains("the depth is wrong where a sphere is hit") {
         claims.push(Claim::DepthWrongWhereHit);

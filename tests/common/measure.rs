@@ -422,6 +422,24 @@ pub(crate) fn measure(claim: &Claim, p: &Pictures) -> Result<(), String> {
                 format!("{held} of {} outside are {bytes:?}", pixels.len()),
             )
         }
+        Claim::SilhouettesGrow => {
+            let lit =
+                |image: &RgbImage, x: u32, r: u32| *image.get_pixel(x, r) != *image.get_pixel(0, 0);
+            let exact_lit: Vec<(u32, u32)> = p
+                .hit_pixels()
+                .into_iter()
+                .filter(|&(x, r)| lit(&p.exact_colour, x, r))
+                .collect();
+            let kept = share(&exact_lit, |x, r| lit(&p.colour, x, r));
+            let (theirs, ..) = shape(&p.colour);
+            check(
+                kept >= 0.99 && theirs > exact_lit.len() as f64,
+                format!(
+                    "{kept} of the exact silhouettes kept, {theirs} px lit against {}",
+                    exact_lit.len()
+                ),
+            )
+        }
         Claim::DepthWrongWhereHit => {
             let wrong = share(&p.hit_pixels(), |x, r| {
                 p.depth.get_pixel(x, r) != p.exact_depth.get_pixel(x, r)

@@ -266,6 +266,20 @@ pub(crate) fn cases() -> Vec<Case> {
             program(|p| p.loops_to = Some((80, 80))),
         ),
         case(
+            "sample-grid",
+            s01(),
+            (100, 100),
+            (9.0, 11.0),
+            program(|p| p.grid = Some((512, true))),
+        ),
+        case(
+            "tmin",
+            around(),
+            (100, 100),
+            (-4.0, 4.0),
+            program(|p| p.tmin = -0.81),
+        ),
+        case(
             "near-root-only",
             around(),
             (100, 100),

@@ -9,6 +9,7 @@ use web_time::Instant;
 
 use crate::compare::judge::{NoDepthRange, explained_by_each, judge};
 use crate::compare::model::Model;
+use crate::compare::tell_apart::tell_apart;
 use crate::compare::{Deviation, Difference, RangeFrom, Theirs};
 use crate::render::depth_map::DepthRange;
 use crate::render::sampling::Sampling;
@@ -89,6 +90,8 @@ pub struct ComparisonPixels {
     pub not_fitted_because: Option<String>,
     /// The statements that explain the difference (empty: none does, or none was looked for).
     pub statements: Vec<Deviation>,
+    /// With a near tie: what would tell its alternatives apart.
+    pub tell_apart: Option<String>,
     /// The alternatives of a near tie, each a `+`-joined list of statements (empty: no tie).
     pub alternatives: Vec<String>,
     /// When nothing explains it all: the statements that explain part of it.
@@ -216,6 +219,7 @@ pub fn compare_file(
         exact,
         difference,
         model: diagnosis.stated_model().copied(),
+        tell_apart: tell_apart(scene, &judged.view, diagnosis, given),
         not_fitted_because: diagnosis.not_fitted_because(),
         statements: diagnosis.stated().to_vec(),
         alternatives: diagnosis
@@ -289,6 +293,7 @@ pub fn compare_quality(
         exact,
         difference,
         model: None,
+        tell_apart: None,
         not_fitted_because: None,
         statements: Vec::new(),
         alternatives: Vec::new(),

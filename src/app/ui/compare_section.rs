@@ -216,6 +216,9 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
             if !pixels.alternatives.is_empty() {
                 ui.label(format!("or: {}", pixels.alternatives.join(" | ")));
             }
+            if let Some(tell_apart) = &pixels.tell_apart {
+                ui.label(tell_apart);
+            }
             // Each statement with what it means and what to check in their code; pointed at,
             // its gallery picture, and its pixels highlighted in the difference.
             for (index, deviation) in pixels.statements.iter().chain(&pixels.partial).enumerate() {

@@ -109,5 +109,81 @@ pub fn search_hit_rule(
             None => break,
         }
     }
+    if best.0 > 0 {
+        let tuned = search_tmin(scorer, &best.1, seen);
+        let score = scorer.score(&tuned);
+        if score < best.0 {
+            best = (score, tuned);
+        }
+    }
+    best.1
+}
+
+/// The largest tmin a search tries, either way from the camera's plane: a program's tmin is a
+/// small constant (0, an epsilon, −1, −0.81, …), and a large one would say that a program
+/// refuses what it plainly sees (a scene's front spheres refused make another scene's picture).
+const TMIN_REACH: f64 = 2.0;
+
+/// Thresholds a tmin search tries in one pass.
+const TMIN_STEPS: usize = 24;
+
+/// The model with the tmin (any value within [`TMIN_REACH`] of the camera's plane; the far root
+/// tried where the near one is refused, or not) that explains their images best. A tmin changes what is drawn only where it passes a
+/// near root, so it is searched among the near roots `model` would draw with no tmin: a pass
+/// over thresholds between their quantiles, then a second between the neighbours of the best.
+fn search_tmin(scorer: &mut Scorer<'_>, model: &Model, seen: &mut Vec<(usize, Model)>) -> Model {
+    let mut open = *model;
+    open.hits.tmin = f64::NEG_INFINITY;
+    open.hits.far_when_near_refused = true;
+    open.hits.far_only = false;
+    let hits = scorer.hits(&open);
+    let mut near: Vec<f64> = hits
+        .t
+        .iter()
+        .copied()
+        .filter(|t| (-TMIN_REACH..=TMIN_REACH).contains(t))
+        .collect();
+    near.sort_by(f64::total_cmp);
+    near.dedup();
+    if near.len() < 2 {
+        return *model;
+    }
+    let mut best = (scorer.score(model), *model);
+    let (mut lo, mut hi) = (0, near.len() - 1);
+    for _ in 0..2 {
+        let span = hi - lo;
+        let thresholds: Vec<(usize, f64)> = (1..=TMIN_STEPS)
+            .map(|k| lo + span * k / (TMIN_STEPS + 1))
+            .filter(|&i| i > 0)
+            .map(|i| (i, 0.5 * (near[i - 1] + near[i])))
+            .collect();
+        let mut candidates = Vec::new();
+        for &(_, tmin) in &thresholds {
+            for far in [true, false] {
+                let mut rule = open.hits;
+                rule.tmin = tmin;
+                rule.far_when_near_refused = far;
+                candidates.push(with_rule(scorer, &open, rule));
+            }
+        }
+        let scores = scorer.scores_of(&candidates);
+        let mut best_at = None;
+        for (k, (candidate, score)) in candidates.into_iter().zip(scores).enumerate() {
+            if let Some(score) = score {
+                seen.push((score, candidate));
+                if score < best.0 {
+                    best = (score, candidate);
+                    best_at = Some(k / 2);
+                }
+            }
+        }
+        let Some(at) = best_at else { break };
+        // Between the thresholds either side of the best.
+        lo = if at == 0 { lo } else { thresholds[at - 1].0 };
+        hi = thresholds.get(at + 1).map_or(hi, |&(i, _)| i);
+        if hi <= lo + 1 {
+            break;
+        }
+    }
     best.1
 }

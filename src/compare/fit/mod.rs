@@ -10,6 +10,7 @@
 //! * [`geometry`]: the pixel map, by Levenberg–Marquardt.
 //! * [`hit_rule`]: the depth test, tmin and roots.
 //! * [`depth`]: the depth map.
+//! * [`sample_grid`]: several samples per pixel on a grid of the program's own.
 //! * [`polish`]: the pixel map moved on both images; a tilt left out where it need not be.
 //! * [`score`]: pixels left unexplained, with the renders kept.
 
@@ -18,6 +19,7 @@ pub mod geometry;
 pub mod hit_rule;
 pub mod labels;
 pub mod polish;
+pub mod sample_grid;
 pub mod score;
 pub mod starts;
 
@@ -30,6 +32,7 @@ use self::labels::Labels;
 use self::polish::{
     is_diagonal, is_named_map, polish_with_images, turned_a_quarter, untilted_if_as_good,
 };
+use self::sample_grid::{MAX_GRID_SPHERES, search_sample_grid};
 use self::score::Scorer;
 use self::starts::{block_square, named_geometry, only_block, starts};
 use super::model::{Model, Visible, colour_bytes};
@@ -414,6 +417,9 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
     model = fit_colour(scorer, &model, seen_background, &mut seen);
     model = fit_depth(scorer, &model);
     model = untilted_if_as_good(scorer, model, step);
+    if scorer.score(&model) > 0 && scene.spheres.len() <= MAX_GRID_SPHERES {
+        model = search_sample_grid(scorer, &model, &mut seen);
+    }
     if scorer.theirs.depth.is_some() {
         // The depth range asked for, with the map moved to draw both images best: a lone
         // sphere's size and its depth ramp trade against each other, and the silhouettes alone

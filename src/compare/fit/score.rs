@@ -44,7 +44,7 @@ pub struct Theirs<'a> {
 }
 
 /// The part of a model that decides the hits, as bits (to key the renders).
-type HitKey = [u64; 15];
+type HitKey = [u64; 16];
 
 fn hit_key(model: &Model) -> HitKey {
     let axes = model.pixels.axes_world.to_cols_array();
@@ -71,6 +71,9 @@ fn hit_key(model: &Model) -> HitKey {
         model
             .drawn_px
             .map_or(u64::MAX, |(x, y)| u64::from(x) << 32 | u64::from(y)),
+        model.samples.map_or(u64::MAX, |grid| {
+            u64::from(grid.per_side) << 1 | u64::from(grid.last_wins)
+        }),
     ]
 }
 
