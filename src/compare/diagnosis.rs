@@ -442,6 +442,37 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
         if !hits_right {
             statements.retain(|s| !s.is_about_depth());
         }
+        // A flip said in part where a mirror explains as much (a scene that looks alike both
+        // ways) is a guess: neither is said.
+        let left = scorer.score(&rebuild(view, &statements));
+        let turns = [Mistake::FlippedVertically, Mistake::Mirrored];
+        statements = statements
+            .iter()
+            .copied()
+            .filter(|statement| {
+                let Deviation::Word(word) = statement else {
+                    return true;
+                };
+                let Some(other) = turns
+                    .iter()
+                    .copied()
+                    .find(|t| turns.contains(word) && t != word)
+                else {
+                    return true;
+                };
+                let swapped: Vec<Deviation> = statements
+                    .iter()
+                    .map(|s| {
+                        if s == statement {
+                            Deviation::Word(other)
+                        } else {
+                            *s
+                        }
+                    })
+                    .collect();
+                scorer.score(&rebuild(view, &swapped)) > left + near
+            })
+            .collect();
         let left = scorer.score(&rebuild(view, &statements));
         let each_needed = statements.iter().enumerate().all(|(i, _)| {
             let mut without = statements.clone();

@@ -109,13 +109,6 @@ pub fn search_hit_rule(
             None => break,
         }
     }
-    if best.0 > 0 {
-        let tuned = search_tmin(scorer, &best.1, seen);
-        let score = scorer.score(&tuned);
-        if score < best.0 {
-            best = (score, tuned);
-        }
-    }
     best.1
 }
 
@@ -131,7 +124,11 @@ const TMIN_STEPS: usize = 24;
 /// tried where the near one is refused, or not) that explains their images best. A tmin changes what is drawn only where it passes a
 /// near root, so it is searched among the near roots `model` would draw with no tmin: a pass
 /// over thresholds between their quantiles, then a second between the neighbours of the best.
-fn search_tmin(scorer: &mut Scorer<'_>, model: &Model, seen: &mut Vec<(usize, Model)>) -> Model {
+pub fn search_tmin(
+    scorer: &mut Scorer<'_>,
+    model: &Model,
+    seen: &mut Vec<(usize, Model)>,
+) -> Model {
     let mut open = *model;
     open.hits.tmin = f64::NEG_INFINITY;
     open.hits.far_when_near_refused = true;

@@ -27,7 +27,7 @@ use glam::DVec2;
 
 use self::depth::fit_depth;
 use self::geometry::{Affine, Problem};
-use self::hit_rule::search_hit_rule;
+use self::hit_rule::{search_hit_rule, search_tmin};
 use self::labels::Labels;
 use self::polish::{
     is_diagonal, is_named_map, polish_with_images, turned_a_quarter, untilted_if_as_good,
@@ -417,6 +417,10 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
     model = fit_colour(scorer, &model, seen_background, &mut seen);
     model = fit_depth(scorer, &model);
     model = untilted_if_as_good(scorer, model, step);
+    if scorer.score(&model) > 0 {
+        // A tmin of any value, last: searched earlier, it can lead the map astray.
+        model = search_tmin(scorer, &model, &mut seen);
+    }
     if scorer.score(&model) > 0 && scene.spheres.len() <= MAX_GRID_SPHERES {
         model = search_sample_grid(scorer, &model, &mut seen);
     }
