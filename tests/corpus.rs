@@ -174,8 +174,6 @@ fn kskun_s_scene1_07_is_named_as_its_code_makes_it() {
 /// itself used another: stackoverflow0 and ruishaopu561 read the range as whole numbers
 /// (14 … 19 for 14.5 … 19.5). Programs that normalise depth per image (dengpingzju,
 /// moonlightcc) or map another quantity are left out: their ranges are not the command line's.
-/// kskun's scene1_07 (no square root: its greys hold no straight ramp in t) was once refused;
-/// its range is read by rank, its greys beside the exact t.
 #[test]
 fn the_depth_range_read_back_is_the_one_the_program_used() {
     let binary = Path::new(env!("CARGO_BIN_EXE_raytracer"));
@@ -193,6 +191,9 @@ fn the_depth_range_read_back_is_the_one_the_program_used() {
             let expected = match (program.name.as_str(), image.file) {
                 // 14.5 and 19.5 read as whole numbers by the program.
                 ("stackoverflow0" | "ruishaopu561", "depth1_05.png") => "14 19".to_owned(),
+                // No square root: on scene1_07 its grey levels hold no straight ramp in t, so
+                // no range is read back (the user is asked for one).
+                ("kskun", "depth1_07.png") => "none".to_owned(),
                 _ => format!("{min} {max}"),
             };
             let inferred = infer_range(binary, program, image);

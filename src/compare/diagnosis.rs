@@ -18,7 +18,7 @@ use super::fit::score::{Scorer, Theirs, Unexplained};
 use super::mistake::{Mistake, MistakeSet};
 use super::model::Model;
 use super::needed::{NEEDED_SHARE, needed, per_image, rounded};
-use super::shorter::shorter_answers;
+use super::shorter::{shorter_answers, without_turn_guesses};
 use crate::render::View;
 use crate::scene::Scene;
 
@@ -442,37 +442,12 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
         if !hits_right {
             statements.retain(|s| !s.is_about_depth());
         }
-        // A flip said in part where a mirror explains as much (a scene that looks alike both
-        // ways) is a guess: neither is said.
-        let left = scorer.score(&rebuild(view, &statements));
-        let turns = [Mistake::FlippedVertically, Mistake::Mirrored];
-        statements = statements
-            .iter()
-            .copied()
-            .filter(|statement| {
-                let Deviation::Word(word) = statement else {
-                    return true;
-                };
-                let Some(other) = turns
-                    .iter()
-                    .copied()
-                    .find(|t| turns.contains(word) && t != word)
-                else {
-                    return true;
-                };
-                let swapped: Vec<Deviation> = statements
-                    .iter()
-                    .map(|s| {
-                        if s == statement {
-                            Deviation::Word(other)
-                        } else {
-                            *s
-                        }
-                    })
-                    .collect();
-                scorer.score(&rebuild(view, &swapped)) > left + near
-            })
-            .collect();
+        if scorer.theirs.colour.is_none() {
+            // A depth image alone: which hit is drawn shows only in its greys, which a partial
+            // answer does not read right; only where rays start is said in part.
+            statements.retain(Deviation::is_about_geometry);
+        }
+        statements = without_turn_guesses(&mut scorer, &statements, near);
         let left = scorer.score(&rebuild(view, &statements));
         let each_needed = statements.iter().enumerate().all(|(i, _)| {
             let mut without = statements.clone();

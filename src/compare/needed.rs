@@ -133,6 +133,14 @@ pub(super) fn rounded(
                         factor: diagonal.map(|v| round(v, decimals + 2)),
                     }
                 }
+                Deviation::SwappedAxes { relative } => {
+                    // A picture that looks the same swapped (a lone disc at the centre): each
+                    // axis's scale, unswapped.
+                    Deviation::Scaled {
+                        factor: DVec2::new(relative.x_axis.y.abs(), relative.y_axis.x.abs())
+                            .map(|v| round(v, decimals + 2)),
+                    }
+                }
                 Deviation::Tilt { per_unit } => Deviation::Tilt {
                     per_unit: per_unit.map(|v| round(v, decimals)),
                 },

@@ -4,8 +4,9 @@
 //! a mirrored depth image) that draws their pixels as well as one known mistake does. Here the
 //! answer's own length is challenged: every single known mistake (and, against an answer of three
 //! or more statements, every possible pair) — alone, with the answer's statements about how depth
-//! and colour become bytes, and with a depth map fitted again under it — is scored against their
-//! images; those that leave no more pixels
+//! and colour become bytes, and with a depth map fitted again under it (beside the answer's rule
+//! for which hit is drawn, its offset within the pixel and its scale, or not) — is scored against
+//! their images; those that leave no more pixels
 //! than the answer (within the near-tie allowance) are offered as answers, and the diagnosis
 //! states the shortest.
 
@@ -82,6 +83,50 @@ pub(super) fn shorter_answers(
     }
     let bytes = byte_statements(answer);
     let rules = hit_statements(answer);
+    // The answer's fitted values of where rays start that a known mistake keeps its meaning
+    // beside (an offset within the pixel, a scale): a mirror said with the answer's offset.
+    let placed: Vec<Deviation> = answer
+        .iter()
+        .copied()
+        .filter(|statement| {
+            matches!(
+                statement,
+                Deviation::SampleOffset { .. }
+                    | Deviation::CropNotCentred { .. }
+                    | Deviation::Scaled { .. }
+            )
+        })
+        .collect();
+    // A mirror or a flip said in the answer's stead counts a sample's offset within the pixel
+    // from the other side: each way is tried.
+    let mut placings: Vec<Vec<Deviation>> = Vec::new();
+    if !placed.is_empty() {
+        for (mirror_x, mirror_y) in [(false, false), (true, false), (false, true), (true, true)] {
+            let turned: Vec<Deviation> = placed
+                .iter()
+                .map(|statement| match *statement {
+                    Deviation::SampleOffset { offset_px } => Deviation::SampleOffset {
+                        offset_px: glam::DVec2::new(
+                            if mirror_x {
+                                1.0 - offset_px.x
+                            } else {
+                                offset_px.x
+                            },
+                            if mirror_y {
+                                1.0 - offset_px.y
+                            } else {
+                                offset_px.y
+                            },
+                        ),
+                    },
+                    other => other,
+                })
+                .collect();
+            if !placings.contains(&turned) {
+                placings.push(turned);
+            }
+        }
+    }
     let mut candidates: Vec<Vec<Deviation>> = Vec::new();
     for set in sets {
         let words: Vec<Deviation> = set.mistakes().into_iter().map(Deviation::Word).collect();
@@ -94,6 +139,11 @@ pub(super) fn shorter_answers(
             if !rules.is_empty() {
                 rule_sets.push(rules.clone());
             }
+            for placed in &placings {
+                rule_sets.push(placed.clone());
+                rule_sets.push([placed.clone(), rules.clone()].concat());
+            }
+            rule_sets.dedup();
             for with_rules in rule_sets {
                 let model = rebuild(&view, &[words.clone(), with_rules].concat());
                 let fitted = fit_depth_quickly(scorer, &model);
@@ -124,4 +174,43 @@ pub(super) fn shorter_answers(
         }
     }
     shorter
+}
+
+/// `statements` (a partial answer's) without a flip or a mirror that the other explains as well
+/// (within `near` pixels): on a scene that looks alike both ways, naming one is a guess.
+pub(super) fn without_turn_guesses(
+    scorer: &mut Scorer<'_>,
+    statements: &[Deviation],
+    near: usize,
+) -> Vec<Deviation> {
+    let view = *scorer.view;
+    let left = scorer.score(&rebuild(&view, statements));
+    let turns = [Mistake::FlippedVertically, Mistake::Mirrored];
+    statements
+        .iter()
+        .copied()
+        .filter(|statement| {
+            let Deviation::Word(word) = statement else {
+                return true;
+            };
+            let Some(other) = turns
+                .iter()
+                .copied()
+                .find(|t| turns.contains(word) && t != word)
+            else {
+                return true;
+            };
+            let swapped: Vec<Deviation> = statements
+                .iter()
+                .map(|s| {
+                    if s == statement {
+                        Deviation::Word(other)
+                    } else {
+                        *s
+                    }
+                })
+                .collect();
+            scorer.score(&rebuild(&view, &swapped)) > left + near
+        })
+        .collect()
 }

@@ -34,7 +34,7 @@ use self::polish::{
 };
 use self::sample_grid::{MAX_GRID_SPHERES, search_sample_grid};
 use self::score::Scorer;
-use self::starts::{block_square, named_geometry, only_block, starts};
+use self::starts::{block_square, differs_outside, named_geometry, only_block, starts};
 use super::model::{Model, Visible, colour_bytes};
 
 /// Levenberg–Marquardt steps from each start before the best few are carried on.
@@ -263,7 +263,7 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
     };
     // A non-square image whose part beyond the min(W, H) square is one flat colour may have
     // been drawn only there: that part says nothing of the map.
-    let block = only_block(&view, scorer.theirs);
+    let block = only_block(&view, scorer.theirs).filter(|&(side, _)| differs_outside(scorer, side));
     let mut from = starts(view.width_px, view.height_px);
     if let Some((columns, rows)) = block {
         for (index, label) in labels.per_pixel.iter_mut().enumerate() {
@@ -406,6 +406,25 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
         if scorer.score(&refitted) <= scorer.score(&model) {
             model = refitted;
             ties = relabelled_ties;
+        }
+    }
+    if scorer.theirs.colour.is_none() && scorer.score(&model) > 0 {
+        // A depth image alone: its silhouettes look alike mirrored or flipped about the image's
+        // centre on a scene that is alike so, and the ramp of greys tells which.
+        let affine = Affine::of_map(&model.pixels, view.width_px, view.height_px, step);
+        for signs in [(-1.0, 1.0), (1.0, -1.0), (-1.0, -1.0)] {
+            let mut candidate = model;
+            candidate.pixels = Affine {
+                relative: affine.relative * glam::DMat2::from_diagonal(DVec2::from(signs)),
+                shift_px: affine.shift_px,
+            }
+            .pixel_map(view.width_px, view.height_px, step);
+            candidate = fit_depth(scorer, &candidate);
+            let score = scorer.score(&candidate);
+            seen.push((score, candidate));
+            if score < scorer.score(&model) {
+                model = candidate;
+            }
         }
     }
     if let Some(at_course) = at_course

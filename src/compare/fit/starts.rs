@@ -6,9 +6,10 @@
 use glam::DVec2;
 
 use super::geometry::Affine;
-use super::score::Theirs;
+use super::score::{Scorer, Theirs};
 use crate::compare::mistake::{Mistake, MistakeSet};
 use crate::compare::model::Model;
+use crate::compare::model_render::{colour_image, depth_image};
 
 /// The geometric named points: the course's and the mistakes that move where rays start.
 pub(super) fn named_geometry(view: &crate::render::View) -> Vec<(usize, Model)> {
@@ -107,6 +108,40 @@ pub(super) fn only_block(view: &crate::render::View, theirs: Theirs<'_>) -> Opti
     outside
         .all(|colour| colour == first)
         .then_some((side, side))
+}
+
+/// Whether the exact images differ from theirs outside the lower-left `side` square: where
+/// they are the same there (a depth image's far spheres as black as the rest of that strip), a
+/// flat strip says nothing of loops that stop at min(W, H).
+pub(super) fn differs_outside(scorer: &mut Scorer<'_>, side: u32) -> bool {
+    let course = Model::course(scorer.view);
+    let (exact_colour, exact_depth) = {
+        let hits = scorer.hits(&course);
+        let view = scorer.view;
+        (
+            scorer
+                .theirs
+                .colour
+                .map(|_| colour_image(scorer.scene, &hits, &course)),
+            scorer
+                .theirs
+                .depth
+                .map(|_| depth_image(view, &hits, &course)),
+        )
+    };
+    let height = scorer.view.height_px;
+    let outside = |a: &image::RgbImage, b: &image::RgbImage| {
+        a.enumerate_pixels()
+            .zip(b.pixels())
+            .any(|((x, row, p), q)| (x >= side || height - 1 - row >= side) && p != q)
+    };
+    match (scorer.theirs.colour, exact_colour) {
+        (Some(theirs), Some(exact)) => outside(theirs, &exact),
+        _ => match (scorer.theirs.depth, exact_depth) {
+            (Some(theirs), Some(exact)) => outside(theirs, &exact),
+            _ => false,
+        },
+    }
 }
 
 /// The starts of the geometric fit: the course's map, mirrored, upside down, turned, with axes
