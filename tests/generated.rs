@@ -252,3 +252,32 @@ fn single_images_of_generated_programs_get_no_false_statement() {
         );
     }
 }
+
+/// A non-square image whose rows are measured from an edge with one normaliser (the crop strip:
+/// cases 118, 140 and 254 of the report, each image alone) is said as a scale and where rays
+/// start, nothing else: the fit once stopped on a matrix a hair sheared and said it (`axes`, with
+/// or without a tie), which such a program does not do.
+#[test]
+fn a_strip_measured_from_an_edge_is_said_as_a_scale_not_a_shear() {
+    use generated::Given;
+    let cases = generated::cases(255);
+    for (seed, given) in [
+        (118, Given::Depth),
+        (140, Given::Colour),
+        (254, Given::Colour),
+    ] {
+        let (verdict, said, _) = cases[seed].diagnose_given(given);
+        assert_eq!(verdict, Verdict::Explained, "seed {seed}: {said:?}");
+        assert!(
+            said.iter()
+                .any(|s| s.starts_with("axes-scaled ") || s.starts_with("zoom ")),
+            "seed {seed}: {said:?}"
+        );
+        assert!(
+            !said
+                .iter()
+                .any(|s| s.starts_with("axes ") || s.starts_with("one of:")),
+            "seed {seed}: {said:?}"
+        );
+    }
+}

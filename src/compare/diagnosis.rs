@@ -275,6 +275,13 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
         .filter(|(score, _)| *score <= fitted.left + near)
         .collect();
     seen.sort_by_key(|(score, _)| *score);
+    // Plainer models first: many models seen differ from the fitted one by a hair.
+    let seen: Vec<&(usize, Model)> = fitted
+        .plainer
+        .iter()
+        .filter(|(score, _)| *score <= fitted.left + near)
+        .chain(seen)
+        .collect();
     let mut said: Vec<Vec<Deviation>> = Vec::new();
     for model in std::iter::once(&fitted.model).chain(seen.iter().map(|(_, m)| m)) {
         let described = describe(scene, view, model);
@@ -387,6 +394,24 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
                 && fitted_geometry
                 && (off_course(view, &rival) > 1.01 * off_course(view, &statements) + 1e-3
                     || same_map(view, &rival, &statements))
+            {
+                continue;
+            }
+            // A matrix where the answer says a scale, the rest the same, is the answer with
+            // more numbers: the scale draws their pixels as well (it was chosen so).
+            let scale_only = |list: &[Deviation]| {
+                let mut rest: Vec<&str> = names(list)
+                    .into_iter()
+                    .filter(|n| *n != "axes" && *n != "scaled")
+                    .collect();
+                rest.sort_unstable();
+                rest
+            };
+            if rival.iter().any(|d| matches!(d, Deviation::Axes { .. }))
+                && !statements
+                    .iter()
+                    .any(|d| matches!(d, Deviation::Axes { .. } | Deviation::SwappedAxes { .. }))
+                && scale_only(&rival) == scale_only(&statements)
             {
                 continue;
             }

@@ -30,7 +30,7 @@ use self::geometry::{Affine, Problem};
 use self::hit_rule::{search_hit_rule, search_tmin};
 use self::labels::Labels;
 use self::polish::{
-    is_diagonal, is_named_map, polish_with_images, turned_a_quarter, untilted_if_as_good,
+    is_diagonal, is_named_map, plainer, polish_with_images, turned_a_quarter, untilted_if_as_good,
 };
 use self::sample_grid::{MAX_GRID_SPHERES, search_sample_grid};
 use self::score::Scorer;
@@ -67,6 +67,9 @@ pub struct Fitted {
     pub differing_exact: usize,
     /// Other models scored on the way, with their pixels left (for near ties).
     pub seen: Vec<(usize, Model)>,
+    /// Plainer models than the one fitted (a scale beside a matrix a hair sheared), with their
+    /// pixels left: each is said and weighed before the models seen.
+    pub plainer: Vec<(usize, Model)>,
 }
 
 /// The pixel map (and, for named points, the tilt) that fits the labels best under `model`'s
@@ -228,6 +231,7 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
         left: differing_exact,
         differing_exact,
         seen: Vec::new(),
+        plainer: Vec::new(),
     };
     if differing_exact == 0 || scene.spheres.is_empty() {
         return fitted;
@@ -443,6 +447,8 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
     if scorer.score(&model) > 0 && scene.spheres.len() <= MAX_GRID_SPHERES {
         model = search_sample_grid(scorer, &model, &mut seen);
     }
+    // A plain scale beside a matrix a hair sheared, or swapped: the shorter story.
+    fitted.plainer = plainer(scorer, &model, step);
     if scorer.theirs.depth.is_some() {
         // The depth range asked for, with the map moved to draw both images best: a lone
         // sphere's size and its depth ramp trade against each other, and the silhouettes alone

@@ -1,12 +1,13 @@
 //! The pixel map moved on both images, colour and depth, by a pattern search of small steps
 //! (the silhouettes' least squares stop a hair off the fewest pixels wrong, and a lone sphere's
 //! size trades with its depth ramp); a fitted tilt left out where the map, moved without it,
-//! draws the images nearly as well; and what kind of map a model has (a known mistake's,
-//! diagonal, turned a quarter).
+//! draws the images nearly as well; plainer maps beside a fitted one (a scale beside a matrix a
+//! hair sheared or swapped); and what kind of map a model has (a known mistake's, diagonal,
+//! turned a quarter).
 
 use glam::DVec2;
 
-use super::depth::fit_depth_untilted;
+use super::depth::{fit_depth, fit_depth_untilted};
 use super::geometry::Affine;
 use super::score::Scorer;
 use super::starts::named_geometry;
@@ -38,15 +39,83 @@ pub(super) fn is_diagonal(model: &Model, step: f64) -> bool {
 /// of the pixels ([`Scorer::sampled_score`]), and the map found is kept only where it draws
 /// every pixel as well as `model`'s.
 pub(super) fn polish_with_images(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Model {
-    let polished = polish_on(scorer, model, step);
+    let polished = polish_on(scorer, model, step, &[0, 1, 2, 3, 4, 5]);
     if scorer.samples() && scorer.score(&polished) > scorer.score(model) {
         return *model;
     }
     polished
 }
 
-/// The pattern search of [`polish_with_images`], on [`Scorer::sampled_score`].
-fn polish_on(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Model {
+/// Plainer models than `model`, with the pixels each leaves: its map made diagonal where it is a
+/// hair sheared ([`diagonal_if_near`]), and swapped back where it is swapped ([`unswapped`], its
+/// depth ramp fitted again along the axes as they are now). Each is said and weighed before the
+/// models seen on the way, and stated where it draws their pixels as well.
+pub(super) fn plainer(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Vec<(usize, Model)> {
+    let mut plainer = Vec::new();
+    if let Some(diagonal) = diagonal_if_near(scorer, model, step) {
+        plainer.push((scorer.score(&diagonal), diagonal));
+    }
+    if let Some(turned) = unswapped(scorer, model, step) {
+        let mut turned = fit_depth(scorer, &turned);
+        turned = polish_with_images(scorer, &turned, step);
+        if is_diagonal(&turned, step) {
+            plainer.push((scorer.score(&turned), turned));
+        }
+    }
+    plainer
+}
+
+/// Largest off-diagonal part of a fitted matrix (of its largest entry) tried without it by
+/// [`diagonal_if_near`]: a shear of a degree or two is what a fit on a few silhouettes' edges
+/// can settle on in place of a plain scale.
+const NEAR_DIAGONAL: f64 = 0.05;
+
+/// `model`'s pixel map made diagonal (its off-diagonal part dropped) and moved on the images
+/// with its scales and shift only, where that part is small ([`NEAR_DIAGONAL`]): a fit that
+/// stops on a matrix a hair sheared leaves the plain scale untried, and the scale is the shorter
+/// story where it draws their pixels as well.
+fn diagonal_if_near(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Option<Model> {
+    let view = *scorer.view;
+    let affine = Affine::of_map(&model.pixels, view.width_px, view.height_px, step);
+    let m = affine.relative;
+    let largest = m.to_cols_array().iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    let off = m.x_axis.y.abs().max(m.y_axis.x.abs());
+    if is_diagonal(model, step) || off > NEAR_DIAGONAL * largest {
+        return None;
+    }
+    let mut diagonal = *model;
+    diagonal.pixels = Affine {
+        relative: glam::DMat2::from_diagonal(DVec2::new(m.x_axis.x, m.y_axis.y)),
+        shift_px: affine.shift_px,
+    }
+    .pixel_map(view.width_px, view.height_px, step);
+    Some(polish_on(scorer, &diagonal, step, &[0, 3, 4, 5]))
+}
+
+/// `model`'s pixel map with its axes swapped back, where they are swapped (diagonal turned a
+/// quarter): each pixel axis keeps the scale it had, now along its own screen axis, and the
+/// depth ramp turns with it; moved on the images with its scales and shift only. A lone disc at
+/// the centre looks the same swapped, and the plain scale is the shorter story.
+fn unswapped(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Option<Model> {
+    if is_diagonal(model, step) || !is_diagonal(&turned_a_quarter(model), step) {
+        return None;
+    }
+    let view = *scorer.view;
+    let affine = Affine::of_map(&model.pixels, view.width_px, view.height_px, step);
+    let m = affine.relative;
+    let mut turned = *model;
+    turned.pixels = Affine {
+        relative: glam::DMat2::from_diagonal(DVec2::new(m.x_axis.y, m.y_axis.x)),
+        shift_px: affine.shift_px,
+    }
+    .pixel_map(view.width_px, view.height_px, step);
+    turned.t_ramp = glam::DVec3::new(model.t_ramp.y, model.t_ramp.x, model.t_ramp.z);
+    Some(polish_on(scorer, &turned, step, &[0, 3, 4, 5]))
+}
+
+/// The pattern search of [`polish_with_images`], on [`Scorer::sampled_score`], moving the map's
+/// parameters `whole` ([`Affine::to_array`]'s order) in the first rounds.
+fn polish_on(scorer: &mut Scorer<'_>, model: &Model, step: f64, whole: &[usize]) -> Model {
     let view = *scorer.view;
     let (width, height) = (view.width_px, view.height_px);
     let with = |values: [f64; 6]| {
@@ -59,11 +128,15 @@ fn polish_on(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Model {
     let mut steps = [0.004, 0.004, 0.004, 0.004, 0.2, 0.2];
     for round in 0..POLISH_ROUNDS {
         // The whole map in the first rounds; then only where it starts, finer.
-        let parameters = if round < WHOLE_MAP_ROUNDS { 0..6 } else { 4..6 };
+        let parameters: &[usize] = if round < WHOLE_MAP_ROUNDS {
+            whole
+        } else {
+            &[4, 5]
+        };
         let mut moved = true;
         while moved && best.0 > 0 {
             moved = false;
-            for i in parameters.clone() {
+            for &i in parameters {
                 for sign in [-1.0, 1.0] {
                     let mut values = best.1;
                     values[i] += sign * steps[i];
