@@ -11,10 +11,8 @@ use std::path::Path;
 use std::time::{Duration, Instant};
 
 use egui::{Key, Modifiers, vec2};
-use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use raytracer::app::ViewerApp;
-use raytracer::app::compare::{CompareShow, CompareSource};
+use raytracer::app::compare::{CompareShow, CompareSource, ImageKind};
 use raytracer::compare::{Mistake, MistakeSet};
 use raytracer::oracle::mistaken::render_variant;
 use raytracer::render::View;
@@ -22,9 +20,7 @@ use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{Filter, Sampler, Sampling};
 use raytracer::scene::load_scene;
 
-use common::{click, settle, viewer};
-
-type App = Harness<'static, ViewerApp>;
+use common::{click, compare_image, label_shown, settle, viewer, wait_for_comparison};
 
 const SCENE: &str = "tests/compare/every-mistake.txt";
 
@@ -47,33 +43,6 @@ fn write_theirs(folder: &Path, mistakes: MistakeSet) -> (String, String) {
     )
 }
 
-/// Steps until no comparison is being computed and the frame on screen is current.
-fn wait_for_comparison(harness: &mut App) {
-    let deadline = Instant::now() + Duration::from_secs(120);
-    loop {
-        harness.step();
-        if !harness.state().comparing() {
-            break;
-        }
-        assert!(Instant::now() < deadline, "the comparison did not finish");
-        std::thread::sleep(Duration::from_millis(5));
-    }
-    settle(harness);
-    harness.run_steps(2);
-}
-
-/// Types `path` into the Compare section's image field and presses "Compare image".
-fn compare_image(harness: &mut App, path: &str) {
-    harness.get_by_label("image").scroll_to_me();
-    harness.run_steps(3);
-    harness.get_by_label("image").click();
-    harness.step();
-    harness.get_by_label("image").type_text(path);
-    harness.step();
-    click(harness, "Compare image");
-    wait_for_comparison(harness);
-}
-
 /// `n` with its thousands separated by commas, as the viewer writes counts.
 fn with_commas(n: usize) -> String {
     let digits = n.to_string();
@@ -85,10 +54,6 @@ fn with_commas(n: usize) -> String {
         out.push(digit);
     }
     out
-}
-
-fn label_shown(harness: &App, text: &str) -> bool {
-    harness.query_by_label_contains(text).is_some()
 }
 
 #[test]
@@ -495,4 +460,33 @@ fn their_image_written_again_is_compared_again() {
     settle(&mut harness);
     harness.run_steps(2);
     assert!(label_shown(&harness, "match: yes"));
+}
+
+/// A depth image given as colour (the default), named "mine.png", is judged as a depth image by its
+/// content, and says so; one click on "colour" judges it again at once, as clicked.
+#[test]
+fn a_depth_image_given_as_colour_is_recognised_and_one_click_judges_it_as_clicked() {
+    use egui::accesskit::Role::RadioButton;
+    let folder = tempfile::tempdir().unwrap();
+    let plain = folder.path().join("mine.png");
+    std::fs::rename(write_theirs(folder.path(), MistakeSet::NONE).1, &plain).unwrap();
+    let mut harness = viewer(Some(scene_file()));
+    compare_image(&mut harness, &plain.display().to_string());
+    let comparison = harness.state().comparison().unwrap().clone();
+    assert_eq!(comparison.kind, ImageKind::Depth);
+    assert!(comparison.difference.depth_matches() && label_shown(&harness, "match: yes"));
+    let assumed = comparison.kind_assumed.expect("what was assumed is said");
+    let said = "judged as a depth image: every pixel is grey";
+    assert!(assumed.starts_with(said), "{assumed}");
+    let offered = format!("{assumed}; click colour above to judge it as a colour image");
+    assert!(label_shown(&harness, &offered));
+    harness.get_by_role_and_label(RadioButton, "colour").hover();
+    harness.step();
+    harness.get_by_role_and_label(RadioButton, "colour").click();
+    harness.run_steps(3);
+    wait_for_comparison(&mut harness);
+    let comparison = harness.state().comparison().unwrap();
+    assert_eq!(comparison.kind, ImageKind::Colour);
+    assert_eq!(comparison.kind_assumed, None);
+    assert!(label_shown(&harness, "match: no"));
 }

@@ -13,6 +13,7 @@ use raytracer::app::depth_stats::visible_t;
 use raytracer::app::navigate;
 use raytracer::app::ui::gestures::ORBIT_RAD_PER_POINT;
 use raytracer::app::ui::histogram::{MAX_HANDLE_LABEL, MIN_HANDLE_LABEL, histogram_axis};
+use raytracer::explore::initial_depth_range;
 use raytracer::oracle::ray_loop::render_reference;
 use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{NO_HIT, View};
@@ -393,6 +394,9 @@ fn the_probe_reports_the_sphere_under_the_pointer_a_click_pins_it_and_trace_show
 #[test]
 fn dragging_a_histogram_end_moves_the_depth_range() {
     let mut harness = viewer("scene1_03.txt");
+    let scene = harness.state().loaded_scene().scene.clone(); // the t seen, not the course's
+    harness.state_mut().view_mut().depth_range = initial_depth_range(&scene, &view(&harness));
+    settle(&mut harness);
     let before = view(&harness).depth_range;
     let histogram = harness.state().histogram().expect("a histogram").clone();
     for (label, to_the_left) in [(MAX_HANDLE_LABEL, true), (MIN_HANDLE_LABEL, false)] {

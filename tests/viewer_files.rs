@@ -292,15 +292,32 @@ fn course_files_are_the_course_images_and_their_command_and_exports_are_named_af
     settle(&mut harness);
     // Exports are named after the scene on screen.
     assert_eq!(harness.state().settings().export.path, "scene1_04.png");
-    // The view moved and resized, the course's range set: the course files are still the
-    // course's command's, over the range in use.
+    // A course scene opens with the course's range (its line's -depth 12 17).
+    let range = harness.state().view().depth_range;
+    assert_eq!((range.min_t, range.max_t), (12.0, 17.0));
+    // The view moved, the range changed: the course files are still the course's command's,
+    // and the message says whose range they are over.
     harness.state_mut().view_mut().center_world.y += 0.3;
     harness.state_mut().view_mut().depth_range =
-        raytracer::render::depth_map::DepthRange::new(12.0, 17.0);
+        raytracer::render::depth_map::DepthRange::new(13.0, 15.5);
     settle(&mut harness);
     harness.state_mut().settings_mut().export.path =
         folder.path().join("scene1_04.png").display().to_string();
     press(&mut harness, "Course files");
+    assert!(
+        harness
+            .state()
+            .wait_for_worker(std::time::Duration::from_secs(20))
+    );
+    harness.run_steps(2);
+    let (message, error) = harness.state().message().unwrap();
+    assert!(!error, "{message}");
+    assert!(
+        message.starts_with(
+            "wrote the course's files for scene1_04.txt (its line's -size 200 200 -depth 12 17):"
+        ),
+        "{message}"
+    );
     let names = ["output1_04.tga", "depth1_04.tga"];
     // The course's colour image, pixel for pixel.
     let reference = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference");
@@ -357,6 +374,52 @@ fn course_files_are_the_course_images_and_their_command_and_exports_are_named_af
     // A second time, the files exist: it asks before replacing them.
     press(&mut harness, "Course files");
     assert!(harness.query_by_label("Replace").is_some());
+}
+
+/// A scene that is not one of the course's (a course scene's text under another name): it opens
+/// with the range of what its camera sees, and "Course files" writes at the course's size over
+/// the range in use, and says so, with the range, in its message and its command line.
+#[test]
+fn course_files_of_a_scene_not_the_courses_say_which_range_they_used() {
+    let folder = tempfile::tempdir().unwrap();
+    let mine = folder.path().join("mine.txt");
+    std::fs::copy(scene_path("scene1_04.txt"), &mine).unwrap();
+    let mut harness = egui_kittest::Harness::builder()
+        .with_size(egui::vec2(1000.0, 700.0))
+        .build_eframe(|cc| {
+            raytracer::app::ViewerApp::new(
+                cc,
+                raytracer::cli::ViewerRequest {
+                    input: Some(mine.clone()),
+                    ..Default::default()
+                },
+            )
+        });
+    settle(&mut harness);
+    let range = harness.state().view().depth_range;
+    assert!(
+        (range.min_t, range.max_t) != (12.0, 17.0),
+        "{range:?}: the course's range for a scene that is not the course's"
+    );
+    harness.state_mut().settings_mut().export.path =
+        folder.path().join("mine.png").display().to_string();
+    press(&mut harness, "Course files");
+    assert!(
+        harness
+            .state()
+            .wait_for_worker(std::time::Duration::from_secs(20))
+    );
+    harness.run_steps(2);
+    let (message, error) = harness.state().message().unwrap();
+    assert!(!error, "{message}");
+    let said = format!("-size 200 200 -depth {} {};", range.min_t, range.max_t);
+    assert!(message.contains(&said), "{message}");
+    assert!(message.contains("not a course scene"), "{message}");
+    let script = std::fs::read_to_string(folder.path().join("mine_command.sh")).unwrap();
+    assert!(
+        script.contains(&format!("-depth {} {}", range.min_t, range.max_t)),
+        "{script}"
+    );
 }
 
 /// A file dropped on the window, as the desktop's integration hands it over: by its path.

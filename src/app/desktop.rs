@@ -109,7 +109,7 @@ impl ViewerApp {
 
     /// Writes the files `stage` stages, all or nothing, in the background: the status bar says
     /// `running` meanwhile, then `done` and the full path of each file written (or why none was).
-    pub(super) fn write_files(&mut self, running: &str, done: &'static str, stage: Stager) {
+    pub(super) fn write_files(&mut self, running: &str, done: String, stage: Stager) {
         let write = move || {
             let mut set = FileSet::new();
             stage(&mut set)?;

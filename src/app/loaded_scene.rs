@@ -20,8 +20,12 @@ pub struct LoadedScene {
     /// The scene came as bytes (a browser page's dropped, picked or fetched file), not from a
     /// file the viewer can read again: there is nothing to reload or watch.
     pub in_memory: bool,
-    /// The file's own camera at the initial depth range ("reset view" returns here).
+    /// The file's own camera at the initial depth range ("reset view" returns here): the
+    /// course's range for a course scene, else the range of what the camera sees.
     pub file_view: View,
+    /// The depth range of the course's command line, for a scene named as one of the course's
+    /// (`scene1_04.txt`): what it opens with and what "Course files" writes over.
+    pub course_range: Option<crate::render::depth_map::DepthRange>,
 }
 
 impl LoadedScene {
@@ -33,12 +37,19 @@ impl LoadedScene {
             size_px.1,
             crate::render::depth_map::DepthRange::new(0.0, 1.0),
         );
-        file_view.depth_range = initial_depth_range(&scene, &file_view);
+        let course_range = path
+            .as_deref()
+            .and_then(Path::file_name)
+            .and_then(|name| crate::scene::bundled::course_range_of(&name.to_string_lossy()))
+            .map(|(min, max)| crate::render::depth_map::DepthRange::new(min, max));
+        file_view.depth_range =
+            course_range.unwrap_or_else(|| initial_depth_range(&scene, &file_view));
         Self {
             scene: Arc::new(scene),
             path,
             in_memory: false,
             file_view,
+            course_range,
         }
     }
 

@@ -278,7 +278,7 @@ impl ViewerApp {
 
     /// The page's way to write the files `stage` stages: each downloaded now, named by its last
     /// part (the desktop writes them: `app::desktop`).
-    pub(super) fn write_files(&mut self, _running: &str, _done: &'static str, stage: Stager) {
+    pub(super) fn write_files(&mut self, _running: &str, _done: String, stage: Stager) {
         let mut memory = FilesInMemory::default();
         let files = stage(&mut memory).map(|()| {
             memory

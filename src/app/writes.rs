@@ -32,7 +32,7 @@ pub(crate) type Stager = Box<dyn FnOnce(&mut dyn Stage) -> Result<(), String> + 
 /// files it stages (the platform's seam writes them, or downloads them in a page).
 pub(crate) struct StagedWrite {
     pub(crate) running: &'static str,
-    pub(crate) done: &'static str,
+    pub(crate) done: String,
     pub(crate) stage: Stager,
 }
 
@@ -194,22 +194,46 @@ impl Writes {
         };
         Ok(StagedWrite {
             running: "exporting…",
-            done: "exported",
+            done: "exported".to_owned(),
             stage: Box::new(stage),
         })
     }
 
-    /// The course files of `written` (its depth range) into the export folder of `settings`.
+    /// The course files of `written` into the export folder of `settings`: over the course's
+    /// range for a course scene, else over the range in use, which the message then names.
     fn course_files(&self, settings: &Settings, written: &Written) -> StagedWrite {
+        let (range, done) = if let Some(range) = written.loaded.course_range {
+            let name = written
+                .loaded
+                .path
+                .as_deref()
+                .and_then(std::path::Path::file_name)
+                .map(|name| name.to_string_lossy().into_owned())
+                .unwrap_or_default();
+            let done = format!(
+                "wrote the course's files for {name} (its line's -size 200 200 -depth {} {}):",
+                range.min_t, range.max_t
+            );
+            (range, done)
+        } else {
+            let range = written.view.depth_range;
+            let done = format!(
+                "wrote course-style files at the course's size with the depth range in use \
+                 (-size 200 200 -depth {} {}; not a course scene, so no course line gives its \
+                 range):",
+                range.min_t, range.max_t
+            );
+            (range, done)
+        };
         let stage = course_files_stage(
             written.loaded,
             &settings.export.path,
-            written.view.depth_range,
+            range,
             self.program.clone(),
         );
         StagedWrite {
             running: "writing the course files…",
-            done: "wrote the course files",
+            done,
             stage: Box::new(stage),
         }
     }
@@ -271,7 +295,7 @@ fn save_view(scene: &Arc<Scene>, view: View, path: PathBuf) -> StagedWrite {
     let scene = Arc::clone(scene);
     StagedWrite {
         running: "saving the view…",
-        done: "saved the view as",
+        done: "saved the view as".to_owned(),
         stage: Box::new(move |set: &mut dyn Stage| {
             stage_view_as_scene(set, &scene, &view, &path).map_err(|e| e.to_string())
         }),

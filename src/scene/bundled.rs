@@ -47,6 +47,15 @@ pub fn course_lines() -> Vec<(&'static str, f64, f64)> {
         .collect()
 }
 
+/// The depth range of the course's command line for the scene file named `file_name` (the
+/// course's scenes by their names, `scene1_04.txt`, any case), if it is one of them.
+pub fn course_range_of(file_name: &str) -> Option<(f64, f64)> {
+    course_lines()
+        .into_iter()
+        .find(|(scene, _, _)| scene.eq_ignore_ascii_case(file_name))
+        .map(|(_, min, max)| (min, max))
+}
+
 #[cfg(test)]
 mod tests {
     use super::{BUNDLED_SCENES, course_lines};

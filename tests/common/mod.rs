@@ -136,3 +136,35 @@ pub(crate) fn viewer_sized(
     settle(&mut harness);
     harness
 }
+
+/// Steps until no comparison is being computed and the frame on screen is current.
+pub(crate) fn wait_for_comparison(harness: &mut Harness<'static, ViewerApp>) {
+    let deadline = Instant::now() + Duration::from_secs(120);
+    loop {
+        harness.step();
+        if !harness.state().comparing() {
+            break;
+        }
+        assert!(Instant::now() < deadline, "the comparison did not finish");
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    settle(harness);
+    harness.run_steps(2);
+}
+
+/// Types `path` into the Compare section's image field and presses "Compare image".
+pub(crate) fn compare_image(harness: &mut Harness<'static, ViewerApp>, path: &str) {
+    harness.get_by_label("image").scroll_to_me();
+    harness.run_steps(3);
+    harness.get_by_label("image").click();
+    harness.step();
+    harness.get_by_label("image").type_text(path);
+    harness.step();
+    click(harness, "Compare image");
+    wait_for_comparison(harness);
+}
+
+/// Whether a widget whose label contains `text` is shown.
+pub(crate) fn label_shown(harness: &Harness<'static, ViewerApp>, text: &str) -> bool {
+    harness.query_by_label_contains(text).is_some()
+}

@@ -21,8 +21,8 @@ use egui::{ColorImage, TextureHandle, TextureOptions};
 use image::RgbImage;
 
 pub use pixels::{
-    CompareSource, ComparisonPixels, ImageKind, QualityFigures, RangeSource, compare_file,
-    compare_quality,
+    CompareShow, CompareSource, ComparisonPixels, ImageKind, QualityFigures, RangeSource,
+    compare_file, compare_quality, recognised_kind,
 };
 pub(crate) use pixels::{OFF_LEVELS, REFERENCE_SAMPLES};
 
@@ -36,18 +36,6 @@ use crate::explore::trace::PixelTrace;
 use crate::render::depth_map::DepthRange;
 use crate::render::{Quality, View};
 use crate::scene::Scene;
-
-/// What the compared image shows.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum CompareShow {
-    /// The live render.
-    #[default]
-    Rendered,
-    /// Their image (or the picture at the chosen quality).
-    Theirs,
-    /// The heat map of the difference.
-    Difference,
-}
 
 /// A comparison on screen.
 pub(crate) struct Comparison {
@@ -66,6 +54,9 @@ pub(crate) struct CompareState {
     pub(crate) path_text: String,
     /// Which image the typed path is compared with.
     pub(crate) kind: ImageKind,
+    /// The kind was clicked: the next comparison judges the image as that kind, whatever its
+    /// content or name say (and one on screen is judged again at once).
+    pub(crate) kind_forced: bool,
     /// What the compared image shows.
     pub(crate) show: CompareShow,
     /// The comparison on screen.
@@ -77,7 +68,8 @@ pub(crate) struct CompareState {
     /// The gallery's pictures of the known mistakes.
     pub(crate) gallery: gallery::Gallery,
     /// Their image file, watched: when their program writes it again it is compared again.
-    watched: Option<(PathBuf, ImageKind, FileWatcher)>,
+    /// With the kind it was given and whether that kind was clicked.
+    watched: Option<(PathBuf, ImageKind, bool, FileWatcher)>,
 }
 /// An RGB image as an egui image.
 fn to_colour_image(image: &RgbImage) -> ColorImage {
@@ -354,9 +346,10 @@ impl CompareState {
         kind: ImageKind,
     ) -> Option<Status> {
         let ctx = against.ctx.clone();
+        let forced = self.kind_forced;
         let watched = FileWatcher::watch(&path, move || ctx.request_repaint())
             .ok()
-            .map(|watcher| (path.clone(), kind, watcher));
+            .map(|watcher| (path.clone(), kind, forced, watcher));
         let status = self.with_image(against, path, kind, read_their_image);
         self.watched = watched;
         status
@@ -372,17 +365,21 @@ impl CompareState {
         read: impl FnOnce(&Path) -> Result<RgbImage, TheirImageError> + Send + 'static,
     ) -> Option<Status> {
         self.watched = None;
-        self.theirs(against, path, kind, None, read)
+        let forced = std::mem::take(&mut self.kind_forced);
+        self.theirs(against, path, kind, None, forced, read)
     }
 
     /// Compares the image `read` gets for `path` with the exact render, in the background: a
-    /// depth image under `range`, or with `None` under the range read back from it.
+    /// depth image under `range`, or with `None` under the range read back from it. As `kind`
+    /// where it was clicked (`forced`) or a range is given; else as the kind its content and
+    /// name say ([`recognised_kind`]), which the answer says when it is not `kind`.
     fn theirs(
         &mut self,
         against: &Against,
         path: PathBuf,
         kind: ImageKind,
         range: Option<DepthRange>,
+        forced: bool,
         read: impl FnOnce(&Path) -> Result<RgbImage, TheirImageError> + Send + 'static,
     ) -> Option<Status> {
         let scene = Arc::clone(&against.scene);
@@ -390,7 +387,14 @@ impl CompareState {
         self.kind = kind;
         self.start(&against.ctx, move || {
             let theirs = read(&path).map_err(|error| error.to_string())?;
-            compare_file(&scene, &path, theirs, kind, range, fallback)
+            let (kind, assumed) = if forced || range.is_some() {
+                (kind, None)
+            } else {
+                recognised_kind(&scene, &path, &theirs, kind)
+            };
+            let mut pixels = compare_file(&scene, &path, theirs, kind, range, fallback)?;
+            pixels.kind_assumed = assumed;
+            Ok(pixels)
         })
     }
 
@@ -426,24 +430,45 @@ impl CompareState {
             .watched
             .as_ref()
             .filter(|_| !self.busy())
-            .map(|(path, kind, watcher)| (path, *kind, watcher.poll()));
+            .map(|(path, kind, forced, watcher)| (path, *kind, *forced, watcher.poll()));
         match seen {
-            Some((path, kind, WatchState::Changed)) => {
+            Some((path, kind, forced, WatchState::Changed)) => {
                 let path = path.clone();
-                let said = self.theirs(&against(*view), path, kind, None, read_their_image);
+                let said = self.theirs(&against(*view), path, kind, None, forced, read_their_image);
                 say(status, said);
                 return;
             }
-            Some((_, _, WatchState::Settling(wait))) => ctx.request_repaint_after(wait),
+            Some((_, _, _, WatchState::Settling(wait))) => ctx.request_repaint_after(wait),
             _ => {}
         }
         if !self.busy() {
+            // The other kind clicked: their image on screen is judged as that at once.
+            if self.kind_forced
+                && let Some(current) = &self.current
+                && let CompareSource::File(path) = &current.pixels.source
+                && current.pixels.kind != self.kind
+            {
+                let (path, theirs, kind) = (path.clone(), current.pixels.theirs.clone(), self.kind);
+                self.kind_forced = false;
+                if let Some(watched) = &mut self.watched {
+                    (watched.1, watched.2) = (kind, true);
+                }
+                let again = against(*view);
+                let said = self.theirs(&again, path, kind, None, true, move |_| Ok(theirs));
+                say(status, said);
+                return;
+            }
             let range = view.depth_range;
             if let Some((path, theirs)) = self.stale_depth_image(range) {
                 let again = against(*view);
-                let said = self.theirs(&again, path, ImageKind::Depth, Some(range), move |_| {
-                    Ok(theirs)
-                });
+                let said = self.theirs(
+                    &again,
+                    path,
+                    ImageKind::Depth,
+                    Some(range),
+                    true,
+                    move |_| Ok(theirs),
+                );
                 say(status, said);
             }
             return;
@@ -451,6 +476,7 @@ impl CompareState {
         match self.poll(ctx) {
             Ok(None) => {}
             Ok(Some((held, kind))) => {
+                self.kind = kind;
                 let depth_range = match kind {
                     ImageKind::Depth => held.depth_range,
                     ImageKind::Colour => view.depth_range,

@@ -16,6 +16,18 @@ use crate::render::sampling::Sampling;
 use crate::render::{Quality, View, render_with};
 use crate::scene::Scene;
 
+/// What the compared image shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum CompareShow {
+    /// The live render.
+    #[default]
+    Rendered,
+    /// Their image (or the picture at the chosen quality).
+    Theirs,
+    /// The heat map of the difference.
+    Difference,
+}
+
 /// Which of the two images is compared.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum ImageKind {
@@ -33,6 +45,87 @@ impl ImageKind {
             Self::Colour => 0,
             Self::Depth => 1,
         }
+    }
+}
+
+/// Which kind of image `theirs` (named `name`) is, where its content or its name says so against
+/// `chosen`, with the reason said when it is not `chosen`. A depth image is grey: every pixel
+/// grey but a single no-hit colour (their fill, where it is the scene's background), with a ramp
+/// of at least three levels; a colour image of a scene with colours has two colours or more that
+/// are not grey. Where the content cannot tell (a scene of grey spheres), a name that says
+/// "depth", or "output" or "colour", does.
+pub fn recognised_kind(
+    scene: &Scene,
+    name: &Path,
+    theirs: &RgbImage,
+    chosen: ImageKind,
+) -> (ImageKind, Option<String>) {
+    use std::collections::BTreeSet;
+    let grey = |p: &image::Rgb<u8>| p.0[0] == p.0[1] && p.0[1] == p.0[2];
+    let mut levels = BTreeSet::new();
+    let mut colours = BTreeSet::new();
+    for pixel in theirs.pixels() {
+        if grey(pixel) {
+            levels.insert(pixel.0[0]);
+        } else if colours.len() < 3 {
+            colours.insert(pixel.0);
+        }
+    }
+    let background = crate::compare::model::colour_bytes(scene.background, false);
+    let coloured = |c: glam::Vec3| c.x != c.y || c.y != c.z;
+    let scene_has_colour = scene
+        .spheres
+        .iter()
+        .any(|sphere| coloured(scene.sphere_colour(sphere)))
+        || coloured(scene.background);
+    let stem = name
+        .file_stem()
+        .map(|s| s.to_string_lossy().to_lowercase())
+        .unwrap_or_default();
+    let by_name = if stem.contains("depth") {
+        Some(ImageKind::Depth)
+    } else if ["output", "colour", "color"]
+        .iter()
+        .any(|w| stem.contains(w))
+    {
+        Some(ImageKind::Colour)
+    } else {
+        None
+    };
+    let looks_depth = levels.len() >= 3
+        && (colours.is_empty() || (colours.len() == 1 && colours.contains(&background)));
+    let looks_colour = colours.len() >= 2;
+    let (kind, why) = if scene_has_colour && looks_depth {
+        (
+            ImageKind::Depth,
+            format!(
+                "every pixel is grey ({} levels{}) where the scene's spheres have colours",
+                levels.len(),
+                if colours.is_empty() {
+                    ""
+                } else {
+                    ", and the scene's background where nothing is hit"
+                }
+            ),
+        )
+    } else if looks_colour {
+        (
+            ImageKind::Colour,
+            "it has colours, which a depth image has not".to_owned(),
+        )
+    } else if let Some(kind) = by_name {
+        (kind, format!("its name, {}", name.display()))
+    } else {
+        (chosen, String::new())
+    };
+    if kind == chosen {
+        (kind, None)
+    } else {
+        let word = match kind {
+            ImageKind::Colour => "a colour image",
+            ImageKind::Depth => "a depth image",
+        };
+        (kind, Some(format!("judged as {word}: {why}")))
     }
 }
 
@@ -75,6 +168,8 @@ pub struct ComparisonPixels {
     pub source: CompareSource,
     /// Which image it is.
     pub kind: ImageKind,
+    /// Why it was judged as another kind than the one chosen (`None`: as chosen).
+    pub kind_assumed: Option<String>,
     /// The view both pictures are of.
     pub view: View,
     /// Their picture.
@@ -215,6 +310,7 @@ pub fn compare_file(
     Ok(ComparisonPixels {
         source: CompareSource::File(path.to_path_buf()),
         kind,
+        kind_assumed: None,
         view: judged.view,
         exact,
         difference,
@@ -288,6 +384,7 @@ pub fn compare_quality(
             against_reference,
         }),
         kind: ImageKind::Colour,
+        kind_assumed: None,
         view: *view,
         theirs,
         exact,

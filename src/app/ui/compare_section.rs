@@ -23,14 +23,21 @@ pub(crate) const IMAGE_PATH_LABEL: &str = "image";
 pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Quality) -> Vec<Action> {
     let mut actions = Vec::new();
     ui.heading("Compare");
+    let before = state.kind;
     ui.horizontal(|ui| {
         ui.radio_value(&mut state.kind, ImageKind::Colour, "colour")
-            .on_hover_text("the image is a colour image (-output)");
+            .on_hover_text(
+                "the image is a colour image (-output); a grey image is taken for a depth image \
+                 unless this is clicked",
+            );
         ui.radio_value(&mut state.kind, ImageKind::Depth, "depth")
             .on_hover_text(
-                "the image is a depth image (-depth): judged under the range read from it",
+                "the image is a depth image (-depth): judged under the range read from it; an \
+                 image with colours is taken for a colour image unless this is clicked",
             );
     });
+    // A click decides the kind, and judges the image on screen again as it.
+    state.kind_forced |= state.kind != before;
     ui.horizontal(|ui| {
         let label = ui.label(IMAGE_PATH_LABEL);
         let field = ui
@@ -128,6 +135,15 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
                 "{kind} image {} ({width}×{height})",
                 path.display()
             ));
+            if let Some(assumed) = &pixels.kind_assumed {
+                let other = match pixels.kind {
+                    ImageKind::Colour => "depth",
+                    ImageKind::Depth => "colour",
+                };
+                ui.label(format!(
+                    "{assumed}; click {other} above to judge it as a {other} image"
+                ));
+            }
         }
         CompareSource::Quality(figures) => {
             ui.label(format!(
