@@ -52,7 +52,7 @@ impl ImageKind {
 /// `chosen`, with the reason said when it is not `chosen`. A depth image is grey: every pixel
 /// grey but a single no-hit colour (their fill, where it is the scene's background), with a ramp
 /// of at least three levels; a colour image of a scene with colours has two colours or more that
-/// are not grey. Where the content cannot tell (a scene of grey spheres), a name that says
+/// are not grey, or one that is a sphere's. Where the content cannot tell (a scene of grey spheres), a name that says
 /// "depth", or "output" or "colour", does.
 pub fn recognised_kind(
     scene: &Scene,
@@ -94,7 +94,17 @@ pub fn recognised_kind(
     };
     let looks_depth = levels.len() >= 3
         && (colours.is_empty() || (colours.len() == 1 && colours.contains(&background)));
-    let looks_colour = colours.len() >= 2;
+    // Two colours, or one that is a sphere's (a lone red sphere on black): no depth image's.
+    let sphere_colour = |c: &[u8; 3]| {
+        scene.spheres.iter().any(|sphere| {
+            let colour = scene.sphere_colour(sphere);
+            [false, true]
+                .map(|rounded| crate::compare::model::colour_bytes(colour, rounded))
+                .contains(c)
+        })
+    };
+    let looks_colour =
+        colours.len() >= 2 || colours.iter().any(|c| *c != background && sphere_colour(c));
     let (kind, why) = if scene_has_colour && looks_depth {
         (
             ImageKind::Depth,
@@ -401,4 +411,66 @@ pub fn compare_quality(
         range_source: RangeSource::Viewer,
         explained_by: Vec::new(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use std::path::Path;
+
+    use super::{ImageKind, recognised_kind};
+    use crate::render::depth_map::DepthRange;
+    use crate::render::{View, render};
+    use crate::scene::bundled::BUNDLED_SCENES;
+    use crate::scene::parse_scene;
+
+    /// The course's scene1_01 (a red sphere on black) at 200×200 over its line's range, 9 … 10:
+    /// its colour and depth images, as the course's program writes them.
+    fn scene1_01() -> (crate::scene::Scene, image::RgbImage, image::RgbImage) {
+        let text = BUNDLED_SCENES
+            .iter()
+            .find(|(name, _)| *name == "scene1_01.txt")
+            .unwrap()
+            .1;
+        let scene = parse_scene(text).unwrap();
+        let range = DepthRange::new(9.0, 10.0);
+        let frame = render(&scene, &View::of_camera(&scene.camera, 200, 200, range)).unwrap();
+        let (colour, depth) = (frame.colour_image(), frame.depth_image(range));
+        (scene, colour, depth)
+    }
+
+    /// A red sphere on black is a colour image though it has one colour only (a sphere's), and
+    /// its depth image a depth image; each said when it is not the kind chosen, and nothing said
+    /// when it is.
+    #[test]
+    fn each_image_is_recognised_by_its_content_whatever_its_name() {
+        let (scene, colour, depth) = scene1_01();
+        let name = Path::new("mine.png");
+        let (kind, said) = recognised_kind(&scene, name, &colour, ImageKind::Depth);
+        assert_eq!(kind, ImageKind::Colour);
+        assert!(
+            said.unwrap()
+                .starts_with("judged as a colour image: it has colours")
+        );
+        let (kind, said) = recognised_kind(&scene, name, &depth, ImageKind::Colour);
+        assert_eq!(kind, ImageKind::Depth);
+        assert!(
+            said.unwrap()
+                .starts_with("judged as a depth image: every pixel is grey")
+        );
+        assert_eq!(
+            recognised_kind(&scene, name, &colour, ImageKind::Colour),
+            (ImageKind::Colour, None)
+        );
+        // All black says nothing of its kind: the name, then the kind chosen, decide.
+        let black = image::RgbImage::new(200, 200);
+        let depth_name = Path::new("depth1_01.tga");
+        assert_eq!(
+            recognised_kind(&scene, depth_name, &black, ImageKind::Colour).0,
+            ImageKind::Depth
+        );
+        assert_eq!(
+            recognised_kind(&scene, name, &black, ImageKind::Depth),
+            (ImageKind::Depth, None)
+        );
+    }
 }
