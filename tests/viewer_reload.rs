@@ -2,7 +2,7 @@
 //! an editor's save in several quick writes reloads once, a save that renames a new file over the
 //! scene reloads it, reading the file (as the viewer itself does) reloads nothing, and where no
 //! file dialog can be shown the window says so, Open… does nothing else, and the typed export
-//! paths do the job.
+//! paths do the job; another scene opened closes the comparison made against the one before.
 #![cfg(feature = "gui")]
 
 mod common;
@@ -146,4 +146,42 @@ fn without_file_dialogs_the_window_says_so_and_typed_paths_work() {
     click(&mut harness, "Save view as scene…");
     settle(&mut harness);
     assert!(folder.path().join("typed.txt").exists());
+}
+
+/// Their image compared, then another scene opened: the comparison (made against the scene
+/// before) goes with it, and their file, written again, is not judged against the new scene.
+#[test]
+fn opening_another_scene_closes_the_comparison_of_the_one_before() {
+    let folder = tempfile::tempdir().unwrap();
+    let theirs = folder.path().join("output1_02.png");
+    std::fs::copy(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/output1_02.png"),
+        &theirs,
+    )
+    .unwrap();
+    let mut harness = viewer(Some(scene_path("scene1_02.txt")));
+    common::compare_image(&mut harness, &theirs.display().to_string());
+    assert!(
+        harness
+            .state()
+            .comparison()
+            .unwrap()
+            .difference
+            .colour_matches()
+    );
+    let loads = harness.state().scene_loads();
+    harness.state_mut().open(&scene_path("scene1_04.txt"));
+    wait_until(&mut harness, |app| {
+        app.scene_loads() > loads && !app.loading()
+    });
+    assert!(harness.state().comparison().is_none());
+    // Their program writes its file again: nothing is compared against scene1_04.
+    std::fs::copy(
+        folder.path().join("output1_02.png"),
+        folder.path().join("again.png"),
+    )
+    .unwrap();
+    std::fs::rename(folder.path().join("again.png"), &theirs).unwrap();
+    run_for(&mut harness, Duration::from_secs(2));
+    assert!(harness.state().comparison().is_none() && !harness.state().comparing());
 }

@@ -142,6 +142,7 @@ impl ViewerApp {
             .follow_open(previous, view, &path, loaded.in_memory);
         // An older message (an error of an earlier try included) is not left beside it.
         self.status = Some(self.scene.adopt_opened(loaded, &path, view, &self.ctx));
+        self.compare.close(); // Their image was of the scene before: not judged against this.
         let last = self.settings.views.last.get(&SceneViews::key(&path));
         self.viewing.opened(last);
         self.panels.fields.path_text = path.display().to_string();
