@@ -185,3 +185,50 @@ fn opening_another_scene_closes_the_comparison_of_the_one_before() {
     run_for(&mut harness, Duration::from_secs(2));
     assert!(harness.state().comparison().is_none() && !harness.state().comparing());
 }
+
+/// Their program writing the watched image in two parts, 0.6 s apart (half of its bytes, then
+/// all): the viewer waits for the whole image, with no error shown and the old comparison kept on
+/// screen meanwhile, then compares it.
+#[test]
+fn their_image_still_being_written_is_waited_for() {
+    let folder = tempfile::tempdir().unwrap();
+    let reference = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference");
+    let theirs = folder.path().join("output1_02.png");
+    std::fs::copy(reference.join("output1_03.png"), &theirs).unwrap();
+    let mut harness = viewer(Some(scene_path("scene1_02.txt")));
+    common::compare_image(&mut harness, &theirs.display().to_string());
+    assert!(
+        !harness
+            .state()
+            .comparison()
+            .unwrap()
+            .difference
+            .colour_matches()
+    );
+    let bytes = std::fs::read(reference.join("output1_02.png")).unwrap();
+    std::fs::write(&theirs, &bytes[..bytes.len() / 2]).unwrap();
+    let whole_at = Instant::now() + Duration::from_millis(600);
+    let deadline = Instant::now() + Duration::from_secs(30);
+    let mut written = false;
+    loop {
+        harness.step();
+        let app = harness.state();
+        if let Some((message, true)) = app.message() {
+            panic!("an error was shown while their file was being written: {message}");
+        }
+        assert!(app.comparison().is_some(), "the comparison left the screen");
+        if app.comparison().unwrap().difference.colour_matches() && !app.comparing() {
+            break;
+        }
+        if !written && Instant::now() >= whole_at {
+            std::fs::write(&theirs, &bytes).unwrap();
+            written = true;
+        }
+        assert!(
+            Instant::now() < deadline,
+            "the whole image was not compared"
+        );
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    assert!(written);
+}

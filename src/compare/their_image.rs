@@ -59,6 +59,33 @@ impl TheirImageError {
     }
 }
 
+/// How long [`read_their_image_settled`] waits between two looks at a file being written.
+const SETTLE_WAIT: std::time::Duration = std::time::Duration::from_millis(100);
+
+/// How many looks [`read_their_image_settled`] takes before it says the last error: three
+/// seconds for a program to finish writing its image.
+const SETTLE_LOOKS: u32 = 30;
+
+/// Reads their image as [`read_their_image`] does, once their program has finished writing it:
+/// read only when its size holds for [`SETTLE_WAIT`], and read again while its bytes are not yet
+/// a whole image, for [`SETTLE_LOOKS`] looks; then the last error. For a watched file, which
+/// their program writes while the viewer looks (never in a page: it blocks its thread).
+pub fn read_their_image_settled(path: &Path) -> Result<RgbImage, TheirImageError> {
+    let size = || std::fs::metadata(path).map(|m| m.len()).ok();
+    let mut last = None;
+    for _ in 0..SETTLE_LOOKS {
+        let before = size();
+        std::thread::sleep(SETTLE_WAIT);
+        if before.is_some() && before == size() {
+            match read_their_image(path) {
+                Ok(image) => return Ok(image),
+                Err(error) => last = Some(error),
+            }
+        }
+    }
+    last.map_or_else(|| read_their_image(path), Err)
+}
+
 /// Reads an image file to compare (any size within the limits; TGA, PNG and what else the
 /// `image` crate reads), as a stream: a named pipe is read as a file is.
 pub fn read_their_image(path: &Path) -> Result<RgbImage, TheirImageError> {

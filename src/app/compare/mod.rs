@@ -31,7 +31,7 @@ use super::reload::{FileWatcher, WatchState};
 use super::status::{Status, say};
 use crate::compare::judge::their_depth_at;
 use crate::compare::picture::{heat_map, heat_map_highlighted, heat_map_marked};
-use crate::compare::their_image::{TheirImageError, read_their_image};
+use crate::compare::their_image::{TheirImageError, read_their_image, read_their_image_settled};
 use crate::explore::trace::PixelTrace;
 use crate::render::depth_map::DepthRange;
 use crate::render::{Quality, View};
@@ -434,7 +434,8 @@ impl CompareState {
         match seen {
             Some((path, kind, forced, WatchState::Changed)) => {
                 let path = path.clone();
-                let said = self.theirs(&against(*view), path, kind, None, forced, read_their_image);
+                let again = against(*view);
+                let said = self.theirs(&again, path, kind, None, forced, read_their_image_settled);
                 say(status, said);
                 return;
             }
