@@ -338,3 +338,76 @@ fn no_hit_pixels_on_screen_are_dark_blue_on_grey_and_light_grey_on_turbo() {
     );
     assert_eq!(pixels_near(&shot, depth, navy), 0, "turbo: no dark blue");
 }
+
+/// The pixel trace opens sized to its lines at the body text size: no line is cut off at the
+/// window's edge (it opened 620 points wide with its lines cut), within the window it opens in.
+#[test]
+fn the_pixel_trace_opens_wide_enough_for_its_lines() {
+    let mut harness = viewer_sized(Some(scene_path("scene1_02.txt")), vec2(1200.0, 800.0), 1.0);
+    let image = harness.get_by_label("colour image").rect();
+    for pressed in [true, false] {
+        harness.hover_at(image.center());
+        harness.step();
+        harness.event(Event::PointerButton {
+            pos: image.center(),
+            button: PointerButton::Primary,
+            pressed,
+            modifiers: Modifiers::NONE,
+        });
+        harness.step();
+    }
+    click(&mut harness, "Trace");
+    harness.run_steps(4);
+    let text = harness.get_by_label_contains("pixel: x ");
+    let line = text.rect();
+    let window = harness
+        .get_all_by_role(Role::Window)
+        .find(|w| w.accesskit_node().label().as_deref() == Some("Pixel trace"))
+        .expect("the trace window")
+        .accesskit_node()
+        .bounding_box()
+        .unwrap();
+    // Wider than the 620 points it opened at, and every line within it (long ones wrap).
+    assert!(window.width() > 1000.0, "{window:?}");
+    assert!(
+        line.max.x as f64 <= window.x1 && line.min.x as f64 >= window.x0,
+        "{line:?} in {window:?}"
+    );
+}
+
+/// Each statement under "diagnosis:" is drawn at the body text size (it was small, about 8 px
+/// tall at 1:1): its label is as tall as its words laid out in the body font at its width.
+#[test]
+fn statements_are_drawn_at_the_body_text_size() {
+    use raytracer::compare::{Mistake, MistakeSet};
+    let folder = tempfile::tempdir().unwrap();
+    let scene = raytracer::scene::load_scene(&scene_path("scene1_03.txt")).unwrap();
+    let range = raytracer::render::depth_map::DepthRange::new(8.0, 12.0);
+    let view = View::of_camera(&scene.camera, 200, 200, range);
+    let corners = MistakeSet::of(&[Mistake::PixelCorners]);
+    let (colour, _) = raytracer::oracle::mistaken::render_variant(&scene, &view, corners);
+    let theirs = folder.path().join("theirs.png");
+    colour.save(&theirs).unwrap();
+    let mut harness = viewer_sized(Some(scene_path("scene1_03.txt")), vec2(1000.0, 700.0), 1.0);
+    common::compare_image(&mut harness, &theirs.display().to_string());
+    let statement = harness.get_by_label_contains("pixel-corners: rays pass through");
+    let rect = statement.rect();
+    let said = &harness.state().comparison().unwrap().statements[0];
+    let text = format!("{}: {}", said.name_and_values(), said.explanation());
+    let ctx = harness.ctx.clone();
+    let body = egui::TextStyle::Body.resolve(&ctx.global_style());
+    let galley = ctx.fonts_mut(|fonts| {
+        fonts.layout(
+            text.to_string(),
+            body,
+            egui::Color32::WHITE,
+            rect.width() + 1.0,
+        )
+    });
+    assert!(
+        (galley.size().y - rect.height()).abs() <= 2.0,
+        "{} px tall, {} in the body font",
+        rect.height(),
+        galley.size().y
+    );
+}

@@ -58,9 +58,24 @@ pub(crate) fn trace_ui(ctx: &egui::Context, trace: &mut Option<String>) {
         return;
     };
     let mut open = true;
+    // Sized to its lines at the body text size, within the window's room; resizable.
+    let font = egui::FontId::monospace(egui::TextStyle::Body.resolve(&ctx.global_style()).size);
+    let char_width = ctx.fonts_mut(|fonts| fonts.glyph_width(&font, '0'));
+    let longest = text
+        .lines()
+        .map(|line| line.chars().count())
+        .max()
+        .unwrap_or(0) as f32;
+    let lines = text.lines().count() as f32;
+    let room = ctx.content_rect().size() - egui::vec2(40.0, 80.0);
+    let size = egui::vec2(
+        (longest * char_width + 30.0).clamp(300.0_f32.min(room.x), room.x.max(1.0)),
+        (lines * font.size * 1.25 + 50.0).clamp(120.0_f32.min(room.y), room.y.max(1.0)),
+    );
     egui::Window::new(TRACE_TITLE)
         .open(&mut open)
-        .default_width(620.0)
+        .default_size(size)
+        .resizable(true)
         .show(ctx, |ui| {
             if ui
                 .small_button("Copy")
@@ -69,9 +84,12 @@ pub(crate) fn trace_ui(ctx: &egui::Context, trace: &mut Option<String>) {
             {
                 ctx.copy_text(text.clone());
             }
-            egui::ScrollArea::both().max_height(360.0).show(ui, |ui| {
-                ui.add(egui::Label::new(RichText::new(text).monospace().size(11.0)).extend());
-            });
+            // A line longer than the window's room wraps (Copy gives it whole).
+            egui::ScrollArea::vertical()
+                .auto_shrink([false, false])
+                .show(ui, |ui| {
+                    ui.add(egui::Label::new(RichText::new(text).font(font.clone())).wrap());
+                });
         });
     if !open {
         *trace = None;

@@ -239,14 +239,11 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
             // its gallery picture, and its pixels highlighted in the difference.
             for (index, deviation) in pixels.statements.iter().chain(&pixels.partial).enumerate() {
                 let response = ui
-                    .label(
-                        RichText::new(format!(
-                            "{}: {}",
-                            deviation.name_and_values(),
-                            deviation.explanation()
-                        ))
-                        .small(),
-                    )
+                    .label(RichText::new(format!(
+                        "{}: {}",
+                        deviation.name_and_values(),
+                        deviation.explanation()
+                    )))
                     .on_hover_ui(|ui| statement_tip(ui, deviation, pictures.get(index)));
                 if response.hovered() {
                     pointed = Some(index);
