@@ -135,33 +135,34 @@ fn the_difference_picture_shows_theirs_the_exact_image_and_the_heat_map() {
     let picture = image::open(folder.path().join("diff.png"))
         .unwrap()
         .to_rgb8();
-    // 120-pixel images are drawn twice as large (panels at least 200 wide): four panels (theirs,
-    // exact, heat map, unexplained) and five gaps of 8 across; two rows (colour, depth).
-    assert_eq!(picture.width(), 4 * 240 + 5 * 8);
+    // 120-pixel images are drawn five times as large (panels at least 600 wide: a pixel is a
+    // visible square): four panels (theirs, exact, heat map, unexplained) and five gaps of 8
+    // across; two rows (colour, depth).
+    assert_eq!(picture.width(), 4 * 600 + 5 * 8);
     let theirs: RgbImage = image::open(folder.path().join("colour.png"))
         .unwrap()
         .to_rgb8();
     let panel_top = 8 + 14;
     for (x, y) in [(3, 5), (60, 40), (110, 70)] {
         assert_eq!(
-            picture.get_pixel(8 + 2 * x, panel_top + 2 * y),
+            picture.get_pixel(8 + 5 * x, panel_top + 5 * y),
             theirs.get_pixel(x, y),
             "their pixel ({x}, {y})"
         );
     }
     // The heat map is black where the images agree (the background corner) and coloured where
     // they differ.
-    let heat_left = 8 + 2 * (240 + 8);
+    let heat_left = 8 + 2 * (600 + 8);
     assert_eq!(picture.get_pixel(heat_left, panel_top).0, [0, 0, 0]);
-    let coloured = (0..240)
-        .flat_map(|x| (0..160).map(move |y| (x, y)))
+    let coloured = (0..600)
+        .flat_map(|x| (0..400).map(move |y| (x, y)))
         .filter(|&(x, y)| picture.get_pixel(heat_left + x, panel_top + y).0 != [0, 0, 0])
         .count();
     let differing: usize = value(&output, "colour_pixels_differing").parse().unwrap();
     assert_eq!(
         coloured,
-        4 * differing,
-        "each differing pixel is 2×2 in the heat map"
+        25 * differing,
+        "each differing pixel is 5×5 in the heat map"
     );
 }
 
@@ -195,15 +196,15 @@ fn the_difference_picture_shows_where_the_unexplained_pixels_are() {
     let picture = image::open(folder.path().join("diff.png"))
         .unwrap()
         .to_rgb8();
-    let (panel_top, mask_left) = (8 + 14, 8 + 3 * (240 + 8));
+    let (panel_top, mask_left) = (8 + 14, 8 + 3 * (600 + 8));
     let cyan = [0, 230, 255];
     let mut in_block = 0;
     let mut grey = 0;
-    for x in 0..240 {
-        for y in 0..160 {
+    for x in 0..600 {
+        for y in 0..400 {
             match picture.get_pixel(mask_left + x, panel_top + y).0 {
                 pixel if pixel == cyan => {
-                    assert!(x >= 180, "cyan outside the block at ({x}, {y})");
+                    assert!(x >= 450, "cyan outside the block at ({x}, {y})");
                     in_block += 1;
                 }
                 [90, 90, 90] => grey += 1,
@@ -211,7 +212,7 @@ fn the_difference_picture_shows_where_the_unexplained_pixels_are() {
             }
         }
     }
-    assert_eq!(in_block, 4 * unexplained, "each pixel is 2×2");
+    assert_eq!(in_block, 25 * unexplained, "each pixel is 5×5");
     assert!(grey > 0, "the flip's pixels are drawn as explained");
 }
 

@@ -1,6 +1,8 @@
 //! The difference picture (`-diff`): for each compared image a row of their image, the exact one,
 //! a heat map of the difference and, after a diagnosis, where the pixels are that no named mistake
-//! explains, with a title over each, and a legend of the heat map's colours under them. Small images are enlarged (nearest neighbour) so the text fits.
+//! explains, with a title over each, and a legend of the heat map's colours under them. Images
+//! narrower than 600 pixels are enlarged (nearest neighbour) by a whole factor, so a single pixel
+//! is a visible square and the text fits.
 
 use image::{Rgb, RgbImage};
 
@@ -28,8 +30,9 @@ const GAP_PX: u32 = 8;
 /// Height of a title line, pixels.
 const TITLE_PX: u32 = CHAR_PX + 6;
 
-/// Narrowest a panel is drawn; smaller images are enlarged by a whole factor.
-const MIN_PANEL_PX: u32 = 200;
+/// Narrowest a panel is drawn; smaller images are enlarged by a whole factor (the course's
+/// 200-pixel images three times: a single unexplained pixel is a square seen at a glance).
+const MIN_PANEL_PX: u32 = 600;
 
 /// Background of the picture.
 const BACKGROUND: Rgb<u8> = Rgb([40, 40, 40]);
