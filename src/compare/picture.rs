@@ -249,23 +249,18 @@ mod tests {
             difference: &difference,
             unexplained: None,
         }]);
+        // 200 pixels wide: drawn three times as large, each pixel a 3×3 square.
         let panel_top = GAP_PX + TITLE_PX;
-        let column_left = |column: u32| GAP_PX + column * (200 + GAP_PX);
-        assert_eq!(
-            *picture.get_pixel(column_left(0) + 5, panel_top + 7),
-            Rgb([200, 10, 10])
-        );
-        assert_eq!(
-            *picture.get_pixel(column_left(1) + 5, panel_top + 7),
-            Rgb([0, 10, 10])
-        );
-        assert_eq!(
-            *picture.get_pixel(column_left(2) + 5, panel_top + 7),
-            Rgb(heat_colour(200))
-        );
-        assert_eq!(
-            *picture.get_pixel(column_left(2) + 6, panel_top + 7),
-            Rgb([0, 0, 0])
-        );
+        let column_left = |column: u32| GAP_PX + column * (600 + GAP_PX);
+        let at = |column: u32, x: u32, y: u32| {
+            *picture.get_pixel(column_left(column) + x, panel_top + y)
+        };
+        for (dx, dy) in [(0, 0), (2, 2)] {
+            assert_eq!(at(0, 15 + dx, 21 + dy), Rgb([200, 10, 10]));
+            assert_eq!(at(1, 15 + dx, 21 + dy), Rgb([0, 10, 10]));
+            assert_eq!(at(2, 15 + dx, 21 + dy), Rgb(heat_colour(200)));
+        }
+        assert_eq!(at(1, 18, 21), Rgb([200, 10, 10]));
+        assert_eq!(at(2, 18, 21), Rgb([0, 0, 0]));
     }
 }
