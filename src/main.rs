@@ -84,6 +84,8 @@ fn main() -> ExitCode {
                     }
                 }
                 Err(error) => {
+                    // Stopped by a signal: its clean-up removed what this was writing.
+                    raytracer::platform::process::end_as_stopped_if_asked();
                     print_err(&format!("raytracer: {}\n", one_line(&error.to_string())));
                     ExitCode::from(error.exit_status())
                 }
@@ -101,6 +103,8 @@ fn main() -> ExitCode {
                     ExitCode::SUCCESS,
                 ),
                 Err(error) => {
+                    // Stopped by a signal: its clean-up removed what this was writing.
+                    raytracer::platform::process::end_as_stopped_if_asked();
                     print_err(&format!("raytracer: {}\n", one_line(&error.to_string())));
                     ExitCode::from(1)
                 }

@@ -83,6 +83,20 @@ pub fn stop_requested() -> Option<i32> {
     }
 }
 
+/// Where a signal asked the program to stop while it was ending on an error (a write that failed
+/// because the signal's clean-up removed the unfinished files under it), the program ends as
+/// stopped: the clean-up, on the signals' thread, exits with the signal's status once it is
+/// done; this waits for it, and exits so itself after [`STOPPED_WAIT`] should it not.
+pub fn end_as_stopped_if_asked() {
+    if let Some(signal) = stop_requested() {
+        std::thread::sleep(STOPPED_WAIT);
+        std::process::exit(i32::from(exit_status_of(signal)));
+    }
+}
+
+/// How long [`end_as_stopped_if_asked`] waits for the signal's clean-up to end the program.
+const STOPPED_WAIT: std::time::Duration = std::time::Duration::from_secs(10);
+
 /// Sets what wakes the viewer's event loop when a signal asks it to stop.
 pub fn set_wake(wake: impl Fn() + Send + 'static) {
     *WAKE.lock().unwrap_or_else(PoisonError::into_inner) = Some(Box::new(wake));
