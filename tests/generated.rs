@@ -281,3 +281,19 @@ fn a_strip_measured_from_an_edge_is_said_as_a_scale_not_a_shear() {
         );
     }
 }
+
+/// A depth image alone of one sphere drawn with a tilt (case 135 of the report: scales 1.007 and
+/// 0.863, a ramp of t across the screen) is said as the scales and the ramp: the fit once kept a
+/// sample 0.04 pixels off the pixel's centre beside them (`sample-offset 0.5 0.46`), which draws
+/// their pixels no better and which their program does not do.
+#[test]
+fn a_tilt_on_one_sphere_is_not_said_with_a_sample_a_hair_off() {
+    let case = &generated::cases(136)[135];
+    let (verdict, said, _) = case.diagnose_given(generated::Given::Depth);
+    assert_eq!(verdict, Verdict::Explained, "{said:?}");
+    assert!(said.iter().any(|s| s.starts_with("t-ramp ")), "{said:?}");
+    assert!(
+        !said.iter().any(|s| s.starts_with("sample-offset ")),
+        "{said:?}"
+    );
+}

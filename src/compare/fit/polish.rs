@@ -39,7 +39,7 @@ pub(super) fn is_diagonal(model: &Model, step: f64) -> bool {
 /// of the pixels ([`Scorer::sampled_score`]), and the map found is kept only where it draws
 /// every pixel as well as `model`'s.
 pub(super) fn polish_with_images(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Model {
-    let polished = polish_on(scorer, model, step, &[0, 1, 2, 3, 4, 5]);
+    let polished = polish_on(scorer, model, step, &[0, 1, 2, 3, 4, 5], true);
     if scorer.samples() && scorer.score(&polished) > scorer.score(model) {
         return *model;
     }
@@ -47,9 +47,10 @@ pub(super) fn polish_with_images(scorer: &mut Scorer<'_>, model: &Model, step: f
 }
 
 /// Plainer models than `model`, with the pixels each leaves: its map made diagonal where it is a
-/// hair sheared ([`diagonal_if_near`]), and swapped back where it is swapped ([`unswapped`], its
-/// depth ramp fitted again along the axes as they are now). Each is said and weighed before the
-/// models seen on the way, and stated where it draws their pixels as well.
+/// hair sheared ([`diagonal_if_near`]), swapped back where it is swapped ([`unswapped`], its
+/// depth ramp fitted again along the axes as they are now), and its rays through the pixels'
+/// centres where they start a fraction of a pixel off ([`centred`]). Each is said and weighed
+/// before the models seen on the way, and stated where it draws their pixels as well.
 pub(super) fn plainer(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Vec<(usize, Model)> {
     let mut plainer = Vec::new();
     if let Some(diagonal) = diagonal_if_near(scorer, model, step) {
@@ -62,7 +63,54 @@ pub(super) fn plainer(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Vec<
             plainer.push((scorer.score(&turned), turned));
         }
     }
+    // Each map so far (the fitted one first) with its rays through the pixels' centres.
+    let maps: Vec<Model> = std::iter::once(*model)
+        .chain(plainer.iter().map(|(_, m)| *m))
+        .collect();
+    for map in maps {
+        if let Some(centred) = centred(scorer, &map, step) {
+            plainer.push((scorer.score(&centred), centred));
+        }
+    }
     plainer
+}
+
+/// Largest offset of a sample from its pixel's centre (in pixels, on either axis) tried without
+/// it by [`centred`]: on a lone sphere a few hundredths of a pixel trade with the depth ramp's
+/// tilt and the axes' scales.
+const NEAR_CENTRE_PX: f64 = 0.25;
+
+/// `model` with its rays through the pixels' centres, where its samples start off them by less
+/// than [`NEAR_CENTRE_PX`] on a diagonal map: the scales moved on the images with the shift held
+/// and the depth map fitted again. A depth image alone of one sphere can be drawn nearly as well
+/// by an offset of 0.04 pixels as by the tilt their program has, and the story without the offset
+/// is the shorter one where it draws their pixels as well.
+fn centred(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Option<Model> {
+    let view = *scorer.view;
+    let affine = Affine::of_map(&model.pixels, view.width_px, view.height_px, step);
+    let offset = model
+        .pixels
+        .sample_offset_px(view.width_px, view.height_px)?
+        - DVec2::splat(0.5);
+    if affine.shift_px == DVec2::ZERO
+        || offset.abs().max_element() >= NEAR_CENTRE_PX
+        || !is_diagonal(model, step)
+    {
+        return None;
+    }
+    let mut centred = *model;
+    centred.pixels = Affine {
+        relative: affine.relative,
+        shift_px: DVec2::ZERO,
+    }
+    .pixel_map(view.width_px, view.height_px, step);
+    for _ in 0..2 {
+        centred = polish_on(scorer, &centred, step, &[0, 3], false);
+        if scorer.theirs.depth.is_some() {
+            centred = fit_depth(scorer, &centred);
+        }
+    }
+    Some(centred)
 }
 
 /// Largest off-diagonal part of a fitted matrix (of its largest entry) tried without it by
@@ -89,7 +137,7 @@ fn diagonal_if_near(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Option
         shift_px: affine.shift_px,
     }
     .pixel_map(view.width_px, view.height_px, step);
-    Some(polish_on(scorer, &diagonal, step, &[0, 3, 4, 5]))
+    Some(polish_on(scorer, &diagonal, step, &[0, 3, 4, 5], true))
 }
 
 /// `model`'s pixel map with its axes swapped back, where they are swapped (diagonal turned a
@@ -110,12 +158,19 @@ fn unswapped(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Option<Model>
     }
     .pixel_map(view.width_px, view.height_px, step);
     turned.t_ramp = glam::DVec3::new(model.t_ramp.y, model.t_ramp.x, model.t_ramp.z);
-    Some(polish_on(scorer, &turned, step, &[0, 3, 4, 5]))
+    Some(polish_on(scorer, &turned, step, &[0, 3, 4, 5], true))
 }
 
 /// The pattern search of [`polish_with_images`], on [`Scorer::sampled_score`], moving the map's
-/// parameters `whole` ([`Affine::to_array`]'s order) in the first rounds.
-fn polish_on(scorer: &mut Scorer<'_>, model: &Model, step: f64, whole: &[usize]) -> Model {
+/// parameters `whole` ([`Affine::to_array`]'s order) in the first rounds, and then its shift
+/// where `shift_free` (else `whole` again, finer).
+fn polish_on(
+    scorer: &mut Scorer<'_>,
+    model: &Model,
+    step: f64,
+    whole: &[usize],
+    shift_free: bool,
+) -> Model {
     let view = *scorer.view;
     let (width, height) = (view.width_px, view.height_px);
     let with = |values: [f64; 6]| {
@@ -128,7 +183,7 @@ fn polish_on(scorer: &mut Scorer<'_>, model: &Model, step: f64, whole: &[usize])
     let mut steps = [0.004, 0.004, 0.004, 0.004, 0.2, 0.2];
     for round in 0..POLISH_ROUNDS {
         // The whole map in the first rounds; then only where it starts, finer.
-        let parameters: &[usize] = if round < WHOLE_MAP_ROUNDS {
+        let parameters: &[usize] = if round < WHOLE_MAP_ROUNDS || !shift_free {
             whole
         } else {
             &[4, 5]
