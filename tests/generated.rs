@@ -297,3 +297,32 @@ fn a_tilt_on_one_sphere_is_not_said_with_a_sample_a_hair_off() {
         "{said:?}"
     );
 }
+
+/// A depth image alone of a zoomed picture is said as the zoom: the silhouettes' fit from the
+/// greys once settled on a longer story (case 61 of the report, scene1_03 at 90×140 zoomed
+/// 0.907: the map turned a quarter with the far root, the depth reversed and no depth test; case
+/// 133, one sphere at 90×140 scaled 0.897 by 1.295: nothing said), each leaving thousands of
+/// pixels; the boxes around what is drawn give the map.
+#[test]
+fn a_zoomed_depth_image_alone_is_said_as_the_zoom() {
+    let cases = generated::cases(134);
+    for (seed, scale) in [(61, [0.907, 0.907]), (133, [0.897, 1.295])] {
+        let (verdict, said, left) = cases[seed].diagnose_given(generated::Given::Depth);
+        assert_eq!(verdict, Verdict::Explained, "seed {seed}: {said:?}");
+        assert_eq!(left, 0, "seed {seed}: {said:?}");
+        let values: Vec<f64> = said
+            .iter()
+            .filter(|s| s.starts_with("zoom ") || s.starts_with("axes-scaled "))
+            .flat_map(|s| s.split(' ').skip(1).map(|v| v.parse::<f64>().unwrap()))
+            .collect();
+        let values = if values.len() == 1 {
+            vec![values[0]; 2]
+        } else {
+            values
+        };
+        assert_eq!(values.len(), 2, "seed {seed}: {said:?}");
+        for (value, truth) in values.iter().zip(scale) {
+            assert!((value - truth).abs() < 0.002, "seed {seed}: {said:?}");
+        }
+    }
+}

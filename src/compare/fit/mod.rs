@@ -14,6 +14,7 @@
 //! * [`polish`]: the pixel map moved on both images; a tilt left out where it need not be.
 //! * [`score`]: pixels left unexplained, with the renders kept.
 
+pub mod bounds;
 pub mod depth;
 pub mod geometry;
 pub mod hit_rule;
@@ -431,6 +432,8 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
             }
         }
     }
+    // A depth image alone: the map from the boxes around what is drawn.
+    model = bounds::better_from_bounds(scorer, model, step, &mut seen);
     if let Some(at_course) = at_course
         && scorer.score(&at_course) < scorer.score(&model)
     {
