@@ -2,7 +2,8 @@
 //! * every table in README.md and in the pages of docs/ marked `<!-- from docs/NAME.md -->` holds
 //!   rows that are, verbatim, rows of that generated report (the reports are written by committed commands), and every
 //!   code block so marked holds lines of it;
-//! * every row of docs/robustness.md cites tests that exist (or says "same" for the row above).
+//! * every row of docs/robustness.md cites tests that exist (or says "same" for the row above);
+//! * the README is a front door: at most 250 lines, the download its first section.
 
 #[path = "common/source_tree.rs"]
 #[allow(dead_code)] // the file walk alone
@@ -175,3 +176,21 @@ fn every_robustness_row_cites_tests_that_exist() {
     }
     assert!(rows >= 40, "only {rows} rows");
 }
+
+/// The README is the front door a newcomer reads: at most [`README_MOST_LINES`] lines, its first
+/// section the download; the rest is a link away (docs/README.md lists every page).
+#[test]
+fn the_readme_is_short_and_starts_with_the_download() {
+    let readme = read("README.md");
+    let lines = readme.lines().count();
+    assert!(
+        lines <= README_MOST_LINES,
+        "README.md has {lines} lines, more than {README_MOST_LINES}"
+    );
+    let first_section = readme.lines().find(|line| line.starts_with("## "));
+    assert_eq!(first_section, Some("## Get it"));
+    assert!(readme.contains("](docs/README.md)"));
+}
+
+/// The most lines the README may have.
+const README_MOST_LINES: usize = 250;

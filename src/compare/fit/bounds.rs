@@ -56,7 +56,7 @@ fn from_bounds(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Vec<(usize,
         return Vec::new();
     }
     let centre_of = |(low, high): (DVec2, DVec2)| 0.5 * (low + high);
-    // Pixel point p is at (R (p + c) + s) · step on the screen, the course's map at (p + c) · step.
+    // Pixel point p is at (R (p + c) + s) · step on the screen, the course's at (p + c) · step.
     let c = DVec2::new(
         0.5 - 0.5 * f64::from(view.width_px),
         0.5 - 0.5 * f64::from(view.height_px),
