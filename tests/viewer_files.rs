@@ -108,12 +108,10 @@ fn an_export_over_existing_files_lists_them_and_waits_for_a_yes() {
     harness.state_mut().settings_mut().export.path =
         folder.path().join("shot.png").display().to_string();
     press(&mut harness, "Export to path");
-    assert!(
-        harness
-            .query_by_label(&colour.display().to_string())
-            .is_some(),
-        "the file to be replaced is listed"
-    );
+    // The folder named, then the file to be replaced.
+    let named = format!("In the folder {}:", folder.path().display());
+    assert!(harness.query_by_label(&named).is_some(), "{named}");
+    assert!(harness.query_by_label("shot_colour.png").is_some());
     assert_eq!(std::fs::read(&colour).unwrap(), b"an earlier shot");
     assert_eq!(std::fs::read_dir(folder.path()).unwrap().count(), 1);
     press(&mut harness, "Replace");
@@ -453,4 +451,46 @@ fn a_scene_file_dropped_on_the_window_opens() {
         Some(dropped.as_path())
     );
     assert_eq!(harness.state().scene_error(), None);
+}
+
+/// "Course files" never puts a student's files at risk: into a folder that does not exist it
+/// offers to make it (Cancel makes nothing); over files there it names the folder, warns when one
+/// is the image being compared (their program's output), and Enter answers no: the files keep
+/// their bytes.
+#[test]
+fn course_files_offer_a_missing_folder_and_enter_keeps_the_files_they_would_replace() {
+    let folder = tempfile::tempdir().unwrap();
+    let missing = folder.path().join("out");
+    let mut harness = viewer(Some(scene_path("scene1_04.txt")));
+    harness.state_mut().settings_mut().export.path =
+        missing.join("scene1_04.png").display().to_string();
+    press(&mut harness, "Course files");
+    assert!(harness.query_by_label("Create this folder?").is_some());
+    press(&mut harness, "Cancel");
+    assert!(!missing.exists());
+    // Their program's output, compared, in the folder the course files go into.
+    std::fs::create_dir(&missing).unwrap();
+    let theirs = missing.join("output1_04.tga");
+    let reference = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference");
+    let mut image = image::open(reference.join("output1_04.png"))
+        .unwrap()
+        .to_rgb8();
+    image.put_pixel(0, 0, image::Rgb([255, 0, 255]));
+    image.save(&theirs).unwrap();
+    let bytes = std::fs::read(&theirs).unwrap();
+    common::compare_image(&mut harness, &theirs.display().to_string());
+    press(&mut harness, "Course files");
+    assert!(harness.query_by_label("Replace this file?").is_some());
+    let named = format!("In the folder {}:", missing.display());
+    assert!(common::label_shown(&harness, &named), "{named}");
+    assert!(common::label_shown(&harness, "the image you are comparing"));
+    harness.key_press(egui::Key::Enter);
+    settle(&mut harness);
+    harness.run_steps(2);
+    assert!(harness.query_by_label("Replace this file?").is_none());
+    assert!(
+        std::fs::read(&theirs).unwrap() == bytes,
+        "their file is kept"
+    );
+    assert!(!missing.join("depth1_04.tga").exists());
 }

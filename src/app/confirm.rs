@@ -1,7 +1,9 @@
-//! Asking before a write replaces anything: an export or "save view as scene" whose files exist
-//! waits for a yes in a modal window that lists them; the open scene file gets a warning of its
-//! own. An export into a folder that does not exist offers to create it. Nothing is written (nor
-//! created) on "Cancel", on Escape or a click outside the window.
+//! Asking before a write replaces anything: an export, "save view as scene" or the course files
+//! whose files exist wait for a yes in a modal window that names their folder and lists them;
+//! the open scene file and the image being compared (their program's output) get a warning of
+//! their own. "Cancel" has the focus, so Enter keeps the files. A write into a folder that does
+//! not exist offers to create it. Nothing is written (nor created) on "Cancel", on Escape or a
+//! click outside the window.
 
 use std::path::{Path, PathBuf};
 
@@ -18,6 +20,8 @@ pub(crate) struct PendingReplace<A> {
     pub(crate) existing: Vec<PathBuf>,
     /// One of them is the scene file on screen.
     pub(crate) open_scene: bool,
+    /// One of them is the image being compared: their program's output.
+    pub(crate) compared: bool,
     /// The folder the write goes into, which does not exist yet: yes creates it first.
     pub(crate) missing_folder: Option<PathBuf>,
 }
@@ -28,20 +32,30 @@ pub(crate) const REPLACE_LABEL: &str = "Replace";
 /// Label of the button that creates the missing folder and exports into it.
 pub(crate) const CREATE_FOLDER_LABEL: &str = "Create the folder and export";
 
+/// Files a write warns of by name when it would replace them.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Guarded<'a> {
+    /// The scene file on screen.
+    pub(crate) scene: Option<&'a Path>,
+    /// The image being compared.
+    pub(crate) compared: Option<&'a Path>,
+}
+
 /// What a write must wait for, if anything: the folder it would create (`missing_folder`), else
-/// the files among `files` it would replace. `scene_on_screen` gets a warning of its own. `Ok`
-/// hands the action back to be written now.
+/// the files among `files` it would replace. The `guarded` files get a warning of their own.
+/// `Ok` hands the action back to be written now.
 pub(crate) fn wait_for_yes<A>(
     action: A,
     missing_folder: Option<PathBuf>,
     files: Vec<PathBuf>,
-    scene_on_screen: Option<&Path>,
+    guarded: Guarded<'_>,
 ) -> Result<A, PendingReplace<A>> {
     if let Some(folder) = missing_folder {
         return Err(PendingReplace {
             action,
             existing: Vec::new(),
             open_scene: false,
+            compared: false,
             missing_folder: Some(folder),
         });
     }
@@ -49,12 +63,15 @@ pub(crate) fn wait_for_yes<A>(
     if existing.is_empty() {
         return Ok(action);
     }
-    let open_scene =
-        scene_on_screen.is_some_and(|scene| existing.iter().any(|path| same_file(path, scene)));
+    let among = |guarded: Option<&Path>| {
+        guarded.is_some_and(|file| existing.iter().any(|path| same_file(path, file)))
+    };
+    let (open_scene, compared) = (among(guarded.scene), among(guarded.compared));
     Err(PendingReplace {
         action,
         existing,
         open_scene,
+        compared,
         missing_folder: None,
     })
 }
@@ -76,6 +93,7 @@ pub(crate) fn answer<A>(
 ) -> Option<Answer<A>> {
     let yes = pending.as_ref().and_then(|p| p.ui(ctx))?;
     let answered = pending.take()?;
+    ctx.data_mut(|data| data.remove::<bool>(focus_given()));
     if !yes {
         return None;
     }
@@ -94,7 +112,7 @@ impl<A> PendingReplace<A> {
             ui.set_max_width(520.0);
             if let Some(folder) = &self.missing_folder {
                 ui.heading("Create this folder?");
-                ui.label("The export goes into a folder that does not exist yet:");
+                ui.label("The files go into a folder that does not exist yet:");
                 ui.label(RichText::new(folder.display().to_string()).monospace());
                 answer = yes_or_cancel(ui, CREATE_FOLDER_LABEL);
                 return;
@@ -114,8 +132,31 @@ impl<A> PendingReplace<A> {
                     .color(ui.visuals().warn_fg_color),
                 );
             }
+            if self.compared {
+                ui.label(
+                    RichText::new(
+                        "One of them is the image you are comparing, your program's output: \
+                         it will be replaced by the exact one.",
+                    )
+                    .color(ui.visuals().warn_fg_color),
+                );
+            }
+            // The folder, then the files' names in it.
+            let folder = self.existing[0].parent().filter(|folder| {
+                self.existing
+                    .iter()
+                    .all(|path| path.parent() == Some(folder))
+            });
+            if let Some(folder) = folder {
+                let shown = std::path::absolute(folder).unwrap_or_else(|_| folder.to_path_buf());
+                ui.label(format!("In the folder {}:", shown.display()));
+            }
             for path in &self.existing {
-                ui.label(RichText::new(path.display().to_string()).monospace());
+                let name = match (folder, path.file_name()) {
+                    (Some(_), Some(name)) => name.to_string_lossy().into_owned(),
+                    _ => path.display().to_string(),
+                };
+                ui.label(RichText::new(name).monospace());
             }
             answer = yes_or_cancel(ui, REPLACE_LABEL);
         });
@@ -126,13 +167,27 @@ impl<A> PendingReplace<A> {
     }
 }
 
-/// A row of the yes button (`yes_label`) and "Cancel": `Some(true)` or `Some(false)` when one
-/// is clicked.
+/// Marks that "Cancel" of the modal on screen has been given the focus once.
+fn focus_given() -> egui::Id {
+    egui::Id::unique("replace files: Cancel focused")
+}
+
+/// A row of "Cancel" and the yes button (`yes_label`): `Some(true)` or `Some(false)` when one
+/// is clicked. "Cancel" takes the focus as the modal opens (from a field typed in, too), so
+/// Enter answers no.
 fn yes_or_cancel(ui: &mut egui::Ui, yes_label: &str) -> Option<bool> {
     ui.horizontal(|ui| {
+        let cancel = ui.button("Cancel");
+        let first = ui.data_mut(|data| {
+            let given = data.get_temp::<bool>(focus_given()).unwrap_or(false);
+            data.insert_temp(focus_given(), true);
+            !given
+        });
+        if first {
+            cancel.request_focus();
+        }
         let yes = ui.button(yes_label).clicked();
-        let cancel = ui.button("Cancel").clicked();
-        (yes || cancel).then_some(yes)
+        (yes || cancel.clicked()).then_some(yes)
     })
     .inner
 }

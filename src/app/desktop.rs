@@ -26,16 +26,15 @@ impl ViewerApp {
         }
     }
 
-    /// The folder an export would have to create, which is asked for before it is.
-    #[expect(
-        clippy::unused_self,
-        reason = "a method, as each seam's are: the caller names no seam"
-    )]
+    /// The folder an export or the course files would have to create, which is asked for before
+    /// it is.
     pub(super) fn missing_export_folder(&self, write: &Write) -> Option<PathBuf> {
-        let Write::ExportTo(base) = write else {
-            return None;
+        let base = match write {
+            Write::ExportTo(base) => base.clone(),
+            Write::CourseFiles => PathBuf::from(self.settings.export.path.trim()),
+            Write::SaveViewTo(_) => return None,
         };
-        crate::export::export_folder(base).filter(|folder| !folder.is_dir())
+        crate::export::export_folder(&base).filter(|folder| !folder.is_dir())
     }
 
     /// Opens a file dropped on the window, by its path.

@@ -1,8 +1,6 @@
 //! The viewer's coordinator, [`ViewerApp`]: it holds each feature's state, routes input and
-//! [`Action`]s between the features, takes in what the background work finished, and draws the
-//! window through [`super::layout`]. Its read access (the view, the frame on screen, the probe,
-//! the messages) is what the tests and tools drive the viewer through, beside
-//! [`ViewerApp::apply`].
+//! [`Action`]s between them, takes in background work, draws through [`super::layout`]; tests
+//! drive it through its read access (view, frame, probe, messages) and [`ViewerApp::apply`].
 
 use std::path::Path;
 use std::time::Duration;
@@ -23,9 +21,8 @@ use super::{compare, input, layout, pixel_trace, render_requests, viewing, write
 use crate::cli::ViewerRequest;
 use crate::render::{Frame, View};
 
-/// The viewer application: the coordinator. Each feature's state is a struct of its own (the
-/// open scene, the view, the frames, the writes, the panels, the comparison); the coordinator
-/// routes input and [`Action`]s between them and draws the window.
+/// The viewer application: the coordinator of the features' states (the open scene, the view,
+/// the frames, the writes, the panels, the comparison).
 pub struct ViewerApp {
     /// What survives a restart.
     pub(super) settings: Settings,
@@ -149,17 +146,20 @@ impl ViewerApp {
         self.set_title(&format!("raytracer — {}", path.display()));
     }
 
-    /// Carries out `write` now if it replaces nothing; otherwise asks first
-    /// ([`confirm::wait_for_yes`]). An export that cannot start is refused before anything is
-    /// offered or created; a folder it would create is asked for first (a page has none).
+    /// Carries out `write` now if it replaces nothing, else asks ([`confirm::wait_for_yes`]); one
+    /// that cannot start is refused before a folder it would make is offered (a page has none).
     fn write_or_ask(&mut self, write: Write) {
         let missing_folder = self.missing_export_folder(&write);
         let written = self.written();
         let asked =
             self.writes
                 .files_of(&write, missing_folder.is_some(), &self.settings, &written);
-        let scene = self.scene.loaded.path.as_deref();
-        match asked.map(|files| confirm::wait_for_yes(write, missing_folder, files, scene)) {
+        let (scene, compared) = (
+            self.scene.loaded.path.as_deref(),
+            self.compare.watched_file(),
+        );
+        let guarded = confirm::Guarded { scene, compared };
+        match asked.map(|files| confirm::wait_for_yes(write, missing_folder, files, guarded)) {
             Ok(Ok(write)) => self.write_now(write),
             Ok(Err(pending)) => self.writes.pending_replace = Some(pending),
             Err(refused) => self.status = Some(refused),

@@ -80,6 +80,11 @@ fn to_colour_image(image: &RgbImage) -> ColorImage {
 }
 
 impl CompareState {
+    /// Their image file being compared (and watched).
+    pub(crate) fn watched_file(&self) -> Option<&Path> {
+        self.watched.as_ref().map(|(path, ..)| path.as_path())
+    }
+
     /// Shows `show` in the compared image, when a comparison is open.
     pub(crate) fn show_if_open(&mut self, show: CompareShow) {
         if self.current.is_some() {
