@@ -18,6 +18,7 @@ use super::fit::score::{Scorer, Theirs, Unexplained};
 use super::mistake::{Mistake, MistakeSet};
 use super::model::Model;
 use super::needed::{NEEDED_SHARE, needed, per_image, rounded};
+use super::rival_maps::same_map_farther;
 use super::shorter::{shorter_answers, without_turn_guesses};
 use crate::render::View;
 use crate::scene::Scene;
@@ -198,28 +199,6 @@ pub fn words_of(statements: &[Deviation]) -> MistakeSet {
     )
 }
 
-/// How far the pixel map `statements` describe lies from the course's (its axes, in course
-/// pixel steps).
-fn off_course(view: &View, statements: &[Deviation]) -> f64 {
-    let model = rebuild(view, statements);
-    let relative = model.pixels.relative_axes(Model::step_world(view)) - glam::DMat2::IDENTITY;
-    relative.x_axis.length() + relative.y_axis.length()
-}
-
-/// Whether the pixel maps `a` and `b` describe put every corner of the image within a pixel
-/// of each other: the same picture, said with other numbers.
-fn same_map(view: &View, a: &[Deviation], b: &[Deviation]) -> bool {
-    let (a, b) = (rebuild(view, a), rebuild(view, b));
-    let step = Model::step_world(view);
-    let (w, h) = (f64::from(view.width_px), f64::from(view.height_px));
-    [(0.0, 0.0), (w, 0.0), (0.0, h), (w, h)]
-        .iter()
-        .all(|&(x, y)| {
-            let corner = glam::DVec2::new(x, y);
-            (a.pixels.screen_of(corner) - b.pixels.screen_of(corner)).length() <= step
-        })
-}
-
 /// How much the statements claim — the numbers they fit, a known mistake counting one — then
 /// how many are fitted values: of two models that explain the images equally well, the one
 /// that claims less is said.
@@ -389,11 +368,8 @@ pub fn diagnose(scene: &Scene, view: &View, theirs: Theirs<'_>) -> Diagnosis {
                     .collect();
                 names(&rest)
             };
-            let fitted_geometry = rival.iter().any(Deviation::is_geometric);
             if rest_names(&rival) == rest_names(&statements)
-                && fitted_geometry
-                && (off_course(view, &rival) > 1.01 * off_course(view, &statements) + 1e-3
-                    || same_map(view, &rival, &statements))
+                && same_map_farther(view, &rival, &statements)
             {
                 continue;
             }

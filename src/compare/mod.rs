@@ -29,6 +29,7 @@ pub mod model;
 pub mod model_render;
 pub mod needed;
 pub mod picture;
+mod rival_maps;
 pub mod sentence;
 mod shorter;
 pub mod tell_apart;
