@@ -11,16 +11,17 @@ use super::model::Model;
 use crate::render::View;
 
 /// Whether `rival` says `answer`'s map again (the other statements the same, as the caller
-/// checks): with a fitted map farther from the course's and the same turns (mirrored, flipped),
-/// or one that puts every corner within a pixel of the answer's.
+/// checks): with a fitted map farther from the course's, unless the one is mirrored and the other
+/// flipped, or one that puts every corner within a pixel of the answer's.
 pub(super) fn same_map_farther(view: &View, rival: &[Deviation], answer: &[Deviation]) -> bool {
     let turns = |list: &[Deviation]| {
         let turn = |m: Mistake| list.contains(&Deviation::Word(m));
         (turn(Mistake::Mirrored), turn(Mistake::FlippedVertically))
     };
+    let (theirs, ours) = (turns(rival), turns(answer));
+    let other_turn = theirs != ours && theirs != (false, false) && ours != (false, false);
     rival.iter().any(Deviation::is_geometric)
-        && ((off_course(view, rival) > 1.01 * off_course(view, answer) + 1e-3
-            && turns(rival) == turns(answer))
+        && ((off_course(view, rival) > 1.01 * off_course(view, answer) + 1e-3 && !other_turn)
             || same_map(view, rival, answer))
 }
 

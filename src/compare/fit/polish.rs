@@ -145,7 +145,14 @@ fn diagonal_if_near(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Option
 /// depth ramp turns with it; moved on the images with its scales and shift only. A lone disc at
 /// the centre looks the same swapped, and the plain scale is the shorter story.
 fn unswapped(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Option<Model> {
-    if is_diagonal(model, step) || !is_diagonal(&turned_a_quarter(model), step) {
+    // Swapped, or a hair sheared beside swapped ([`NEAR_DIAGONAL`]).
+    let turned = turned_a_quarter(model).pixels.relative_axes(step);
+    let largest = turned
+        .to_cols_array()
+        .iter()
+        .fold(0.0f64, |a, v| a.max(v.abs()));
+    let off = turned.x_axis.y.abs().max(turned.y_axis.x.abs());
+    if is_diagonal(model, step) || off > NEAR_DIAGONAL * largest {
         return None;
     }
     let view = *scorer.view;
