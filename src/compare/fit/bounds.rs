@@ -57,10 +57,7 @@ fn from_bounds(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Vec<(usize,
     }
     let centre_of = |(low, high): (DVec2, DVec2)| 0.5 * (low + high);
     // Pixel point p is at (R (p + c) + s) · step on the screen, the course's at (p + c) · step.
-    let c = DVec2::new(
-        0.5 - 0.5 * f64::from(view.width_px),
-        0.5 - 0.5 * f64::from(view.height_px),
-    );
+    let c = Affine::centre(view.width_px, view.height_px);
     let mut each = Vec::new();
     for signs in [(1.0, 1.0), (-1.0, 1.0), (1.0, -1.0), (-1.0, -1.0)] {
         let relative = DMat2::from_diagonal(scale * DVec2::from(signs));

@@ -54,7 +54,9 @@ impl Affine {
         shift_px: DVec2::ZERO,
     };
 
-    fn centre(width_px: u32, height_px: u32) -> DVec2 {
+    /// The image's centre in pixel points, negated: pixel point p sits at (p + centre) course
+    /// pixel steps from it.
+    pub(super) fn centre(width_px: u32, height_px: u32) -> DVec2 {
         DVec2::new(
             0.5 - 0.5 * f64::from(width_px),
             0.5 - 0.5 * f64::from(height_px),

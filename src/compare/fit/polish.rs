@@ -29,9 +29,16 @@ const SMALL_TILT_LEVELS: f64 = 64.0;
 
 /// Whether `model`'s pixel map has no off-diagonal part (a thousandth of its largest entry).
 pub(super) fn is_diagonal(model: &Model, step: f64) -> bool {
-    let m = model.pixels.relative_axes(step);
+    off_diagonal_share(model.pixels.relative_axes(step)) <= 1e-3
+}
+
+/// The larger off-diagonal entry of `m`, as a share of its largest entry.
+fn off_diagonal_share(m: glam::DMat2) -> f64 {
     let largest = m.to_cols_array().iter().fold(0.0f64, |a, v| a.max(v.abs()));
-    m.x_axis.y.abs() <= 1e-3 * largest && m.y_axis.x.abs() <= 1e-3 * largest
+    if largest == 0.0 {
+        return 0.0;
+    }
+    m.x_axis.y.abs().max(m.y_axis.x.abs()) / largest
 }
 
 /// `model` with its pixel map moved, by a pattern search of small steps, to draw their images
@@ -126,9 +133,7 @@ fn diagonal_if_near(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Option
     let view = *scorer.view;
     let affine = Affine::of_map(&model.pixels, view.width_px, view.height_px, step);
     let m = affine.relative;
-    let largest = m.to_cols_array().iter().fold(0.0f64, |a, v| a.max(v.abs()));
-    let off = m.x_axis.y.abs().max(m.y_axis.x.abs());
-    if is_diagonal(model, step) || off > NEAR_DIAGONAL * largest {
+    if is_diagonal(model, step) || off_diagonal_share(m) > NEAR_DIAGONAL {
         return None;
     }
     let mut diagonal = *model;
@@ -147,12 +152,7 @@ fn diagonal_if_near(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Option
 fn unswapped(scorer: &mut Scorer<'_>, model: &Model, step: f64) -> Option<Model> {
     // Swapped, or a hair sheared beside swapped ([`NEAR_DIAGONAL`]).
     let turned = turned_a_quarter(model).pixels.relative_axes(step);
-    let largest = turned
-        .to_cols_array()
-        .iter()
-        .fold(0.0f64, |a, v| a.max(v.abs()));
-    let off = turned.x_axis.y.abs().max(turned.y_axis.x.abs());
-    if is_diagonal(model, step) || off > NEAR_DIAGONAL * largest {
+    if is_diagonal(model, step) || off_diagonal_share(turned) > NEAR_DIAGONAL {
         return None;
     }
     let view = *scorer.view;
