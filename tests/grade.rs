@@ -301,14 +301,67 @@ fn a_report_replaces_a_previous_one_and_never_a_folder_of_other_files() {
         "the previous report is gone, not kept beside"
     );
 
-    // A report the user has added a file to is no longer only a report.
-    std::fs::write(root.path().join("report/notes.txt"), "my notes").unwrap();
+    // A report the user has added anything to, anywhere under it, is no longer only a report:
+    // the run is refused before anything is written, naming what is not the report's.
+    for (added, named) in [
+        ("report/notes.txt", "'notes.txt'"),
+        ("report/pages/notes.txt", "'pages/notes.txt'"),
+        ("report/pictures/mine/notes.txt", "'pictures/mine'"),
+    ] {
+        let added = root.path().join(added);
+        std::fs::create_dir_all(added.parent().unwrap()).unwrap();
+        std::fs::write(&added, "my notes").unwrap();
+        let before = tree(root.path());
+        let refused = grade("report");
+        assert_eq!(refused.status.code(), Some(1), "{}", stderr(&refused));
+        assert!(stderr(&refused).contains(named), "{}", stderr(&refused));
+        assert_eq!(tree(root.path()), before);
+        assert_eq!(std::fs::read_to_string(&added).unwrap(), "my notes");
+        std::fs::remove_file(&added).unwrap();
+    }
+    std::fs::remove_dir(root.path().join("report/pictures/mine")).unwrap();
+    // A link in it, even to the report's own file, is not what it wrote.
+    std::os::unix::fs::symlink("../index.html", root.path().join("report/pages/link")).unwrap();
     let refused = grade("report");
-    assert_eq!(refused.status.code(), Some(1));
-    assert_eq!(
-        std::fs::read_to_string(root.path().join("report/notes.txt")).unwrap(),
-        "my notes"
+    assert!(
+        stderr(&refused).contains("'pages/link'"),
+        "{}",
+        stderr(&refused)
     );
+    std::fs::remove_file(root.path().join("report/pages/link")).unwrap();
+    let again = grade("report");
+    assert!(again.status.success(), "{}", stderr(&again));
+
+    // A class inside the report, or a report inside the class, is refused: replacing the
+    // report would take the class with it.
+    exact_submission(&root.path().join("report/exact/class/two"));
+    let before = tree(root.path());
+    let class_inside = run_in(
+        root.path(),
+        &[
+            "grade",
+            assignment().to_str().unwrap(),
+            "report/exact/class",
+            "-o",
+            "report",
+        ],
+    );
+    assert_eq!(class_inside.status.code(), Some(1));
+    assert!(
+        stderr(&class_inside).contains("holds the submissions folder"),
+        "{}",
+        stderr(&class_inside)
+    );
+    assert_eq!(tree(root.path()), before);
+    std::fs::remove_dir_all(root.path().join("report/exact/class")).unwrap();
+    let report_inside = grade("submissions/report");
+    assert_eq!(report_inside.status.code(), Some(1));
+    assert!(
+        stderr(&report_inside).contains("is inside the submissions folder"),
+        "{}",
+        stderr(&report_inside)
+    );
+    assert_eq!(command::names_in(&root.path().join("submissions")), ["one"]);
 
     std::fs::create_dir(root.path().join("mine")).unwrap();
     std::fs::write(root.path().join("mine/notes.txt"), "my notes").unwrap();

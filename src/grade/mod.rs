@@ -12,6 +12,7 @@
 pub mod assignment;
 mod files;
 mod html;
+mod manifest;
 pub mod mark;
 pub mod report;
 mod staging;
@@ -87,6 +88,9 @@ pub fn grade(request: &GradeRequest) -> Result<ClassReport, GradeError> {
     {
         return Err(listed(std::io::Error::other("not a folder")));
     }
+    if let Some(why) = nested(&request.report, &request.submissions) {
+        return Err(GradeError::Report(why));
+    }
     let staging = Staging::begin(&request.report).map_err(GradeError::Report)?;
     let folder = staging.folder().to_path_buf();
     let assignment = request.assignment.display().to_string();
@@ -108,8 +112,7 @@ pub fn grade(request: &GradeRequest) -> Result<ClassReport, GradeError> {
         exacts.push(Exact { task, scene, frame });
     }
     files::write_exact_images(&folder, &exacts).map_err(GradeError::Report)?;
-    let submissions =
-        list_submissions(&request.submissions, Some(&request.report)).map_err(listed)?;
+    let submissions = list_submissions(&request.submissions).map_err(listed)?;
     let answers = Answers::new(&folder).map_err(|e| GradeError::Report(e.to_string()))?;
     let images: usize = exacts
         .iter()
@@ -144,4 +147,32 @@ pub fn grade(request: &GradeRequest) -> Result<ClassReport, GradeError> {
     files::write_report(&folder, &class).map_err(GradeError::Report)?;
     staging.commit().map_err(GradeError::Report)?;
     Ok(class)
+}
+
+/// Why `report` may not be written where it is asked, when it lies inside `submissions` or holds
+/// them: a report replaced would take the class with it, and a class would grade its own report.
+fn nested(report: &std::path::Path, submissions: &std::path::Path) -> Option<String> {
+    let submissions_real = submissions.canonicalize().ok()?;
+    // The report's folder may not exist yet: where it would be.
+    let report_real = report.canonicalize().ok().or_else(|| {
+        let parent = match report.parent() {
+            Some(parent) if !parent.as_os_str().is_empty() => parent,
+            _ => std::path::Path::new("."),
+        };
+        Some(parent.canonicalize().ok()?.join(report.file_name()?))
+    })?;
+    let (shown, class) = (report.display(), submissions.display());
+    if report_real.starts_with(&submissions_real) {
+        Some(format!(
+            "-o '{shown}' is inside the submissions folder '{class}': name a folder outside it \
+             (nothing was written)"
+        ))
+    } else if submissions_real.starts_with(&report_real) {
+        Some(format!(
+            "-o '{shown}' holds the submissions folder '{class}': name another folder (nothing \
+             was written)"
+        ))
+    } else {
+        None
+    }
 }

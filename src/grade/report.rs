@@ -3,23 +3,13 @@
 //! images in `exact/`, the difference pictures in `pictures/`, `report.json` and `report.csv`).
 
 use super::assignment::Task;
-use super::mark::{ImageKind, Mark, Outcome, PICTURES_FOLDER};
+use super::mark::{ImageKind, Mark, Outcome};
 use super::submission::Submission;
 use crate::cli::GradeRequest;
 use std::collections::BTreeMap;
 
-/// The `format` field of `report.json`, by which a previous report is known.
+/// The `format` field of `report.json`.
 pub const REPORT_FORMAT: &str = "raytracer-grade";
-
-/// Every entry a report folder holds.
-pub const REPORT_ENTRIES: [&str; 6] = [
-    "index.html",
-    "report.json",
-    "report.csv",
-    "exact",
-    PICTURES_FOLDER,
-    "pages",
-];
 
 /// One submission, marked.
 #[derive(Debug, Clone)]

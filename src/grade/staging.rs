@@ -1,14 +1,15 @@
 //! Where a report is made: a hidden folder beside the destination, moved into place when the
-//! report is whole. The destination may be new, empty, or a previous report (replaced); a folder
-//! holding anything else is refused before anything is written. A run that fails or is stopped
-//! (the signal handler calls [`remove_unfinished_report`]) removes its unfinished folder and
-//! leaves the previous report as it was.
+//! report is whole. The destination may be new, empty, or a previous report (replaced): one whose
+//! list of what it wrote ([`Manifest`]) names every entry anywhere under it. A folder holding
+//! anything else is refused before anything is written, naming the first such entry; replacing a
+//! report removes exactly what its list names. A run that fails or is stopped (the signal handler
+//! calls [`remove_unfinished_report`]) removes its unfinished folder and leaves the previous
+//! report as it was.
 
-use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::sync::{Mutex, PoisonError};
 
-use super::report::{REPORT_ENTRIES, REPORT_FORMAT};
+use super::manifest::{Manifest, NotAReport};
 
 /// The unfinished report folder of this run, for the signal handler.
 static UNFINISHED: Mutex<Option<PathBuf>> = Mutex::new(None);
@@ -41,6 +42,8 @@ pub fn remove_unfinished_report() {
 pub(super) struct Staging {
     folder: PathBuf,
     destination: PathBuf,
+    /// The previous report's list, where one is replaced.
+    previous: Option<Manifest>,
     committed: bool,
 }
 
@@ -48,6 +51,7 @@ impl Staging {
     /// Checks `destination` and makes the folder the report is written to.
     pub(super) fn begin(destination: &Path) -> Result<Self, String> {
         let shown = destination.display();
+        let mut previous = None;
         match std::fs::symlink_metadata(destination) {
             Ok(metadata) if metadata.file_type().is_symlink() => {
                 return Err(format!(
@@ -59,11 +63,20 @@ impl Staging {
                     "-o '{shown}' exists and is not a folder (nothing was written)"
                 ));
             }
-            Ok(_) if !is_empty(destination) && !holds_a_report(destination) => {
-                return Err(format!(
-                    "-o '{shown}' holds files that are not a grading report: name a new or empty \
-                     folder (nothing was written)"
-                ));
+            Ok(_) if !is_empty(destination) => {
+                previous = Some(Manifest::of_report(destination).map_err(|why| match why {
+                    NotAReport::NoList => format!(
+                        "-o '{shown}' holds files that are not a grading report: name a new or \
+                         empty folder (nothing was written)"
+                    ),
+                    NotAReport::Stranger(entry) => format!(
+                        "-o '{shown}' holds '{entry}', which is not part of the grading report \
+                         there: move it out, or name a new or empty folder (nothing was written)"
+                    ),
+                    NotAReport::Unreadable(why) => {
+                        format!("-o '{shown}' cannot be read through: {why} (nothing was written)")
+                    }
+                })?);
             }
             _ => {}
         }
@@ -93,6 +106,7 @@ impl Staging {
         Ok(Self {
             folder,
             destination: destination.to_path_buf(),
+            previous,
             committed: false,
         })
     }
@@ -102,9 +116,12 @@ impl Staging {
         &self.folder
     }
 
-    /// Moves the report into place, replacing a previous one.
+    /// Lists what the report holds, and moves it into place, replacing a previous one: of that,
+    /// exactly what its list names is removed. Anything put into it while this run went on is
+    /// kept, in a folder beside it that is named.
     pub(super) fn commit(mut self) -> Result<(), String> {
         let shown = self.destination.display().to_string();
+        Manifest::write_for(&self.folder).map_err(|e| format!("-o '{shown}': {e}"))?;
         let old = self.folder.with_extension("old");
         let had_old = self.destination.exists();
         if had_old {
@@ -122,10 +139,33 @@ impl Staging {
         self.committed = true;
         *UNFINISHED.lock().unwrap_or_else(PoisonError::into_inner) = None;
         if had_old {
-            let _ = std::fs::remove_dir_all(&old);
+            let gone = self
+                .previous
+                .as_ref()
+                .is_some_and(|previous| previous.remove_listed(&old));
+            if !gone {
+                let kept = kept_name(&self.destination);
+                let _ = std::fs::rename(&old, &kept);
+                eprintln!(
+                    "raytracer: the previous report held files it did not write (put there while \
+                     this run went on): they are kept in '{}'",
+                    kept.display()
+                );
+            }
         }
         Ok(())
     }
+}
+
+/// A new name beside `destination` for what a previous report held that it did not write.
+fn kept_name(destination: &Path) -> PathBuf {
+    let name = destination
+        .file_name()
+        .map_or_else(|| "report".into(), |n| n.to_string_lossy().into_owned());
+    (1..)
+        .map(|n| destination.with_file_name(format!("{name}.kept-{n}")))
+        .find(|path| std::fs::symlink_metadata(path).is_err())
+        .unwrap_or_else(|| destination.with_file_name(format!("{name}.kept")))
 }
 
 impl Drop for Staging {
@@ -139,24 +179,4 @@ impl Drop for Staging {
 /// Whether `folder` holds nothing.
 fn is_empty(folder: &Path) -> bool {
     std::fs::read_dir(folder).is_ok_and(|mut entries| entries.next().is_none())
-}
-
-/// Whether `folder` holds a report this program wrote and nothing else: its `report.json` says
-/// so, and every entry is one a report has.
-fn holds_a_report(folder: &Path) -> bool {
-    let Ok(entries) = std::fs::read_dir(folder) else {
-        return false;
-    };
-    for entry in entries {
-        let Ok(entry) = entry else { return false };
-        if !REPORT_ENTRIES.contains(&entry.file_name().to_string_lossy().as_ref()) {
-            return false;
-        }
-    }
-    let Ok(file) = std::fs::File::open(folder.join("report.json")) else {
-        return false;
-    };
-    let mut start = String::new();
-    let _ = file.take(4096).read_to_string(&mut start);
-    start.contains(&format!("\"format\": \"{REPORT_FORMAT}\""))
 }

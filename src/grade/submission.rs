@@ -18,19 +18,12 @@ pub struct Submission {
     pub skipped: Option<String>,
 }
 
-/// The submissions in `folder`, by name; `leave_out` (the report's own folder, when it is inside)
-/// is not one.
-pub fn list_submissions(
-    folder: &Path,
-    leave_out: Option<&Path>,
-) -> std::io::Result<Vec<Submission>> {
+/// The submissions in `folder`, by name.
+pub fn list_submissions(folder: &Path) -> std::io::Result<Vec<Submission>> {
     let mut found = Vec::new();
     for entry in std::fs::read_dir(folder)? {
         let entry = entry?;
         let path = entry.path();
-        if leave_out.is_some_and(|out| same_place(out, &path)) {
-            continue;
-        }
         let name = entry.file_name().to_string_lossy().into_owned();
         if name.starts_with('.') {
             continue;
@@ -52,14 +45,6 @@ pub fn list_submissions(
     }
     found.sort_by(|a, b| a.name.cmp(&b.name));
     Ok(found)
-}
-
-/// Whether two paths name the same folder (both exist).
-fn same_place(a: &Path, b: &Path) -> bool {
-    match (a.canonicalize(), b.canonicalize()) {
-        (Ok(a), Ok(b)) => a == b,
-        _ => false,
-    }
 }
 
 /// Where a named image was found in a submission.
