@@ -89,20 +89,26 @@ impl Manifest {
         Ok(Self { entries })
     }
 
-    /// The list of the report in `folder`, where everything under it is an entry of that list.
-    pub(super) fn of_report(folder: &Path) -> Result<Self, NotAReport> {
+    /// The list in `folder` (a report's, whatever else is there).
+    pub(super) fn in_folder(folder: &Path) -> Result<Self, NotAReport> {
         let unreadable = |e: std::io::Error| NotAReport::Unreadable(e.to_string());
-        let manifest = match std::fs::symlink_metadata(folder.join(MANIFEST)) {
+        match std::fs::symlink_metadata(folder.join(MANIFEST)) {
             Ok(metadata) if metadata.is_file() => {
                 let file = std::fs::File::open(folder.join(MANIFEST)).map_err(unreadable)?;
                 let mut text = String::new();
                 file.take(MAX_MANIFEST_BYTES)
                     .read_to_string(&mut text)
                     .map_err(|_| NotAReport::NoList)?;
-                Self::parse(&text).ok_or(NotAReport::NoList)?
+                Self::parse(&text).ok_or(NotAReport::NoList)
             }
-            _ => return Err(NotAReport::NoList),
-        };
+            _ => Err(NotAReport::NoList),
+        }
+    }
+
+    /// The list of the report in `folder`, where everything under it is an entry of that list.
+    pub(super) fn of_report(folder: &Path) -> Result<Self, NotAReport> {
+        let unreadable = |e: std::io::Error| NotAReport::Unreadable(e.to_string());
+        let manifest = Self::in_folder(folder)?;
         for (relative, plain) in walk(folder).map_err(unreadable)? {
             match (manifest.entries.get(&relative), plain) {
                 (Some(&listed), Some(is_folder)) if listed == is_folder => {}

@@ -10,6 +10,7 @@ use std::path::{Path, PathBuf};
 use std::sync::{Mutex, PoisonError};
 
 use super::manifest::{Manifest, NotAReport};
+use crate::platform::files::process_has_ended;
 
 /// The unfinished report folder of this run, for the signal handler.
 static UNFINISHED: Mutex<Option<PathBuf>> = Mutex::new(None);
@@ -51,6 +52,22 @@ impl Staging {
     /// Checks `destination` and makes the folder the report is written to.
     pub(super) fn begin(destination: &Path) -> Result<Self, String> {
         let shown = destination.display();
+        let name = destination
+            .file_name()
+            .ok_or_else(|| format!("-o '{shown}': name a folder"))?
+            .to_string_lossy()
+            .into_owned();
+        let parent = match destination.parent() {
+            Some(parent) if !parent.as_os_str().is_empty() => parent.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        if !parent.is_dir() {
+            return Err(format!(
+                "-o '{shown}': the folder '{}' does not exist",
+                parent.display()
+            ));
+        }
+        remove_stale(&parent, &name);
         let mut previous = None;
         match std::fs::symlink_metadata(destination) {
             Ok(metadata) if metadata.file_type().is_symlink() => {
@@ -80,21 +97,6 @@ impl Staging {
             }
             _ => {}
         }
-        let name = destination
-            .file_name()
-            .ok_or_else(|| format!("-o '{shown}': name a folder"))?
-            .to_string_lossy()
-            .into_owned();
-        let parent = match destination.parent() {
-            Some(parent) if !parent.as_os_str().is_empty() => parent.to_path_buf(),
-            _ => PathBuf::from("."),
-        };
-        if !parent.is_dir() {
-            return Err(format!(
-                "-o '{shown}': the folder '{}' does not exist",
-                parent.display()
-            ));
-        }
         let folder = parent.join(format!(
             ".{name}.raytracer-grade-{}.tmp",
             std::process::id()
@@ -121,6 +123,10 @@ impl Staging {
     /// kept, in a folder beside it that is named.
     pub(super) fn commit(mut self) -> Result<(), String> {
         let shown = self.destination.display().to_string();
+        // A stop asked for from here on waits for the report to be in place and the previous
+        // one removed (its clean-up takes this lock first): never the one moved aside and the
+        // other not yet in place, nor a hidden folder left.
+        let mut unfinished = UNFINISHED.lock().unwrap_or_else(PoisonError::into_inner);
         Manifest::write_for(&self.folder).map_err(|e| format!("-o '{shown}': {e}"))?;
         let old = self.folder.with_extension("old");
         let had_old = self.destination.exists();
@@ -137,7 +143,7 @@ impl Staging {
             ));
         }
         self.committed = true;
-        *UNFINISHED.lock().unwrap_or_else(PoisonError::into_inner) = None;
+        *unfinished = None;
         if had_old {
             let gone = self
                 .previous
@@ -179,4 +185,48 @@ impl Drop for Staging {
 /// Whether `folder` holds nothing.
 fn is_empty(folder: &Path) -> bool {
     std::fs::read_dir(folder).is_ok_and(|mut entries| entries.next().is_none())
+}
+
+/// Removes what runs into `parent/name` that have ended without cleaning up (killed with
+/// SIGKILL, or a power cut) left beside it: their unfinished folders (`.tmp`, `.removing`), and
+/// a previous report they had moved aside (`.old`) — put back in place where none is there, or
+/// else what its list names removed (anything else in it is kept). Folders of runs still going
+/// on are left alone.
+fn remove_stale(parent: &Path, name: &str) {
+    let prefix = format!(".{name}.raytracer-grade-");
+    let Ok(entries) = std::fs::read_dir(parent) else {
+        return;
+    };
+    let destination = parent.join(name);
+    for entry in entries.flatten() {
+        let file_name = entry.file_name().to_string_lossy().into_owned();
+        let Some((pid, kind)) = file_name
+            .strip_prefix(&prefix)
+            .and_then(|rest| rest.split_once('.'))
+        else {
+            continue;
+        };
+        let Ok(pid) = pid.parse::<u32>() else {
+            continue;
+        };
+        let is_folder = entry.file_type().is_ok_and(|t| t.is_dir());
+        if !is_folder || pid == std::process::id() || !process_has_ended(pid) {
+            continue;
+        }
+        let path = entry.path();
+        match kind {
+            "tmp" | "removing" => {
+                let _ = std::fs::remove_dir_all(&path);
+            }
+            "old" if std::fs::symlink_metadata(&destination).is_err() => {
+                let _ = std::fs::rename(&path, &destination);
+            }
+            "old" => {
+                if let Ok(listed) = Manifest::in_folder(&path) {
+                    listed.remove_listed(&path);
+                }
+            }
+            _ => {}
+        }
+    }
 }
