@@ -7,13 +7,27 @@ use std::fmt::Write as _;
 
 use super::mark::{ImageKind, Mark, Outcome};
 use super::report::{ClassReport, Graded, exact_image, short, status};
-use crate::output::shell::shell_quote;
+use crate::output::shell::shell_quote_path;
 
-/// `text` with the characters HTML gives a meaning escaped.
+/// Characters that reorder the text around them (embeddings, overrides, isolates and marks):
+/// in a name from a submission each is shown as its code (`alice<U+202E>gnp.exe`), never
+/// obeyed, so that `alice\u{202E}gnp.exe` does not read as `aliceexe.png`.
+fn is_direction_control(c: char) -> bool {
+    matches!(
+        c,
+        '\u{061C}' | '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}'
+    )
+}
+
+/// `text` with the characters HTML gives a meaning escaped, and those that reorder text shown
+/// by their codes.
 pub(crate) fn escape(text: &str) -> String {
     let mut escaped = String::with_capacity(text.len());
     for c in text.chars() {
         match c {
+            c if is_direction_control(c) => {
+                let _ = write!(escaped, "&lt;U+{:04X}&gt;", u32::from(c));
+            }
             '&' => escaped.push_str("&amp;"),
             '<' => escaped.push_str("&lt;"),
             '>' => escaped.push_str("&gt;"),
@@ -174,7 +188,7 @@ pub(super) fn index_page(class: &ClassReport) -> String {
 fn command_of(class: &ClassReport, index: usize, mark: &Mark) -> Option<String> {
     let task = &class.tasks[index];
     let path = mark.path.as_ref()?;
-    let quote = |p: &std::path::Path| shell_quote(&p.display().to_string());
+    let quote = |p: &std::path::Path| shell_quote_path(p);
     let their = match (mark.kind, &task.depth) {
         (ImageKind::Depth, Some((range, _))) => {
             format!(

@@ -256,8 +256,15 @@ impl Answers {
 }
 
 /// Marks the images of command line number `index` (`exact`) in the submission `folder`: each
-/// found and read; those that can be compared are compared together.
-pub fn mark_line(folder: &Path, index: usize, exact: &Exact, answers: &Answers) -> Vec<Mark> {
+/// found and read (never a file another of the lines, `claimed`, names); those that can be
+/// compared are compared together.
+pub fn mark_line(
+    folder: &Path,
+    index: usize,
+    exact: &Exact,
+    answers: &Answers,
+    claimed: &[PathBuf],
+) -> Vec<Mark> {
     let named = [
         (ImageKind::Colour, exact.task.colour.clone()),
         (
@@ -276,7 +283,7 @@ pub fn mark_line(folder: &Path, index: usize, exact: &Exact, answers: &Answers) 
             path: None,
             outcome: Outcome::Missing,
         };
-        match find_image(folder, &wanted) {
+        match find_image(folder, &wanted, claimed) {
             Found::Missing => {}
             Found::NotRead { name, why } => {
                 mark.renamed = Some(name);

@@ -118,6 +118,17 @@ pub fn grade(request: &GradeRequest) -> Result<ClassReport, GradeError> {
         .iter()
         .map(|e| usize::from(e.task.colour.is_some()) + usize::from(e.task.depth.is_some()))
         .sum();
+    // Every file the lines name: one line's file is never graded as another's.
+    let claimed: Vec<std::path::PathBuf> = exacts
+        .iter()
+        .flat_map(|e| {
+            [
+                e.task.colour.clone(),
+                e.task.depth.as_ref().map(|d| d.1.clone()),
+            ]
+        })
+        .flatten()
+        .collect();
     let total = (submissions.len() * images).max(1);
     let done = AtomicUsize::new(0);
     let bar = StepProgress::start("grading");
@@ -128,7 +139,7 @@ pub fn grade(request: &GradeRequest) -> Result<ClassReport, GradeError> {
             let mut marks: Vec<(usize, Mark)> = Vec::new();
             if submission.skipped.is_none() {
                 for (index, exact) in exacts.iter().enumerate() {
-                    let line = mark_line(&submission.folder, index, exact, &answers);
+                    let line = mark_line(&submission.folder, index, exact, &answers, &claimed);
                     let finished = done.fetch_add(line.len(), Ordering::Relaxed) + line.len();
                     bar.report(finished as f64 / total as f64);
                     marks.extend(line.into_iter().map(|mark| (index, mark)));

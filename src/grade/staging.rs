@@ -52,11 +52,11 @@ impl Staging {
     /// Checks `destination` and makes the folder the report is written to.
     pub(super) fn begin(destination: &Path) -> Result<Self, String> {
         let shown = destination.display();
-        let name = destination
-            .file_name()
-            .ok_or_else(|| format!("-o '{shown}': name a folder"))?
-            .to_string_lossy()
-            .into_owned();
+        let name = stem_of(
+            destination
+                .file_name()
+                .ok_or_else(|| format!("-o '{shown}': name a folder"))?,
+        );
         let parent = match destination.parent() {
             Some(parent) if !parent.as_os_str().is_empty() => parent.to_path_buf(),
             _ => PathBuf::from("."),
@@ -67,7 +67,7 @@ impl Staging {
                 parent.display()
             ));
         }
-        remove_stale(&parent, &name);
+        remove_stale(&parent, &name, destination);
         let mut previous = None;
         match std::fs::symlink_metadata(destination) {
             Ok(metadata) if metadata.file_type().is_symlink() => {
@@ -167,7 +167,7 @@ impl Staging {
 fn kept_name(destination: &Path) -> PathBuf {
     let name = destination
         .file_name()
-        .map_or_else(|| "report".into(), |n| n.to_string_lossy().into_owned());
+        .map_or_else(|| "report".into(), stem_of);
     (1..)
         .map(|n| destination.with_file_name(format!("{name}.kept-{n}")))
         .find(|path| std::fs::symlink_metadata(path).is_err())
@@ -187,17 +187,44 @@ fn is_empty(folder: &Path) -> bool {
     std::fs::read_dir(folder).is_ok_and(|mut entries| entries.next().is_none())
 }
 
-/// Removes what runs into `parent/name` that have ended without cleaning up (killed with
-/// SIGKILL, or a power cut) left beside it: their unfinished folders (`.tmp`, `.removing`), and
-/// a previous report they had moved aside (`.old`) — put back in place where none is there, or
-/// else what its list names removed (anything else in it is kept). Folders of runs still going
-/// on are left alone.
-fn remove_stale(parent: &Path, name: &str) {
+/// The longest name of a destination used as it is in the names of the folders beside it (a
+/// file name is at most 255 bytes, and theirs add about 40).
+const MAX_STEM_BYTES: usize = 150;
+
+/// What names the folders of a run into the destination named `name`: the name itself, or
+/// where it is long or not text, its start and a fingerprint of the whole name (two names
+/// never share their folders).
+fn stem_of(name: &std::ffi::OsStr) -> String {
+    if let Some(text) = name.to_str()
+        && text.len() <= MAX_STEM_BYTES
+    {
+        return text.to_owned();
+    }
+    let lossy = name.to_string_lossy();
+    let mut cut = 100.min(lossy.len());
+    while !lossy.is_char_boundary(cut) {
+        cut -= 1;
+    }
+    // FNV-1a over the name's bytes.
+    let fingerprint = name
+        .as_encoded_bytes()
+        .iter()
+        .fold(0xcbf2_9ce4_8422_2325_u64, |hash, &byte| {
+            (hash ^ u64::from(byte)).wrapping_mul(0x0100_0000_01b3)
+        });
+    format!("{}-{fingerprint:016x}", &lossy[..cut])
+}
+
+/// Removes what runs into `destination` (their folders named from `name`) that have ended
+/// without cleaning up (killed with SIGKILL, or a power cut) left beside it: their unfinished
+/// folders (`.tmp`, `.removing`), and a previous report they had moved aside (`.old`) — put back
+/// in place where none is there, or else what its list names removed (anything else in it is
+/// kept). Folders of runs still going on are left alone.
+fn remove_stale(parent: &Path, name: &str, destination: &Path) {
     let prefix = format!(".{name}.raytracer-grade-");
     let Ok(entries) = std::fs::read_dir(parent) else {
         return;
     };
-    let destination = parent.join(name);
     for entry in entries.flatten() {
         let file_name = entry.file_name().to_string_lossy().into_owned();
         let Some((pid, kind)) = file_name
@@ -218,8 +245,8 @@ fn remove_stale(parent: &Path, name: &str) {
             "tmp" | "removing" => {
                 let _ = std::fs::remove_dir_all(&path);
             }
-            "old" if std::fs::symlink_metadata(&destination).is_err() => {
-                let _ = std::fs::rename(&path, &destination);
+            "old" if std::fs::symlink_metadata(destination).is_err() => {
+                let _ = std::fs::rename(&path, destination);
             }
             "old" => {
                 if let Ok(listed) = Manifest::in_folder(&path) {

@@ -4,6 +4,7 @@
 //! the folder are read — a link is never followed, a named pipe or device never opened.
 
 use std::ffi::OsString;
+use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 /// One entry of the submissions folder.
@@ -24,7 +25,7 @@ pub fn list_submissions(folder: &Path) -> std::io::Result<Vec<Submission>> {
     for entry in std::fs::read_dir(folder)? {
         let entry = entry?;
         let path = entry.path();
-        let name = entry.file_name().to_string_lossy().into_owned();
+        let name = shown_name(&entry.file_name());
         if name.starts_with('.') {
             continue;
         }
@@ -70,12 +71,19 @@ pub enum Found {
 }
 
 /// Finds `wanted` (a relative path: its folders exactly, its file name with letter case and
-/// `.tga`/`.png` forgiven) in `folder`.
-pub fn find_image(folder: &Path, wanted: &Path) -> Found {
+/// `.tga`/`.png` forgiven) in `folder`. The exact name is taken first, then a letter-case
+/// variant, then the name with the other extension (each the first in byte order where several
+/// are there: `OUTPUT1_01.TGA` before `Output1_01.tga`); never a file another of the
+/// assignment's lines names (`claimed`: a `.tga` line does not grade the `.png` another names).
+pub fn find_image(folder: &Path, wanted: &Path, claimed: &[PathBuf]) -> Found {
     let Some(file_name) = wanted.file_name() else {
         return Found::Missing;
     };
     let mut place = folder.to_path_buf();
+    let unreadable = |error: std::io::Error| Found::NotRead {
+        name: wanted.display().to_string(),
+        why: format!("its folder cannot be read: {error}"),
+    };
     if let Some(parent) = wanted.parent() {
         for part in parent.components() {
             place.push(part);
@@ -86,20 +94,37 @@ pub fn find_image(folder: &Path, wanted: &Path) -> Found {
                         name: wanted.display().to_string(),
                         why: format!(
                             "'{}' is not a folder (links are not followed)",
-                            part.as_os_str().to_string_lossy()
+                            shown_name(part.as_os_str())
                         ),
                     };
                 }
-                Err(_) => return Found::Missing,
+                Err(error) if error.kind() == std::io::ErrorKind::NotFound => {
+                    return Found::Missing;
+                }
+                Err(error) => return unreadable(error),
             }
         }
     }
-    let Ok(entries) = std::fs::read_dir(&place) else {
-        return Found::Missing;
+    let entries = match std::fs::read_dir(&place) {
+        Ok(entries) => entries,
+        Err(error) if error.kind() == std::io::ErrorKind::NotFound => return Found::Missing,
+        Err(error) => return unreadable(error),
     };
-    let names: Vec<OsString> = entries
+    let mut names: Vec<OsString> = entries
         .filter_map(|e| e.ok().map(|e| e.file_name()))
         .collect();
+    names.sort();
+    // Another line's file, by its name in any letter case.
+    let others: Vec<String> = claimed
+        .iter()
+        .filter(|other| other.parent() == wanted.parent())
+        .filter_map(|other| other.file_name())
+        .map(|other| other.to_string_lossy().to_lowercase())
+        .filter(|other| *other != file_name.to_string_lossy().to_lowercase())
+        .collect();
+    names.retain(|name| {
+        name == file_name || !others.contains(&name.to_string_lossy().to_lowercase())
+    });
     let wanted_text = file_name.to_string_lossy();
     let stem_of = |name: &str| -> String {
         let lower = name.to_lowercase();
@@ -136,7 +161,7 @@ pub fn find_image(folder: &Path, wanted: &Path) -> Found {
         return Found::Missing;
     };
     let path = place.join(chosen);
-    let name = chosen.to_string_lossy().into_owned();
+    let name = shown_name(chosen);
     match std::fs::symlink_metadata(&path) {
         Ok(metadata) if metadata.file_type().is_symlink() => Found::NotRead {
             name,
@@ -155,4 +180,20 @@ pub fn find_image(folder: &Path, wanted: &Path) -> Found {
             why: error.to_string(),
         },
     }
+}
+
+/// A file name as the report shows it: as it is where it is text; where it is not (bytes that
+/// are not UTF-8, on Unix), each such byte as `\xNN`, so that two such names never look alike.
+pub fn shown_name(name: &std::ffi::OsStr) -> String {
+    if let Some(text) = name.to_str() {
+        return text.to_owned();
+    }
+    let mut shown = String::new();
+    for chunk in name.as_encoded_bytes().utf8_chunks() {
+        shown.push_str(chunk.valid());
+        for byte in chunk.invalid() {
+            let _ = write!(shown, "\\x{byte:02X}");
+        }
+    }
+    shown
 }

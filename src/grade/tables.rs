@@ -75,10 +75,10 @@ pub(super) fn json(class: &ClassReport) -> String {
     text
 }
 
-/// A CSV field: quoted where it holds a comma, a quote or a line break; a leading `=`, `+`, `-`
-/// or `@` is prefixed with `'` so a spreadsheet does not run it as a formula.
+/// A CSV field: quoted where it holds a comma, a quote or a line break; a leading `=`, `+`, `-`,
+/// `@`, TAB or carriage return is prefixed with `'` so a spreadsheet does not run it as a formula.
 fn field(text: &str) -> String {
-    let text = if text.starts_with(['=', '+', '-', '@']) {
+    let text = if text.starts_with(['=', '+', '-', '@', '\t', '\r']) {
         format!("'{text}")
     } else {
         text.to_owned()
