@@ -302,6 +302,21 @@ fn new_files_follow_the_umask_and_replaced_files_keep_their_mode() {
     );
     assert!(output.status.success(), "{}", stderr(&output));
     assert_eq!(mode("c.png"), 0o640);
+    // Another user's file replaced by root keeps its owner and group (where the tests run as
+    // root; another user cannot give a file away).
+    use std::os::unix::fs::MetadataExt as _;
+    let path = folder.path().join("c.png");
+    if std::os::unix::fs::chown(&path, Some(65534), Some(65534)).is_ok() {
+        let output = run_shell(
+            folder.path(),
+            "exec",
+            &["-input", scene, "-output", "c.png"],
+        );
+        assert!(output.status.success(), "{}", stderr(&output));
+        let metadata = std::fs::metadata(&path).unwrap();
+        assert_eq!((metadata.uid(), metadata.gid()), (65534, 65534));
+        assert_eq!(mode("c.png"), 0o640);
+    }
 }
 
 // --- 4. Temporary files on signals and limits -----------------------------------------------

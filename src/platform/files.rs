@@ -109,13 +109,20 @@ pub fn create_new(path: &Path, mode: u32) -> std::io::Result<File> {
     options.open(path)
 }
 
-/// Gives `temporary`, about to replace a file described by `replaced`, that file's mode (Unix),
-/// without the set-id and sticky bits and without write for others. Nothing on Windows (see the
-/// module docs).
+/// Gives `temporary`, about to replace a file described by `replaced`, that file's owner and
+/// group where this process may set them (run as root, or a group of the user's own), and its
+/// mode (Unix), without the set-id and sticky bits and without write for others. Nothing on
+/// Windows (see the module docs).
 pub fn keep_mode(replaced: &std::fs::Metadata, temporary: &Path) -> std::io::Result<()> {
     #[cfg(unix)]
     {
-        use std::os::unix::fs::PermissionsExt as _;
+        use std::os::unix::fs::{MetadataExt as _, PermissionsExt as _};
+        // Another user's file replaced by root stays theirs. Where the owner cannot be set, the
+        // group alone may be; where neither, the file is the replacing user's, as an editor's is.
+        if std::os::unix::fs::chown(temporary, Some(replaced.uid()), Some(replaced.gid())).is_err()
+        {
+            let _ = std::os::unix::fs::chown(temporary, None, Some(replaced.gid()));
+        }
         // Never the set-user-id, set-group-id or sticky bits, nor writable by everyone: an
         // image is not a program, and a file made for one user stays that user's.
         let mode = replaced.permissions().mode() & 0o775;
