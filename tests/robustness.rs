@@ -265,6 +265,7 @@ fn a_link_is_written_through_and_never_to_a_device_or_with_set_id_bits() {
 
 #[test]
 fn new_files_follow_the_umask_and_replaced_files_keep_their_mode() {
+    use std::os::unix::fs::MetadataExt as _;
     let folder = tempfile::tempdir().unwrap();
     let scene = scene_path("scene1_02.txt");
     let scene = scene.to_str().unwrap();
@@ -304,7 +305,6 @@ fn new_files_follow_the_umask_and_replaced_files_keep_their_mode() {
     assert_eq!(mode("c.png"), 0o640);
     // Another user's file replaced by root keeps its owner and group (where the tests run as
     // root; another user cannot give a file away).
-    use std::os::unix::fs::MetadataExt as _;
     let path = folder.path().join("c.png");
     if std::os::unix::fs::chown(&path, Some(65534), Some(65534)).is_ok() {
         let output = run_shell(
