@@ -14,7 +14,7 @@ use std::process::{Command, Output};
 use std::time::{Duration, Instant};
 
 use command::{assert_one_line_error, binary, run_in, scene_path};
-use png_header::png;
+use png_header::{black_png_with_profile, png};
 
 /// Runs the binary in `folder` with its address space limited to `bytes`.
 fn run_limited(folder: &Path, bytes: u64, arguments: &[&str]) -> Output {
@@ -106,4 +106,80 @@ fn an_image_from_a_named_pipe_is_compared_as_the_file_is() {
         command::stderr(&output)
     );
     assert!(text.lines().any(|line| line == "match: yes"), "{text}");
+}
+
+#[test]
+fn a_colour_profile_or_a_stream_that_is_no_image_is_never_read_into_memory() {
+    let folder = tempfile::tempdir().unwrap();
+    let scene = scene_path("scene1_01.txt");
+    let scene = scene.to_str().unwrap();
+    // A black 200×200 PNG whose colour profile (2.5 MB in the file) inflates to 400 MB: its
+    // pixels are compared, and the run's peak stays within the bound -stats states.
+    std::fs::write(
+        folder.path().join("profile.png"),
+        black_png_with_profile(200, 200, 400 << 20),
+    )
+    .unwrap();
+    let output = run_in(
+        folder.path(),
+        &[
+            "-input",
+            scene,
+            "-size",
+            "200",
+            "200",
+            "-compare_output",
+            "profile.png",
+            "-stats",
+        ],
+    );
+    let text = String::from_utf8_lossy(&output.stdout).into_owned() + &command::stderr(&output);
+    assert!(text.contains("colour_pixels_differing:"), "{text}");
+    let figure = |name: &str| -> f64 {
+        text.lines()
+            .find_map(|line| line.strip_prefix(name))
+            .and_then(|value| value.trim().parse().ok())
+            .unwrap_or_else(|| panic!("no {name} in {text}"))
+    };
+    let (peak, bound) = (figure("peak_memory_mb:"), figure("memory_bound_mb:"));
+    assert!(
+        peak <= bound,
+        "peak {peak} MB over the stated bound {bound} MB"
+    );
+    // A device, and a named pipe that never ends, are refused by their first bytes at once.
+    std::os::unix::fs::symlink("/dev/zero", folder.path().join("zero.tga")).unwrap();
+    std::os::unix::fs::symlink("/dev/urandom", folder.path().join("noise.png")).unwrap();
+    let pipe = folder.path().join("endless.tga");
+    assert!(
+        Command::new("mkfifo")
+            .arg(&pipe)
+            .status()
+            .unwrap()
+            .success()
+    );
+    let writer = std::thread::spawn(move || {
+        use std::io::Write as _;
+        let mut fifo = std::fs::OpenOptions::new().write(true).open(pipe).unwrap();
+        // Until the reader has gone (a broken pipe).
+        while fifo.write_all(&[7_u8; 1 << 16]).is_ok() {}
+    });
+    for name in ["zero.tga", "noise.png", "endless.tga"] {
+        let started = Instant::now();
+        let output = run_limited(
+            folder.path(),
+            300 << 20,
+            &["-input", scene, "-compare_output", name],
+        );
+        let text = assert_one_line_error(&output);
+        assert!(
+            text.contains(name) && text.contains("its first bytes are not those of an image"),
+            "{name}: {text}"
+        );
+        assert!(
+            started.elapsed() < Duration::from_secs(10),
+            "{name}: {:?}",
+            started.elapsed()
+        );
+    }
+    writer.join().unwrap();
 }

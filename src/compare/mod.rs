@@ -23,6 +23,7 @@ pub mod deviation;
 pub mod diagnosis;
 pub mod difference;
 pub mod fit;
+mod image_head;
 pub mod judge;
 pub mod mistake;
 pub mod model;

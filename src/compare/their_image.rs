@@ -6,12 +6,17 @@
 //! within bounds: a file of more than [`MAX_FILE_BYTES`] is not read past that size, and an image
 //! whose header announces more than [`MAX_SIDE_PX`] pixels a side or more than [`MAX_DECODE_BYTES`]
 //! of pixels (a small PNG of a huge image, a "decompression bomb") is refused before it is
-//! decoded. The file is read as a stream, never sought, so a named pipe works as a file does.
+//! decoded. The file is read as a stream, never sought, so a named pipe works as a file does;
+//! its first bytes must be an image's, and a TGA is read no further than its header announces
+//! ([`super::image_head`]): a device or an endless stream is refused at once. A PNG's chunks
+//! that say nothing of its pixels (a colour profile, text) are left out before it is decoded.
 
 use std::io::Read;
 use std::path::Path;
 
 use image::RgbImage;
+
+use super::image_head::{HEAD_BYTES, announced_length, png_pixels_only};
 
 /// The most bytes read of an image file (a 16384×16384 uncompressed 24-bit TGA is 768 MiB).
 pub const MAX_FILE_BYTES: u64 = 800 << 20;
@@ -103,14 +108,35 @@ pub fn read_their_image(path: &Path) -> Result<RgbImage, TheirImageError> {
             path: path.display().to_string(),
         });
     }
+    let mut stream = file.take(MAX_FILE_BYTES + 1);
     let mut bytes = Vec::new();
-    file.take(MAX_FILE_BYTES + 1)
+    // The first bytes say whether it is an image, and a TGA how long it can be: a device, an
+    // endless stream or a file of garbage is not read further.
+    (&mut stream)
+        .take(HEAD_BYTES as u64)
         .read_to_end(&mut bytes)
         .map_err(read_error)?;
-    if bytes.len() as u64 > MAX_FILE_BYTES {
-        return Err(TheirImageError::TooLarge {
+    let announced = if bytes.is_empty() {
+        None
+    } else {
+        announced_length(&bytes).map_err(|message| TheirImageError::Decode {
             path: path.display().to_string(),
-        });
+            message,
+        })?
+    };
+    let most = announced.map_or(MAX_FILE_BYTES, |length| length.min(MAX_FILE_BYTES));
+    (&mut stream)
+        .take((most + 1).saturating_sub(bytes.len() as u64))
+        .read_to_end(&mut bytes)
+        .map_err(read_error)?;
+    if bytes.len() as u64 > most {
+        if announced.is_none() || most == MAX_FILE_BYTES {
+            return Err(TheirImageError::TooLarge {
+                path: path.display().to_string(),
+            });
+        }
+        // A TGA needs no more than its header announces: what follows is not read.
+        bytes.truncate(most as usize);
     }
     decode_their_image(path, &bytes)
 }
@@ -122,6 +148,12 @@ pub fn decode_their_image(name: &Path, bytes: &[u8]) -> Result<RgbImage, TheirIm
         path: name.display().to_string(),
         message,
     };
+    if !bytes.is_empty() {
+        announced_length(&bytes[..bytes.len().min(HEAD_BYTES)]).map_err(decode_error)?;
+    }
+    // A PNG's colour profile and text say nothing of its pixels, and may inflate to gigabytes.
+    let pixels_only = png_pixels_only(bytes);
+    let bytes = pixels_only.as_deref().unwrap_or(bytes);
     let mut limits = image::Limits::default();
     limits.max_image_width = Some(MAX_SIDE_PX);
     limits.max_image_height = Some(MAX_SIDE_PX);
