@@ -99,6 +99,16 @@ pub fn read_their_image(path: &Path) -> Result<RgbImage, TheirImageError> {
         source,
     };
     let file = std::fs::File::open(path).map_err(read_error)?;
+    read_their_file(file, path)
+}
+
+/// Reads the image file `file` (opened from `path`) as [`read_their_image`] does: for a file
+/// opened as checked (a submission's, opened without following a link).
+pub fn read_their_file(file: std::fs::File, path: &Path) -> Result<RgbImage, TheirImageError> {
+    let read_error = |source| TheirImageError::Read {
+        path: path.display().to_string(),
+        source,
+    };
     // A regular file's length is known: one too large is not read at all.
     if file
         .metadata()

@@ -1,5 +1,6 @@
 //! A command line's images of one submission marked: each found (letter case and `.tga`/`.png`
-//! forgiven), read within the limits of [`read_their_image`] and checked for size; those that
+//! forgiven), opened once without following a link or blocking on a pipe, read within the
+//! limits of [`crate::compare::their_image::read_their_image`] and checked for size; those that
 //! can be are compared and explained together, as `-compare_output` with `-compare_depth` would
 //! (one program drew both; the depth image under the line's range, the range it was drawn over
 //! read from it where it differs). Students who make the same mistake hand in the same
@@ -19,7 +20,8 @@ use super::submission::{Found, find_image};
 use crate::cli::compare::{TheirImages, compare};
 use crate::cli::{CompareRequest, TheirDepth};
 use crate::compare::Deviation;
-use crate::compare::their_image::read_their_image;
+use crate::compare::their_image::read_their_file;
+use crate::platform::files::open_regular_file;
 use crate::render::Frame;
 use crate::scene::Scene;
 
@@ -316,10 +318,13 @@ pub fn mark_line(
 
 /// Reads a submission's image, which must be `size_px`.
 fn read(path: &Path, size_px: (u32, u32)) -> Result<RgbImage, Outcome> {
-    if std::fs::metadata(path).is_ok_and(|m| m.len() == 0) {
+    // Opened once, as checked: a file swapped for a link or a pipe since it was found is
+    // refused on the handle, never read through.
+    let file = open_regular_file(path).map_err(|error| Outcome::Unreadable(error.to_string()))?;
+    if file.metadata().is_ok_and(|m| m.len() == 0) {
         return Err(Outcome::Unreadable("an empty file".to_owned()));
     }
-    match read_their_image(path) {
+    match read_their_file(file, path) {
         Err(error) => Err(Outcome::Unreadable(error.reason())),
         Ok(image) if image.dimensions() != size_px => Err(Outcome::WrongSize {
             found: image.dimensions(),

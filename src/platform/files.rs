@@ -218,6 +218,48 @@ pub fn folder_of(path: &Path) -> &Path {
     }
 }
 
+/// Opens `path` to read where it is a regular file, checked on the handle opened, so that it
+/// cannot be swapped between a check and the open: a link at its last step is not followed
+/// (`O_NOFOLLOW`), a named pipe or a device is opened without blocking (`O_NONBLOCK`) and
+/// refused. The error says which in words ("a link: not followed", "not a regular file").
+/// On Windows the link itself is opened (`FILE_FLAG_OPEN_REPARSE_POINT`) and refused.
+pub fn open_regular_file(path: &Path) -> std::io::Result<File> {
+    let mut options = std::fs::OpenOptions::new();
+    options.read(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt as _;
+        let flags = rustix::fs::OFlags::NOFOLLOW | rustix::fs::OFlags::NONBLOCK;
+        options.custom_flags(flags.bits() as i32);
+    }
+    #[cfg(windows)]
+    {
+        use std::os::windows::fs::OpenOptionsExt as _;
+        const FILE_FLAG_OPEN_REPARSE_POINT: u32 = 0x0020_0000;
+        options.custom_flags(FILE_FLAG_OPEN_REPARSE_POINT);
+    }
+    let file = match options.open(path) {
+        Ok(file) => file,
+        // A link at the last step (ELOOP on Linux and macOS, EMLINK on FreeBSD).
+        #[cfg(unix)]
+        Err(error)
+            if error.raw_os_error() == Some(rustix::io::Errno::LOOP.raw_os_error())
+                || error.raw_os_error() == Some(rustix::io::Errno::MLINK.raw_os_error()) =>
+        {
+            return Err(std::io::Error::other("a link: not followed"));
+        }
+        Err(error) => return Err(error),
+    };
+    let metadata = file.metadata()?;
+    if metadata.file_type().is_symlink() {
+        return Err(std::io::Error::other("a link: not followed"));
+    }
+    if !metadata.is_file() {
+        return Err(std::io::Error::other("not a regular file"));
+    }
+    Ok(file)
+}
+
 /// Whether the process `pid` has ended (so a temporary file it left is stale). `false` where it
 /// cannot be told: it may run as another user (it exists), or this is not Unix.
 pub fn process_has_ended(pid: u32) -> bool {
