@@ -4,7 +4,9 @@
 //!   SIGXCPU; the run ends with 128 + its number and leaves no temporary file and no half output
 //!   (signals sent with `kill`: `tests/robustness.rs`);
 //! * a scene piped in under a memory limit that cannot hold it is refused with one line, exit 1,
-//!   not aborted.
+//!   not aborted;
+//! * a class graded at a size whose exact images the memory limit cannot hold is refused with
+//!   the line and both figures, before any is drawn, not aborted.
 #![cfg(target_os = "linux")]
 
 #[path = "common/command.rs"]
@@ -86,4 +88,35 @@ fn a_piped_scene_that_memory_cannot_hold_is_refused_not_aborted() {
         "{text}"
     );
     assert_eq!(names_in(folder.path()), Vec::<String>::new());
+}
+
+#[test]
+fn a_class_whose_exact_images_memory_cannot_hold_is_refused_not_aborted() {
+    let folder = tempfile::tempdir().unwrap();
+    let scenes = scene_path("scene1_01.txt").parent().unwrap().to_path_buf();
+    let lines = std::fs::read_to_string(scenes.join("assignment1.commands"))
+        .unwrap()
+        .replace("-size 200 200", "-size 8192 8192");
+    std::fs::write(folder.path().join("big.commands"), lines).unwrap();
+    for n in 1..=7 {
+        let name = format!("scene1_0{n}.txt");
+        std::fs::copy(scenes.join(&name), folder.path().join(&name)).unwrap();
+    }
+    std::fs::create_dir(folder.path().join("class")).unwrap();
+    let before = names_in(folder.path());
+    let output = Command::new("prlimit")
+        .arg(format!("--as={0}:{0}", 3_u64 << 30))
+        .arg(binary())
+        .current_dir(folder.path())
+        .args(["grade", "big.commands", "class", "-o", "report"])
+        .output()
+        .unwrap();
+    let text = command::assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(1), "{text}");
+    assert!(
+        text.starts_with("raytracer: big.commands:4: the exact 8192×8192 images need about")
+            && text.contains("MB is available"),
+        "{text}"
+    );
+    assert_eq!(names_in(folder.path()), before);
 }

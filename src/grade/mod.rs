@@ -30,7 +30,9 @@ use self::staging::Staging;
 use self::submission::list_submissions;
 use crate::cli::GradeRequest;
 use crate::cli::progress::StepProgress;
+use crate::platform::memory::available_memory_bytes;
 use crate::render::depth_map::DepthRange;
+use crate::render::memory::{BASELINE_BYTES, render_bound_bytes};
 use crate::render::{View, ViewError, render};
 use crate::scene::{LoadError, load_scene};
 
@@ -70,6 +72,26 @@ pub enum GradeError {
         /// Why.
         source: std::io::Error,
     },
+    /// A line's exact images would not fit in the memory the program may still use (the
+    /// render command's check; the exact frames of the lines before it are held).
+    #[error(
+        "{assignment}:{line}: the exact {width_px}×{height_px} images need about {needed_mb:.0} MB \
+         more memory, and {available_mb:.0} MB is available: grade at a smaller -size"
+    )]
+    Memory {
+        /// The assignment file.
+        assignment: String,
+        /// The line.
+        line: usize,
+        /// Its image width.
+        width_px: u32,
+        /// Its image height.
+        height_px: u32,
+        /// What its render adds, MB.
+        needed_mb: f64,
+        /// What the program may still use, MB.
+        available_mb: f64,
+    },
     /// The report cannot be written where asked.
     #[error("{0}")]
     Report(String),
@@ -95,6 +117,7 @@ pub fn grade(request: &GradeRequest) -> Result<ClassReport, GradeError> {
     let folder = staging.folder().to_path_buf();
     let assignment = request.assignment.display().to_string();
     let mut exacts = Vec::new();
+    let threads = rayon::current_num_threads();
     for task in tasks {
         let line = task.line_number;
         let scene = load_scene(&task.scene).map_err(|source| GradeError::Scene {
@@ -104,6 +127,22 @@ pub fn grade(request: &GradeRequest) -> Result<ClassReport, GradeError> {
         })?;
         let range = task.depth.as_ref().map_or(DepthRange::UNUSED, |d| d.0);
         let view = View::of_camera(&scene.camera, task.size_px.0, task.size_px.1, range);
+        // The render command's check (what the frames made before it hold is used already).
+        let (width_px, height_px) = task.size_px;
+        let bound = render_bound_bytes(width_px, height_px, scene.spheres.len(), None, threads);
+        let needed = bound.saturating_sub(BASELINE_BYTES);
+        if let Some(available) = available_memory_bytes()
+            && needed > available
+        {
+            return Err(GradeError::Memory {
+                assignment: assignment.clone(),
+                line,
+                width_px,
+                height_px,
+                needed_mb: needed as f64 / 1e6,
+                available_mb: available as f64 / 1e6,
+            });
+        }
         let frame = render(&scene, &view).map_err(|source| GradeError::View {
             assignment: assignment.clone(),
             line,
