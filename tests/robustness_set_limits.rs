@@ -114,7 +114,7 @@ fn a_class_whose_exact_images_memory_cannot_hold_is_refused_not_aborted() {
     let text = command::assert_one_line_error(&output);
     assert_eq!(output.status.code(), Some(1), "{text}");
     assert!(
-        text.starts_with("raytracer: big.commands:4: the exact 8192×8192 images need about")
+        text.starts_with("raytracer: big.commands:4: the exact 8192×8192 images need about 1946 MB")
             && text.contains("MB is available"),
         "{text}"
     );
