@@ -5,6 +5,8 @@
 //!   (signals sent with `kill`: `tests/robustness.rs`);
 //! * a scene piped in under a memory limit that cannot hold it is refused with one line, exit 1,
 //!   not aborted;
+//! * a pixel's trace over a million spheres stays within the memory bound `-stats` states, and
+//!   under a limit that holds the render but not the trace is refused naming `-trace`;
 //! * a class graded at a size whose exact images the memory limit cannot hold is refused with
 //!   the line and both figures, before any is drawn, not aborted.
 #![cfg(target_os = "linux")]
@@ -114,9 +116,90 @@ fn a_class_whose_exact_images_memory_cannot_hold_is_refused_not_aborted() {
     let text = command::assert_one_line_error(&output);
     assert_eq!(output.status.code(), Some(1), "{text}");
     assert!(
-        text.starts_with("raytracer: big.commands:4: the exact 8192×8192 images need about 1946 MB")
-            && text.contains("MB is available"),
+        text.starts_with(
+            "raytracer: big.commands:4: the exact 8192×8192 images need about 1946 MB"
+        ) && text.contains("MB is available"),
         "{text}"
     );
     assert_eq!(names_in(folder.path()), before);
+}
+
+#[test]
+fn a_trace_over_a_million_spheres_is_within_the_stated_bound() {
+    use std::fmt::Write as _;
+    let folder = tempfile::tempdir().unwrap();
+    let mut scene = String::from(
+        "OrthographicCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 size 5 }\n\
+         Background { color 0 0 0 }\n\
+         Materials { numMaterials 1 PhongMaterial { diffuseColor 1 0 0 } }\n\
+         Group { numObjects 1000000 MaterialIndex 0\n",
+    );
+    for n in 0..1_000_000_u32 {
+        let (x, y) = (
+            f64::from(n % 1000) / 200.0 - 2.5,
+            f64::from(n / 1000) / 200.0 - 2.5,
+        );
+        let _ = writeln!(scene, "Sphere {{ center {x} {y} 0 radius 0.002 }}");
+    }
+    scene.push_str("}\n");
+    std::fs::write(folder.path().join("million.txt"), scene).unwrap();
+    let arguments = [
+        "-input",
+        "million.txt",
+        "-size",
+        "200",
+        "200",
+        "-output",
+        "o.tga",
+        "-trace",
+        "100",
+        "100",
+        "-stats",
+    ];
+    let output = Command::new(binary())
+        .current_dir(folder.path())
+        .args(arguments)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&output.stdout);
+    assert!(output.status.success(), "{}", command::stderr(&output));
+    let figure = |name: &str| -> f64 {
+        text.lines()
+            .find_map(|line| line.strip_prefix(name))
+            .and_then(|value| value.trim().parse().ok())
+            .unwrap_or_else(|| panic!("no {name}"))
+    };
+    let (peak, bound) = (figure("peak_memory_mb:"), figure("memory_bound_mb:"));
+    assert!(
+        peak <= bound,
+        "peak {peak} MB over the stated bound {bound} MB"
+    );
+    // Under 800 MB of address space, which holds the scene and its render but not the trace
+    // beside them: refused with one line naming the trace (it aborted).
+    let output = Command::new("prlimit")
+        .arg("--as=800000000:800000000")
+        .arg(binary())
+        .current_dir(folder.path())
+        .args([
+            "-input",
+            "million.txt",
+            "-size",
+            "200",
+            "200",
+            "-output",
+            "p.tga",
+        ])
+        .args(["-trace", "100", "100"])
+        .output()
+        .unwrap();
+    let said = command::assert_one_line_error(&output);
+    assert_eq!(output.status.code(), Some(1), "{said}");
+    assert!(
+        said.contains("200×200 with -trace over 1000000 spheres needs about")
+            && said
+                .trim_end()
+                .ends_with("MB is available: trace on a smaller scene, or leave out -trace"),
+        "{said}"
+    );
+    assert!(!folder.path().join("p.tga").exists());
 }

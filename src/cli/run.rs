@@ -26,7 +26,8 @@ use crate::platform::files::{FileIdentity, identity};
 use crate::platform::memory::{available_memory_bytes, peak_memory_bytes};
 use crate::render::depth_map::{DepthColourMap, DepthRange};
 use crate::render::memory::{
-    BASELINE_BYTES, compare_bound_bytes, load_bound_bytes, render_bound_bytes, streamed_bound_bytes,
+    BASELINE_BYTES, compare_bound_bytes, load_bound_bytes, render_bound_bytes,
+    streamed_bound_bytes, trace_bound_bytes,
 };
 use crate::render::{
     Frame, Quality, View, ViewError, render_with_progress, renders_strip_by_strip,
@@ -48,14 +49,18 @@ pub enum RunError {
     View(#[from] ViewError),
     /// The render needs more memory than the program may use.
     #[error(
-        "{width_px}×{height_px} needs about {needed_mb:.0} MB more memory, and {available_mb:.0} \
-         MB is available: choose a smaller -size or fewer samples"
+        "{width_px}×{height_px}{traced} needs about {needed_mb:.0} MB more memory, and \
+         {available_mb:.0} MB is available: {advice}"
     )]
     Memory {
         /// Image width.
         width_px: u32,
         /// Image height.
         height_px: u32,
+        /// What a pixel's trace adds to the render, in words (empty without `-trace`).
+        traced: String,
+        /// What to change.
+        advice: &'static str,
         /// The render's bound, MB.
         needed_mb: f64,
         /// What the program may still use, MB.
@@ -211,13 +216,26 @@ fn check_distinct_files(request: &RenderRequest) -> Result<(), UsageError> {
 
 /// Refuses work whose memory bound (`bound` bytes) exceeds what the program may still use. The
 /// program itself ([`BASELINE_BYTES`] of the bound) is running already, and what it holds is
-/// not available any more: the part of the bound the run adds is what must fit.
-fn check_memory(request: &RenderRequest, bound: u64) -> Result<u64, RunError> {
+/// not available any more: the part of the bound the run adds is what must fit. `traced_spheres`:
+/// the spheres a pixel's trace goes over, where the bound counts one.
+fn check_memory(
+    request: &RenderRequest,
+    bound: u64,
+    traced_spheres: Option<usize>,
+) -> Result<u64, RunError> {
     let added = bound.saturating_sub(BASELINE_BYTES);
     match available_memory_bytes() {
         Some(available) if added > available => Err(RunError::Memory {
             width_px: request.width_px,
             height_px: request.height_px,
+            traced: traced_spheres.map_or_else(String::new, |spheres| {
+                format!(" with -trace over {spheres} spheres")
+            }),
+            advice: if traced_spheres.is_some() {
+                "trace on a smaller scene, or leave out -trace"
+            } else {
+                "choose a smaller -size or fewer samples"
+            },
             needed_mb: added as f64 / 1e6,
             available_mb: available as f64 / 1e6,
         }),
@@ -301,7 +319,7 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
         }
     }
     let file_bytes = std::fs::metadata(&request.input).map_or(0, |m| m.len());
-    let load_bound = check_memory(request, load_bound_bytes(file_bytes))?;
+    let load_bound = check_memory(request, load_bound_bytes(file_bytes), None)?;
     let started = Instant::now();
     let scene = {
         let bar = StepProgress::start("loading");
@@ -309,6 +327,14 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
     };
     let parse = started.elapsed();
     let view = request_view(&scene, request);
+    // A pixel's trace holds a record and a line of text per sphere: checked before it is made.
+    let trace_bound = request
+        .trace
+        .map_or(0, |_| trace_bound_bytes(scene.spheres.len()));
+    let traced_spheres = request.trace.map(|_| scene.spheres.len());
+    if trace_bound > 0 {
+        check_memory(request, BASELINE_BYTES + trace_bound, traced_spheres)?;
+    }
     let traced = match request.trace {
         Some((x_px, y_up_px)) => Some(trace_pixel(
             &scene,
@@ -344,7 +370,12 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
     let compare_bound = request.compare.as_ref().map_or(0, |_| {
         compare_bound_bytes(request.width_px, request.height_px)
     });
-    let memory_bound = check_memory(request, render_bound + compare_bound)?.max(load_bound);
+    let memory_bound = check_memory(
+        request,
+        render_bound + compare_bound + trace_bound,
+        traced_spheres,
+    )?
+    .max(load_bound);
 
     if streamed {
         let streamed = render_streamed(request, &scene, &view)?;

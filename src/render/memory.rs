@@ -15,7 +15,8 @@
 //! spheres only when a dense frame is drawn whole first.
 //!
 //! Loading a scene file is bounded separately: the file's bytes and the spheres parsed from them.
-//! So is comparing the user's images with the exact ones ([`compare_bound_bytes`]).
+//! So is comparing the user's images with the exact ones ([`compare_bound_bytes`]), and a
+//! pixel's trace ([`trace_bound_bytes`]).
 
 use super::sampling::Sampling;
 use super::sampling::working_bytes;
@@ -61,6 +62,15 @@ pub fn render_bound_bytes(
     let supersampled = sampling.map_or(0, |_| pixels * SUPERSAMPLED_BYTES_PER_PIXEL);
     let working = sampling.map_or(0, |sampling| working_bytes(sampling, threads) as u64);
     BASELINE_BYTES + spheres + frame + supersampled + working.max(output)
+}
+
+/// Per sphere of a pixel's trace (`-trace`): its record and its line of text, each in a buffer
+/// that may have doubled (1,000,000 spheres added 296 MB to the peak of a 200×200 render).
+pub const TRACE_BYTES_PER_SPHERE: u64 = 384;
+
+/// The bound, in bytes, that a pixel's trace adds for `sphere_count` spheres.
+pub fn trace_bound_bytes(sphere_count: usize) -> u64 {
+    sphere_count as u64 * TRACE_BYTES_PER_SPHERE
 }
 
 /// Per pixel of a frame drawn whole before it is streamed (a dense frame): t as f64 (8), the
