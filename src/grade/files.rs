@@ -41,6 +41,19 @@ pub(super) fn write_report(folder: &Path, class: &ClassReport) -> Result<(), Str
         write(&graded.page, html::submission_page(class, graded))?;
     }
     write("index.html", html::index_page(class))?;
-    write("report.json", tables::json(class))?;
-    write("report.csv", tables::csv(class))
+    // The JSON and CSV forms are written as they are made, never held whole.
+    let stream =
+        |relative: &str,
+         write: &dyn Fn(&mut std::io::BufWriter<std::fs::File>) -> std::io::Result<()>| {
+            let failed = |e: std::io::Error| format!("{relative}: {e}");
+            let file = std::fs::File::create(folder.join(relative)).map_err(failed)?;
+            let mut out = std::io::BufWriter::new(file);
+            write(&mut out).map_err(failed)?;
+            out.into_inner()
+                .map_err(|e| failed(e.into_error()))?
+                .sync_all()
+                .map_err(failed)
+        };
+    stream("report.json", &|out| tables::write_json(class, out))?;
+    stream("report.csv", &|out| tables::write_csv(class, out))
 }

@@ -1,0 +1,67 @@
+//! What grading holds per cell, at the binary: classes of 10,000 and 20,000 empty submissions
+//! (140,000 and 280,000 cells, each "missing") graded with the course's assignment, the peak
+//! resident memory of each run sampled from `/proc`; the difference per added cell is what
+//! docs/grading.md states ("a few hundred bytes per cell"), held here under 512 bytes. The JSON
+//! and CSV forms are written as they are made: held whole, they took about 2.2 KB a cell.
+#![cfg(target_os = "linux")]
+
+#[path = "common/command.rs"]
+mod command;
+
+use std::path::Path;
+use std::process::{Command, Stdio};
+use std::time::Duration;
+
+use command::binary;
+
+/// The most bytes grading may hold per cell.
+const MAX_BYTES_PER_CELL: u64 = 512;
+
+/// Grades `submissions` empty folders in `root` and returns the run's peak resident memory
+/// (VmHWM, sampled until it exits), in bytes.
+fn peak_grading_empty_class(root: &Path, submissions: usize) -> u64 {
+    let class = root.join(format!("class{submissions}"));
+    std::fs::create_dir(&class).unwrap();
+    for n in 0..submissions {
+        std::fs::create_dir(class.join(format!("s{n:05}"))).unwrap();
+    }
+    let assignment = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/assignment1.commands");
+    let mut child = Command::new(binary())
+        .current_dir(root)
+        .arg("grade")
+        .arg(&assignment)
+        .arg(&class)
+        .args(["-o", &format!("report{submissions}")])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let status_path = format!("/proc/{}/status", child.id());
+    let mut peak_kib = 0_u64;
+    while child.try_wait().unwrap().is_none() {
+        if let Ok(status) = std::fs::read_to_string(&status_path)
+            && let Some(line) = status.lines().find(|l| l.starts_with("VmHWM:"))
+        {
+            let kib: u64 = line.split_whitespace().nth(1).unwrap().parse().unwrap();
+            peak_kib = peak_kib.max(kib);
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    let output = child.wait_with_output().unwrap();
+    assert!(output.status.success(), "{}", command::stderr(&output));
+    peak_kib * 1024
+}
+
+#[test]
+fn grading_holds_a_few_hundred_bytes_per_cell() {
+    let root = tempfile::tempdir().unwrap();
+    let small = peak_grading_empty_class(root.path(), 10_000);
+    let large = peak_grading_empty_class(root.path(), 20_000);
+    // 10,000 more submissions of 14 images each.
+    let per_cell = large.saturating_sub(small) / 140_000;
+    println!("peaks {small} and {large} bytes: {per_cell} bytes per cell");
+    assert!(
+        per_cell <= MAX_BYTES_PER_CELL,
+        "{per_cell} bytes per cell (peaks {small} and {large} bytes)"
+    );
+}
