@@ -3,10 +3,15 @@
 //! resident memory of each run sampled from `/proc`; the difference per added cell is what
 //! docs/grading.md states ("a few hundred bytes per cell"), held here under 512 bytes (the JSON
 //! and CSV forms are written as they are made: held whole, they took several times that).
+//! And a class of huge images of the wrong size (valid 13000×13000 PNGs of a few MB each) is
+//! graded under a memory limit that holds one such image's pixels but not two: another size is
+//! said from the header, the pixels never decoded.
 #![cfg(target_os = "linux")]
 
 #[path = "common/command.rs"]
 mod command;
+#[path = "common/png_header.rs"]
+mod png_header;
 
 use std::path::Path;
 use std::process::{Command, Stdio};
@@ -64,4 +69,40 @@ fn grading_holds_a_few_hundred_bytes_per_cell() {
         per_cell <= MAX_BYTES_PER_CELL,
         "{per_cell} bytes per cell (peaks {small} and {large} bytes)"
     );
+}
+
+#[test]
+fn huge_images_of_another_size_are_said_from_their_headers_under_a_memory_limit() {
+    let root = tempfile::tempdir().unwrap();
+    let side = 13_000_u32;
+    let black = png_header::png(
+        side,
+        side,
+        &png_header::zlib_of_zeros(u64::from(side) * (1 + 3 * u64::from(side))),
+    );
+    for student in 0..4 {
+        let folder = root.path().join(format!("class/s{student}"));
+        std::fs::create_dir_all(&folder).unwrap();
+        std::fs::write(folder.join("output1_01.png"), &black).unwrap();
+    }
+    let assignment = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/assignment1.commands");
+    // 1.5 GiB of address space: one image's 507 MB of pixels, decoded with its RGB copy, fits;
+    // two threads decoding at once do not.
+    let output = Command::new("prlimit")
+        .arg("--as=1610612736:1610612736")
+        .arg(binary())
+        .current_dir(root.path())
+        .arg("grade")
+        .arg(&assignment)
+        .args(["class", "-o", "report"])
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{}", command::stderr(&output));
+    let report = std::fs::read_to_string(root.path().join("report/report.csv")).unwrap();
+    let wrong: Vec<&str> = report
+        .lines()
+        .filter(|line| line.contains("output1_01.tga") && line.contains("wrong size"))
+        .collect();
+    assert_eq!(wrong.len(), 4, "{report}");
+    assert!(wrong[0].contains("13000×13000"), "{}", wrong[0]);
 }

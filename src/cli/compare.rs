@@ -13,7 +13,7 @@ use super::request::CompareRequest;
 use crate::compare::judge::{NoDepthRange, judge, their_depth_at};
 use crate::compare::picture::{Row, difference_picture};
 use crate::compare::tell_apart::tell_apart;
-use crate::compare::their_image::read_their_image;
+use crate::compare::their_image::{TheirImageError, read_their_image_sized};
 use crate::compare::{Deviation, Diagnosis, Difference, Theirs};
 use crate::explore::trace::PixelTrace;
 use crate::render::Frame;
@@ -259,12 +259,32 @@ impl CompareReport {
     }
 }
 
-/// Reads one image to compare (within the limits of [`read_their_image`]).
-fn read_image(flag: Flag, path: &Path) -> Result<RgbImage, CompareError> {
-    read_their_image(path).map_err(|error| CompareError::ReadImage {
-        flag,
-        path: path.display().to_string(),
-        message: error.reason(),
+/// Reads one image to compare (within the limits of
+/// [`crate::compare::their_image::read_their_image`]); one whose header
+/// announces another size than `expected` (the size and what asks for it) is refused before its
+/// pixels are decoded.
+fn read_image(
+    flag: Flag,
+    path: &Path,
+    expected: Option<&((u32, u32), String)>,
+) -> Result<RgbImage, CompareError> {
+    read_their_image_sized(path, expected.map(|(size, _)| *size)).map_err(|error| match error {
+        TheirImageError::OtherSize {
+            found,
+            expected: size,
+            ..
+        } => CompareError::CompareSize {
+            flag,
+            path: path.display().to_string(),
+            found,
+            expected: size,
+            expected_by: expected.map(|(_, by)| by.clone()).unwrap_or_default(),
+        },
+        error => CompareError::ReadImage {
+            flag,
+            path: path.display().to_string(),
+            message: error.reason(),
+        },
     })
 }
 
@@ -285,7 +305,7 @@ pub(crate) fn read_theirs(
     ];
     for (flag, path) in files {
         let Some(path) = path else { continue };
-        let image = read_image(flag, path)?;
+        let image = read_image(flag, path, expected.as_ref())?;
         match &expected {
             Some((size, by)) if image.dimensions() != *size => {
                 return Err(CompareError::CompareSize {

@@ -43,6 +43,19 @@ pub enum TheirImageError {
         /// The file.
         path: String,
     },
+    /// Its header announces another size than the one asked for: not decoded.
+    #[error(
+        "'{path}' is {}×{} pixels, not the {}×{} asked for",
+        found.0, found.1, expected.0, expected.1
+    )]
+    OtherSize {
+        /// The file.
+        path: String,
+        /// Its size, from its header.
+        found: (u32, u32),
+        /// The size asked for.
+        expected: (u32, u32),
+    },
     /// The bytes are not an image the decoder reads, or its header asks for more than the limits.
     #[error("cannot read the image '{path}': {message}")]
     Decode {
@@ -59,6 +72,12 @@ impl TheirImageError {
         match self {
             Self::Read { source, .. } => source.to_string(),
             Self::TooLarge { .. } => format!("larger than {} MiB: not read", MAX_FILE_BYTES >> 20),
+            Self::OtherSize {
+                found, expected, ..
+            } => format!(
+                "{}×{} pixels, not the {}×{} asked for",
+                found.0, found.1, expected.0, expected.1
+            ),
             Self::Decode { message, .. } => message.clone(),
         }
     }
@@ -94,17 +113,37 @@ pub fn read_their_image_settled(path: &Path) -> Result<RgbImage, TheirImageError
 /// Reads an image file to compare (any size within the limits; TGA, PNG and what else the
 /// `image` crate reads), as a stream: a named pipe is read as a file is.
 pub fn read_their_image(path: &Path) -> Result<RgbImage, TheirImageError> {
+    read_their_image_sized(path, None)
+}
+
+/// [`read_their_image`], refusing an image of another size than `expected` before it is
+/// decoded ([`TheirImageError::OtherSize`]).
+pub fn read_their_image_sized(
+    path: &Path,
+    expected: Option<(u32, u32)>,
+) -> Result<RgbImage, TheirImageError> {
     let read_error = |source| TheirImageError::Read {
         path: path.display().to_string(),
         source,
     };
     let file = std::fs::File::open(path).map_err(read_error)?;
-    read_their_file(file, path)
+    read_their_file_sized(file, path, expected)
 }
 
 /// Reads the image file `file` (opened from `path`) as [`read_their_image`] does: for a file
 /// opened as checked (a submission's, opened without following a link).
 pub fn read_their_file(file: std::fs::File, path: &Path) -> Result<RgbImage, TheirImageError> {
+    read_their_file_sized(file, path, None)
+}
+
+/// [`read_their_file`], where an image whose header announces another size than `expected` is
+/// refused before it is decoded ([`TheirImageError::OtherSize`]): a grader's class of wrong-sized
+/// images takes no memory for their pixels.
+pub fn read_their_file_sized(
+    file: std::fs::File,
+    path: &Path,
+    expected: Option<(u32, u32)>,
+) -> Result<RgbImage, TheirImageError> {
     let read_error = |source| TheirImageError::Read {
         path: path.display().to_string(),
         source,
@@ -148,12 +187,22 @@ pub fn read_their_file(file: std::fs::File, path: &Path) -> Result<RgbImage, The
         // A TGA needs no more than its header announces: what follows is not read.
         bytes.truncate(most as usize);
     }
-    decode_their_image(path, &bytes)
+    decode_their_image_sized(path, &bytes, expected)
 }
 
 /// Decodes the image `bytes` named `name` (the format by the name's extension, as for a file,
 /// unless the bytes say otherwise), as an 8-bit RGB picture, within the limits.
 pub fn decode_their_image(name: &Path, bytes: &[u8]) -> Result<RgbImage, TheirImageError> {
+    decode_their_image_sized(name, bytes, None)
+}
+
+/// [`decode_their_image`], refusing an image of another size than `expected` before it is
+/// decoded.
+fn decode_their_image_sized(
+    name: &Path,
+    bytes: &[u8],
+    expected: Option<(u32, u32)>,
+) -> Result<RgbImage, TheirImageError> {
     let decode_error = |message: String| TheirImageError::Decode {
         path: name.display().to_string(),
         message,
@@ -183,6 +232,15 @@ pub fn decode_their_image(name: &Path, bytes: &[u8]) -> Result<RgbImage, TheirIm
     let (width, height) = reader()?
         .into_dimensions()
         .map_err(|error| decode_error(limit_message(&error)))?;
+    if let Some(expected) = expected
+        && (width, height) != expected
+    {
+        return Err(TheirImageError::OtherSize {
+            path: name.display().to_string(),
+            found: (width, height),
+            expected,
+        });
+    }
     // The 8-bit RGB copy may be made beside the decoded pixels: it must fit too.
     if u64::from(width) * u64::from(height) * 3 > MAX_DECODE_BYTES {
         return Err(decode_error(format!(

@@ -20,7 +20,7 @@ use super::submission::{Found, find_image};
 use crate::cli::compare::{TheirImages, compare};
 use crate::cli::{CompareRequest, TheirDepth};
 use crate::compare::Deviation;
-use crate::compare::their_image::read_their_file;
+use crate::compare::their_image::{TheirImageError, read_their_file_sized};
 use crate::platform::files::open_regular_file;
 use crate::render::Frame;
 use crate::scene::Scene;
@@ -324,7 +324,11 @@ fn read(path: &Path, size_px: (u32, u32)) -> Result<RgbImage, Outcome> {
     if file.metadata().is_ok_and(|m| m.len() == 0) {
         return Err(Outcome::Unreadable("an empty file".to_owned()));
     }
-    match read_their_file(file, path) {
+    // Another size is said from the header, its pixels never decoded.
+    match read_their_file_sized(file, path, Some(size_px)) {
+        Err(TheirImageError::OtherSize {
+            found, expected, ..
+        }) => Err(Outcome::WrongSize { found, expected }),
         Err(error) => Err(Outcome::Unreadable(error.reason())),
         Ok(image) if image.dimensions() != size_px => Err(Outcome::WrongSize {
             found: image.dimensions(),
