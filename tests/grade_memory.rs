@@ -5,7 +5,8 @@
 //! and CSV forms are written as they are made: held whole, they took several times that).
 //! And a class of huge images of the wrong size (valid 13000×13000 PNGs of a few MB each) is
 //! graded under a memory limit that holds one such image's pixels but not two: another size is
-//! said from the header, the pixels never decoded.
+//! said from the header, the pixels never decoded. `--memory MB` sets the budget the
+//! submissions are marked within: one at a time where it holds one.
 #![cfg(target_os = "linux")]
 
 #[path = "common/command.rs"]
@@ -105,4 +106,49 @@ fn huge_images_of_another_size_are_said_from_their_headers_under_a_memory_limit(
         .collect();
     assert_eq!(wrong.len(), 4, "{report}");
     assert!(wrong[0].contains("13000×13000"), "{}", wrong[0]);
+}
+
+#[test]
+fn a_memory_budget_sets_how_many_submissions_are_marked_at_once() {
+    let root = tempfile::tempdir().unwrap();
+    for student in 0..3 {
+        std::fs::create_dir_all(root.path().join(format!("class/s{student}"))).unwrap();
+    }
+    let assignment = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/assignment1.commands");
+    let grade = |extra: &[&str]| {
+        Command::new(binary())
+            .current_dir(root.path())
+            .arg("grade")
+            .arg(&assignment)
+            .args(["class", "-o", "report"])
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    let at_once = || -> (u64, f64) {
+        let report: serde_json::Value =
+            serde_json::from_slice(&std::fs::read(root.path().join("report/report.json")).unwrap())
+                .unwrap();
+        (
+            report["marked_at_once"].as_u64().unwrap(),
+            report["memory_budget_mb"].as_f64().unwrap_or(f64::NAN),
+        )
+    };
+    // Marking a submission of the course's 200×200 lines is bounded at about 16 MB: 20 MB holds
+    // one, 32 MB two, and 12 MB still marks one (never none).
+    let threads = std::thread::available_parallelism().map_or(1, usize::from) as u64;
+    for (budget, expected) in [(12, 1), (20, 1), (32, 2.min(threads)), (100_000, threads)] {
+        let output = grade(&["--memory", &budget.to_string()]);
+        assert!(output.status.success(), "{}", command::stderr(&output));
+        assert_eq!(at_once(), (expected, budget as f64), "--memory {budget}");
+    }
+    for wrong in [&["--memory", "0"][..], &["--memory", "lots"], &["--memory"]] {
+        let output = grade(wrong);
+        assert_eq!(output.status.code(), Some(2), "{wrong:?}");
+        assert!(
+            command::stderr(&output).contains("--memory needs the memory grading may use, in MB"),
+            "{}",
+            command::stderr(&output)
+        );
+    }
 }

@@ -12,7 +12,7 @@ use std::path::Path;
 pub const GRADE_WORD: &str = "grade";
 
 /// The grading command's synopsis, for the usage text and its errors.
-pub const GRADE_SYNOPSIS: &str = "grade ASSIGNMENT SUBMISSIONS -o REPORT";
+pub const GRADE_SYNOPSIS: &str = "grade ASSIGNMENT SUBMISSIONS -o REPORT [--memory MB]";
 
 /// What `raytracer -version` prints (and the viewer's help overlay shows): the version and the
 /// commit the program was built from (`+changes` where tracked files differed from it; build.rs).

@@ -14,6 +14,7 @@ mod files;
 mod html;
 mod manifest;
 pub mod mark;
+mod plan;
 pub mod report;
 mod staging;
 pub mod submission;
@@ -170,30 +171,50 @@ pub fn grade(request: &GradeRequest) -> Result<ClassReport, GradeError> {
         .collect();
     let total = (submissions.len() * images).max(1);
     let done = AtomicUsize::new(0);
+    // Within the memory budget: as many submissions at once as it holds.
+    let (budget, threads) =
+        plan::marking_threads(&exacts, request.memory_mb, rayon::current_num_threads());
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .thread_name(|index| format!("grade-{index}"))
+        .build();
     let bar = StepProgress::start("grading");
-    let graded: Vec<Graded> = submissions
-        .into_par_iter()
-        .enumerate()
-        .map(|(number, submission)| {
-            let mut marks: Vec<(usize, Mark)> = Vec::new();
-            if submission.skipped.is_none() {
-                for (index, exact) in exacts.iter().enumerate() {
-                    let line = mark_line(&submission.folder, index, exact, &answers, &claimed);
-                    let finished = done.fetch_add(line.len(), Ordering::Relaxed) + line.len();
-                    bar.report(finished as f64 / total as f64);
-                    marks.extend(line.into_iter().map(|mark| (index, mark)));
+    let mark_all = || -> Vec<Graded> {
+        submissions
+            .into_par_iter()
+            .enumerate()
+            .map(|(number, submission)| {
+                let mut marks: Vec<(usize, Mark)> = Vec::new();
+                if submission.skipped.is_none() {
+                    for (index, exact) in exacts.iter().enumerate() {
+                        let line = mark_line(&submission.folder, index, exact, &answers, &claimed);
+                        let finished = done.fetch_add(line.len(), Ordering::Relaxed) + line.len();
+                        bar.report(finished as f64 / total as f64);
+                        marks.extend(line.into_iter().map(|mark| (index, mark)));
+                    }
                 }
-            }
-            Graded::new(number, submission, marks)
-        })
-        .collect();
+                Graded::new(number, submission, marks)
+            })
+            .collect()
+    };
+    // Where no pool can be started (a process limit), the global one, which may be one thread.
+    let graded = match &pool {
+        Ok(pool) => pool.install(mark_all),
+        Err(_) => mark_all(),
+    };
     drop(bar);
-    let class = ClassReport::new(
+    let mut class = ClassReport::new(
         request,
         exacts.into_iter().map(|e| e.task).collect(),
         graded,
         answers.distinct(),
     );
+    class.threads = if pool.is_ok() {
+        threads
+    } else {
+        rayon::current_num_threads()
+    };
+    class.memory_budget_bytes = budget;
     files::write_report(&folder, &class).map_err(GradeError::Report)?;
     staging.commit().map_err(GradeError::Report)?;
     Ok(class)

@@ -92,6 +92,10 @@ pub struct ClassReport {
     /// How many distinct comparisons were made (the same images handed in twice are compared
     /// once).
     pub distinct_images: usize,
+    /// How many submissions were marked at once.
+    pub threads: usize,
+    /// The memory budget they were marked within, where one is known.
+    pub memory_budget_bytes: Option<u64>,
 }
 
 impl ClassReport {
@@ -108,6 +112,8 @@ impl ClassReport {
             tasks,
             graded,
             distinct_images,
+            threads: 1,
+            memory_budget_bytes: None,
         }
     }
 

@@ -70,6 +70,8 @@ pub(super) fn write_json(class: &ClassReport, out: &mut impl Write) -> std::io::
         "deviation_totals": class.deviation_totals(),
         "status_totals": class.status_totals(),
         "distinct_comparisons": class.distinct_images,
+        "marked_at_once": class.threads,
+        "memory_budget_mb": class.memory_budget_bytes.map(|bytes| (bytes / 100_000) as f64 / 10.0),
         "submissions": SUBMISSIONS_HERE,
     });
     let text = serde_json::to_string_pretty(&document).map_err(std::io::Error::other)?;
