@@ -16,7 +16,6 @@ mod png_header;
 
 use std::path::Path;
 use std::process::{Command, Stdio};
-use std::time::Duration;
 
 use command::binary;
 
@@ -32,7 +31,7 @@ fn peak_grading_empty_class(root: &Path, submissions: usize) -> u64 {
         std::fs::create_dir(class.join(format!("s{n:05}"))).unwrap();
     }
     let assignment = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/assignment1.commands");
-    let mut child = Command::new(binary())
+    let child = Command::new(binary())
         .current_dir(root)
         .arg("grade")
         .arg(&assignment)
@@ -42,20 +41,9 @@ fn peak_grading_empty_class(root: &Path, submissions: usize) -> u64 {
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    let status_path = format!("/proc/{}/status", child.id());
-    let mut peak_kib = 0_u64;
-    while child.try_wait().unwrap().is_none() {
-        if let Ok(status) = std::fs::read_to_string(&status_path)
-            && let Some(line) = status.lines().find(|l| l.starts_with("VmHWM:"))
-        {
-            let kib: u64 = line.split_whitespace().nth(1).unwrap().parse().unwrap();
-            peak_kib = peak_kib.max(kib);
-        }
-        std::thread::sleep(Duration::from_millis(5));
-    }
-    let output = child.wait_with_output().unwrap();
+    let (output, peak) = command::wait_measuring_peak(child);
     assert!(output.status.success(), "{}", command::stderr(&output));
-    peak_kib * 1024
+    peak
 }
 
 #[test]

@@ -36,24 +36,6 @@ fn assignment(root: &Path, lines: &[&str]) -> PathBuf {
     path
 }
 
-/// The exact colour image of scene1_01 at 50×50, written to `path` (the binary's own).
-fn exact_image(root: &Path, path: &Path) {
-    let scene = scenes().join("scene1_01.txt");
-    let output = run_in(
-        root,
-        &[
-            "-input",
-            scene.to_str().unwrap(),
-            "-size",
-            "50",
-            "50",
-            "-output",
-            path.to_str().unwrap(),
-        ],
-    );
-    assert!(output.status.success(), "{}", stderr(&output));
-}
-
 /// A wrong image (all white) at `path`.
 fn white_image(path: &Path) {
     image::RgbImage::from_pixel(50, 50, image::Rgb([255, 255, 255]))
@@ -178,7 +160,7 @@ fn a_files_letter_case_variant_and_its_other_format_are_chosen_by_a_stated_rule(
         std::fs::create_dir_all(&folder).unwrap();
         for name in order {
             if name == "OUTPUT.TGA" {
-                exact_image(root.path(), &folder.join(name));
+                command::exact_scene1_01_at_50(root.path(), &folder.join(name));
             } else {
                 white_image(&folder.join(name));
             }
@@ -187,7 +169,7 @@ fn a_files_letter_case_variant_and_its_other_format_are_chosen_by_a_stated_rule(
     // output.tga's other format, which no other line names, is its file.
     let folder = root.path().join("submissions/c");
     std::fs::create_dir_all(&folder).unwrap();
-    exact_image(root.path(), &folder.join("output.png"));
+    command::exact_scene1_01_at_50(root.path(), &folder.join("output.png"));
     let output = grade(root.path(), "report");
     assert!(output.status.success(), "{}", stderr(&output));
     let report = report_json(root.path());
@@ -212,7 +194,7 @@ fn a_lines_file_is_its_own() {
     assignment(root.path(), &["x.tga", "x.png"]);
     let alone = root.path().join("submissions/alone");
     std::fs::create_dir_all(&alone).unwrap();
-    exact_image(root.path(), &alone.join("x.png"));
+    command::exact_scene1_01_at_50(root.path(), &alone.join("x.png"));
     let output = grade(root.path(), "report");
     assert!(output.status.success(), "{}", stderr(&output));
     let alone_cells = cells(&report_json(root.path()), "alone");
@@ -227,7 +209,7 @@ fn an_unreadable_folder_is_said_unreadable_not_missing() {
     assignment(root.path(), &["x.tga"]);
     let locked = root.path().join("submissions/locked");
     std::fs::create_dir_all(&locked).unwrap();
-    exact_image(root.path(), &locked.join("x.tga"));
+    command::exact_scene1_01_at_50(root.path(), &locked.join("x.tga"));
     std::fs::set_permissions(&locked, std::fs::Permissions::from_mode(0o000)).unwrap();
     // Permissions do not stop root: there the grader runs as `nobody` (util-linux's setpriv),
     // in a folder it may write.
@@ -266,7 +248,7 @@ fn any_valid_report_name_works_however_long() {
     assignment(root.path(), &["output.tga"]);
     let folder = root.path().join("submissions/one");
     std::fs::create_dir_all(&folder).unwrap();
-    exact_image(root.path(), &folder.join("output.tga"));
+    command::exact_scene1_01_at_50(root.path(), &folder.join("output.tga"));
     let long = "r".repeat(250);
     for _ in 0..2 {
         let output = grade(root.path(), &long);

@@ -13,28 +13,10 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
-use command::{binary, run_in, stderr};
+use command::binary;
 use serde_json::Value;
 
 const SUBMISSIONS: usize = 300;
-
-/// The exact colour image of scene1_01 at 50×50, written to `path` (the binary's own).
-fn exact_image(root: &Path, path: &Path) {
-    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_01.txt");
-    let output = run_in(
-        root,
-        &[
-            "-input",
-            scene.to_str().unwrap(),
-            "-size",
-            "50",
-            "50",
-            "-output",
-            path.to_str().unwrap(),
-        ],
-    );
-    assert!(output.status.success(), "{}", stderr(&output));
-}
 
 #[test]
 fn a_file_swapped_for_a_link_or_a_pipe_while_grading_is_never_read_through_it() {
@@ -51,7 +33,7 @@ fn a_file_swapped_for_a_link_or_a_pipe_while_grading_is_never_read_through_it() 
     .unwrap();
     // Another student's exact image, outside the class.
     let exact = root.path().join("exact.tga");
-    exact_image(root.path(), &exact);
+    command::exact_scene1_01_at_50(root.path(), &exact);
     let wrong = root.path().join("wrong.tga");
     image::RgbImage::from_pixel(50, 50, image::Rgb([255, 255, 255]))
         .save_with_format(&wrong, image::ImageFormat::Tga)

@@ -87,26 +87,14 @@ fn a_pipe_that_goes_on_past_the_limit_is_refused_with_it() {
 
 /// Runs the binary and samples its peak resident memory (VmHWM) until it exits.
 fn run_measuring_peak(folder: &Path, arguments: &[&str]) -> (Output, u64) {
-    let mut child = Command::new(binary())
+    let child = Command::new(binary())
         .current_dir(folder)
         .args(arguments)
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    let status_path = format!("/proc/{}/status", child.id());
-    let mut peak_kib = 0u64;
-    while child.try_wait().unwrap().is_none() {
-        if let Ok(status) = std::fs::read_to_string(&status_path)
-            && let Some(line) = status.lines().find(|l| l.starts_with("VmHWM:"))
-        {
-            let kib: u64 = line.split_whitespace().nth(1).unwrap().parse().unwrap();
-            peak_kib = peak_kib.max(kib);
-        }
-        std::thread::sleep(Duration::from_millis(5));
-    }
-    let output = child.wait_with_output().unwrap();
-    (output, peak_kib * 1024)
+    command::wait_measuring_peak(child)
 }
 
 fn stats_value(output: &Output, name: &str) -> f64 {

@@ -16,12 +16,10 @@ use std::sync::{Arc, Mutex, PoisonError};
 use image::RgbImage;
 
 use super::assignment::Task;
-use super::submission::{Found, find_image};
+use super::submission::{Found, NotRead, find_image, read_found_image};
 use crate::cli::compare::{TheirImages, compare};
 use crate::cli::{CompareRequest, TheirDepth};
 use crate::compare::Deviation;
-use crate::compare::their_image::{TheirImageError, read_their_file_sized};
-use crate::platform::files::open_regular_file;
 use crate::render::Frame;
 use crate::scene::Scene;
 
@@ -294,9 +292,12 @@ pub fn mark_line(
             Found::File { path, renamed } => {
                 mark.renamed = renamed;
                 mark.path = Some(path.clone());
-                match read(&path, exact.task.size_px) {
+                match read_found_image(&path, exact.task.size_px) {
                     Ok(image) => images.push((kind, image, path)),
-                    Err(outcome) => mark.outcome = outcome,
+                    Err(NotRead::WrongSize { found, expected }) => {
+                        mark.outcome = Outcome::WrongSize { found, expected };
+                    }
+                    Err(NotRead::Unreadable(why)) => mark.outcome = Outcome::Unreadable(why),
                 }
             }
         }
@@ -314,28 +315,6 @@ pub fn mark_line(
         }
     }
     marks
-}
-
-/// Reads a submission's image, which must be `size_px`.
-fn read(path: &Path, size_px: (u32, u32)) -> Result<RgbImage, Outcome> {
-    // Opened once, as checked: a file swapped for a link or a pipe since it was found is
-    // refused on the handle, never read through.
-    let file = open_regular_file(path).map_err(|error| Outcome::Unreadable(error.to_string()))?;
-    if file.metadata().is_ok_and(|m| m.len() == 0) {
-        return Err(Outcome::Unreadable("an empty file".to_owned()));
-    }
-    // Another size is said from the header, its pixels never decoded.
-    match read_their_file_sized(file, path, Some(size_px)) {
-        Err(TheirImageError::OtherSize {
-            found, expected, ..
-        }) => Err(Outcome::WrongSize { found, expected }),
-        Err(error) => Err(Outcome::Unreadable(error.reason())),
-        Ok(image) if image.dimensions() != size_px => Err(Outcome::WrongSize {
-            found: image.dimensions(),
-            expected: size_px,
-        }),
-        Ok(image) => Ok(image),
-    }
 }
 
 /// Compares `images` (a line's colour and/or depth image) together, or finds the answer for

@@ -5,6 +5,11 @@
 
 use std::ffi::OsString;
 use std::fmt::Write as _;
+
+use image::RgbImage;
+
+use crate::compare::their_image::{TheirImageError, read_their_file_sized};
+use crate::platform::files::open_regular_file;
 use std::path::{Path, PathBuf};
 
 /// One entry of the submissions folder.
@@ -196,4 +201,40 @@ pub fn shown_name(name: &std::ffi::OsStr) -> String {
         }
     }
     shown
+}
+
+/// Why a found image was not read: another size (from its header), or unreadable.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(super) enum NotRead {
+    /// Its size, and the size asked for.
+    WrongSize {
+        /// Its size.
+        found: (u32, u32),
+        /// The size asked for.
+        expected: (u32, u32),
+    },
+    /// Why it cannot be read.
+    Unreadable(String),
+}
+
+/// Reads a submission's image, which must be `size_px`.
+pub(super) fn read_found_image(path: &Path, size_px: (u32, u32)) -> Result<RgbImage, NotRead> {
+    // Opened once, as checked: a file swapped for a link or a pipe since it was found is
+    // refused on the handle, never read through.
+    let file = open_regular_file(path).map_err(|error| NotRead::Unreadable(error.to_string()))?;
+    if file.metadata().is_ok_and(|m| m.len() == 0) {
+        return Err(NotRead::Unreadable("an empty file".to_owned()));
+    }
+    // Another size is said from the header, its pixels never decoded.
+    match read_their_file_sized(file, path, Some(size_px)) {
+        Err(TheirImageError::OtherSize {
+            found, expected, ..
+        }) => Err(NotRead::WrongSize { found, expected }),
+        Err(error) => Err(NotRead::Unreadable(error.reason())),
+        Ok(image) if image.dimensions() != size_px => Err(NotRead::WrongSize {
+            found: image.dimensions(),
+            expected: size_px,
+        }),
+        Ok(image) => Ok(image),
+    }
 }
