@@ -10,22 +10,27 @@
 //! * [`geometry`]: the pixel map, by Levenberg–Marquardt.
 //! * [`hit_rule`]: the depth test, tmin and roots.
 //! * [`depth`]: the depth map.
+//! * [`colour`]: the background and the rounding of bytes.
 //! * [`sample_grid`]: several samples per pixel on a grid of the program's own.
 //! * [`polish`]: the pixel map moved on both images; a tilt left out where it need not be.
+//! * [`restart`]: a depth image alone left unexplained, fitted again from each named point.
 //! * [`score`]: pixels left unexplained, with the renders kept.
 
 pub mod bounds;
+pub mod colour;
 pub mod depth;
 pub mod geometry;
 pub mod hit_rule;
 pub mod labels;
 pub mod polish;
+pub mod restart;
 pub mod sample_grid;
 pub mod score;
 pub mod starts;
 
 use glam::DVec2;
 
+use self::colour::fit_colour;
 use self::depth::fit_depth;
 use self::geometry::{Affine, Problem};
 use self::hit_rule::{search_hit_rule, search_tmin};
@@ -55,7 +60,7 @@ const FITTED: usize = usize::MAX - 1;
 const MAX_TIES: usize = 8;
 
 /// Rounds of the hit rule's search.
-const RULE_ROUNDS: usize = 3;
+pub(super) const RULE_ROUNDS: usize = 3;
 
 /// What the fit found.
 #[derive(Debug, Clone)]
@@ -75,7 +80,7 @@ pub struct Fitted {
 
 /// The pixel map (and, for named points, the tilt) that fits the labels best under `model`'s
 /// other parts.
-fn fit_geometry(
+pub(super) fn fit_geometry(
     problem: &Problem<'_>,
     model: &Model,
     from: &[Affine],
@@ -183,42 +188,6 @@ fn fit_geometry(
         }
     }
     chosen
-}
-
-/// The background and the rounding of bytes that draw their colour image best.
-fn fit_colour(
-    scorer: &mut Scorer<'_>,
-    model: &Model,
-    seen_background: Option<[u8; 3]>,
-    seen: &mut Vec<(usize, Model)>,
-) -> Model {
-    if scorer.theirs.colour.is_none() {
-        return *model;
-    }
-    let scene_background = scorer.scene.background;
-    let mut best: Option<(usize, Model)> = None;
-    // Known mistakes before fitted values: on a tie the first is kept, the rest are seen. The
-    // scene's own background, in the bytes of either rounding, is no other background: each
-    // picture is tried once.
-    let mut tried = Vec::new();
-    for rounded in [false, true] {
-        for background in [None, seen_background] {
-            let mut candidate = *model;
-            candidate.rounded = rounded;
-            candidate.background =
-                background.filter(|&c| c != colour_bytes(scene_background, rounded));
-            if tried.contains(&candidate) {
-                continue;
-            }
-            tried.push(candidate);
-            let score = scorer.score(&candidate);
-            seen.push((score, candidate));
-            if best.is_none_or(|(least, _)| score < least) {
-                best = Some((score, candidate));
-            }
-        }
-    }
-    best.map_or(*model, |(_, chosen)| chosen)
 }
 
 /// Fits a model to their images (see the module docs).
@@ -449,6 +418,9 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
     }
     if scorer.score(&model) > 0 && scene.spheres.len() <= MAX_GRID_SPHERES {
         model = search_sample_grid(scorer, &model, &mut seen);
+    }
+    if scorer.theirs.colour.is_none() {
+        model = restart::from_named_points(scorer, &labels, model, &mut seen);
     }
     // A plain scale beside a matrix a hair sheared, or swapped: the shorter story.
     fitted.plainer = plainer(scorer, &model, step);
