@@ -278,7 +278,11 @@ impl ViewerApp {
 
     /// The page's way to write the files `stage` stages: each downloaded now, named by its last
     /// part (the desktop writes them: `app::desktop`).
-    pub(super) fn write_files(&mut self, _running: &str, _done: String, stage: Stager) {
+    #[expect(
+        clippy::needless_pass_by_value,
+        reason = "the desktop's side moves the message into the thread that writes"
+    )]
+    pub(super) fn write_files(&mut self, _running: &str, done: String, stage: Stager) {
         let mut memory = FilesInMemory::default();
         let files = stage(&mut memory).map(|()| {
             memory
@@ -287,17 +291,22 @@ impl ViewerApp {
                 .map(|(path, bytes)| (download_name(&path), bytes))
                 .collect()
         });
-        self.download_files(files);
+        self.download_files(&done, files);
     }
 
-    /// Downloads the files `written` holds; the status bar names them.
-    pub(crate) fn download_files(&mut self, written: Result<Vec<(String, Vec<u8>)>, String>) {
+    /// Downloads the files `written` holds; the status bar says `done` (what was written: the
+    /// course files' range and size) and names them.
+    pub(crate) fn download_files(
+        &mut self,
+        done: &str,
+        written: Result<Vec<(String, Vec<u8>)>, String>,
+    ) {
         let outcome = written.and_then(|files| {
             for (name, bytes) in &files {
                 download(name, bytes)?;
             }
             let names: Vec<&str> = files.iter().map(|(name, _)| name.as_str()).collect();
-            Ok(format!("downloaded {}", names.join(", ")))
+            Ok(format!("{done} {} (downloaded)", names.join(", ")))
         });
         self.status = Some(match outcome {
             Ok(message) => Status::info(message),

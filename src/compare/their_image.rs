@@ -122,11 +122,7 @@ pub fn read_their_image_sized(
     path: &Path,
     expected: Option<(u32, u32)>,
 ) -> Result<RgbImage, TheirImageError> {
-    let read_error = |source| TheirImageError::Read {
-        path: path.display().to_string(),
-        source,
-    };
-    let file = std::fs::File::open(path).map_err(read_error)?;
+    let file = std::fs::File::open(path).map_err(|source| read_error(path, source))?;
     read_their_file_sized(file, path, expected)
 }
 
@@ -144,10 +140,7 @@ pub fn read_their_file_sized(
     path: &Path,
     expected: Option<(u32, u32)>,
 ) -> Result<RgbImage, TheirImageError> {
-    let read_error = |source| TheirImageError::Read {
-        path: path.display().to_string(),
-        source,
-    };
+    let read_error = |source| read_error(path, source);
     // A regular file's length is known: one too large is not read at all.
     if file
         .metadata()
@@ -188,6 +181,14 @@ pub fn read_their_file_sized(
         bytes.truncate(most as usize);
     }
     decode_their_image_sized(path, &bytes, expected)
+}
+
+/// A failure to read `path`.
+fn read_error(path: &Path, source: std::io::Error) -> TheirImageError {
+    TheirImageError::Read {
+        path: path.display().to_string(),
+        source,
+    }
 }
 
 /// Decodes the image `bytes` named `name` (the format by the name's extension, as for a file,

@@ -175,6 +175,45 @@ test("an export downloads the files the command line writes for the same request
   await context.close();
 });
 
+test("Course files downloads the bytes of the course's own command line, and says its range", async () => {
+  const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_04.txt`);
+  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_04.txt");
+  await settled(page);
+  const downloads = [];
+  page.on("download", (download) => downloads.push(download));
+  // The left panel scrolled to its end: "Course files" is its last button, where the 1280×720
+  // page lays it out.
+  await page.mouse.move(170, 500);
+  await page.mouse.wheel(0, 3000);
+  await page.waitForTimeout(500);
+  await page.mouse.click(50, 683);
+  await page.waitForFunction(() => /downloaded/.test(window.raytracer.message() ?? ""), null, { timeout: 60_000 });
+  assert.match(
+    await page.evaluate(() => window.raytracer.message()),
+    /^wrote the course's files for scene1_04\.txt \(its line's -size 200 200 -depth 12 17\): output1_04\.tga, depth1_04\.tga, command1_04\.sh \(downloaded\)$/,
+  );
+  await page.waitForTimeout(500);
+  const folder = temporaryFolder();
+  for (const download of downloads) {
+    await download.saveAs(path.join(folder, "page", download.suggestedFilename()));
+  }
+  // The course's line for scene1_04, run by the native binary.
+  raytracer(
+    ["-input", path.resolve(env.scenes, "scene1_04.txt"), "-size", "200", "200", "-output", "output1_04.tga",
+      "-depth", "12", "17", "depth1_04.tga"],
+    folder,
+  );
+  assert.deepEqual(downloads.map((d) => d.suggestedFilename()).sort(), ["command1_04.sh", "depth1_04.tga", "output1_04.tga"]);
+  assert.match(fs.readFileSync(path.join(folder, "page", "command1_04.sh"), "utf8"), /-size 200 200 -output output1_04\.tga -depth 12 17 depth1_04\.tga/);
+  for (const name of ["output1_04.tga", "depth1_04.tga"]) {
+    assert.ok(
+      fs.readFileSync(path.join(folder, name)).equals(fs.readFileSync(path.join(folder, "page", name))),
+      `${name}: the page's download and the course line's file are the same bytes`,
+    );
+  }
+  await context.close();
+});
+
 test("every course scene and a dense scene render the native bytes in the page", async () => {
   const { page, context } = await openViewer(browser, site.url);
   await settled(page);
