@@ -277,35 +277,21 @@ impl ViewerApp {
     }
 
     /// The page's way to write the files `stage` stages: each downloaded now, named by its last
-    /// part (the desktop writes them: `app::desktop`).
+    /// part (the desktop writes them: `app::desktop`); the status bar says `done` (what was
+    /// written: the course files' range and size) and names them.
     #[expect(
         clippy::needless_pass_by_value,
         reason = "the desktop's side moves the message into the thread that writes"
     )]
     pub(super) fn write_files(&mut self, _running: &str, done: String, stage: Stager) {
         let mut memory = FilesInMemory::default();
-        let files = stage(&mut memory).map(|()| {
-            memory
-                .files
-                .into_iter()
-                .map(|(path, bytes)| (download_name(&path), bytes))
-                .collect()
-        });
-        self.download_files(&done, files);
-    }
-
-    /// Downloads the files `written` holds; the status bar says `done` (what was written: the
-    /// course files' range and size) and names them.
-    pub(crate) fn download_files(
-        &mut self,
-        done: &str,
-        written: Result<Vec<(String, Vec<u8>)>, String>,
-    ) {
-        let outcome = written.and_then(|files| {
-            for (name, bytes) in &files {
-                download(name, bytes)?;
+        let outcome = stage(&mut memory).and_then(|()| {
+            let mut names = Vec::new();
+            for (path, bytes) in &memory.files {
+                let name = download_name(path);
+                download(&name, bytes)?;
+                names.push(name);
             }
-            let names: Vec<&str> = files.iter().map(|(name, _)| name.as_str()).collect();
             Ok(format!("{done} {} (downloaded)", names.join(", ")))
         });
         self.status = Some(match outcome {
