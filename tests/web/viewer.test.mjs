@@ -136,6 +136,38 @@ test("a wrong image dropped on the page gets the command line's diagnosis", asyn
   await context.close();
 });
 
+test("a depth image dropped under a name that says nothing is judged as depth, as the command line judges it", async () => {
+  const scene = path.resolve(env.scenes, "scene1_04.txt");
+  const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_04.txt`);
+  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_04.txt");
+  await settled(page);
+  // The course's depth image of scene1_04, written top row first, named "mine.tga": only its
+  // content (every pixel grey) says it is a depth image; the page's kind is "colour".
+  const folder = temporaryFolder();
+  raytracer(["-input", scene, "-size", "200", "200", "-depth", "12", "17", "d.tga"], folder);
+  const tga = fs.readFileSync(path.join(folder, "d.tga"));
+  const [width, height] = [tga.readUInt16LE(12), tga.readUInt16LE(14)];
+  const flipped = Buffer.from(tga);
+  const start = 18 + tga[0];
+  for (let row = 0; row < height; row++) {
+    tga.copy(flipped, start + row * width * 3, start + (height - 1 - row) * width * 3, start + (height - row) * width * 3);
+  }
+  fs.writeFileSync(path.join(folder, "mine.tga"), flipped);
+  let cli;
+  try {
+    raytracer(["-input", scene, "-compare_depth", "12", "17", "mine.tga"], folder);
+    assert.fail("the command line finds no difference");
+  } catch (error) {
+    assert.equal(error.status, 3);
+    cli = error.stdout.toString().split("\n").filter((l) => l.startsWith("diagnosis: ")).map((l) => l.slice(11));
+  }
+  assert.deepEqual(cli.map((l) => l.split(": ")[0]), ["flipped-vertically"]);
+  await dropFile(page, "mine.tga", flipped);
+  await page.waitForFunction(() => window.raytracer.diagnosis().length > 0, null, { timeout: 60_000 });
+  assert.deepEqual(await page.evaluate(() => window.raytracer.diagnosis()), cli);
+  await context.close();
+});
+
 test("an export downloads the files the command line writes for the same request, named after the scene", async () => {
   const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_02.txt`);
   await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_02.txt");
