@@ -28,6 +28,31 @@ after(async () => {
 });
 
 
+/** The TGA file `file` with its rows in the other order and its header unchanged: a picture
+ * written top row first without saying so in the file. */
+function upsideDown(file) {
+  const tga = fs.readFileSync(file);
+  const [width, height] = [tga.readUInt16LE(12), tga.readUInt16LE(14)];
+  const flipped = Buffer.from(tga);
+  const start = 18 + tga[0];
+  for (let row = 0; row < height; row++) {
+    tga.copy(flipped, start + row * width * 3, start + (height - 1 - row) * width * 3, start + (height - row) * width * 3);
+  }
+  return flipped;
+}
+
+/** The `diagnosis:` lines of the command line run with `args` in `folder`, which must find a
+ * difference (exit status 3). */
+function cliDiagnosis(args, folder) {
+  try {
+    raytracer(args, folder);
+  } catch (error) {
+    assert.equal(error.status, 3);
+    return error.stdout.toString().split("\n").filter((l) => l.startsWith("diagnosis: ")).map((l) => l.slice(11));
+  }
+  assert.fail("the command line finds no difference");
+}
+
 test("the page loads without a console error and shows the default scene's two images", async () => {
   const { page, context, errors } = await openViewer(browser, site.url);
   await settled(page);
@@ -112,22 +137,9 @@ test("a wrong image dropped on the page gets the command line's diagnosis", asyn
   // A student's picture written top row first without saying so in the file.
   const folder = temporaryFolder();
   raytracer(["-input", scene, "-size", "120", "80", "-output", "c.tga"], folder);
-  const tga = fs.readFileSync(path.join(folder, "c.tga"));
-  const [width, height] = [tga.readUInt16LE(12), tga.readUInt16LE(14)];
-  const flipped = Buffer.from(tga);
-  const start = 18 + tga[0];
-  for (let row = 0; row < height; row++) {
-    tga.copy(flipped, start + row * width * 3, start + (height - 1 - row) * width * 3, start + (height - row) * width * 3);
-  }
+  const flipped = upsideDown(path.join(folder, "c.tga"));
   fs.writeFileSync(path.join(folder, "student.tga"), flipped);
-  let cli;
-  try {
-    raytracer(["-input", scene, "-compare_output", "student.tga"], folder);
-    assert.fail("the command line finds no difference");
-  } catch (error) {
-    assert.equal(error.status, 3);
-    cli = error.stdout.toString().split("\n").filter((l) => l.startsWith("diagnosis: ")).map((l) => l.slice(11));
-  }
+  const cli = cliDiagnosis(["-input", scene, "-compare_output", "student.tga"], folder);
   // Each line: the statement's name and values, then what it means.
   assert.deepEqual(cli.map((l) => l.split(": ")[0]), ["flipped-vertically"]);
   await dropFile(page, "student_output.tga", flipped);
@@ -145,22 +157,9 @@ test("a depth image dropped under a name that says nothing is judged as depth, a
   // content (every pixel grey) says it is a depth image; the page's kind is "colour".
   const folder = temporaryFolder();
   raytracer(["-input", scene, "-size", "200", "200", "-depth", "12", "17", "d.tga"], folder);
-  const tga = fs.readFileSync(path.join(folder, "d.tga"));
-  const [width, height] = [tga.readUInt16LE(12), tga.readUInt16LE(14)];
-  const flipped = Buffer.from(tga);
-  const start = 18 + tga[0];
-  for (let row = 0; row < height; row++) {
-    tga.copy(flipped, start + row * width * 3, start + (height - 1 - row) * width * 3, start + (height - row) * width * 3);
-  }
+  const flipped = upsideDown(path.join(folder, "d.tga"));
   fs.writeFileSync(path.join(folder, "mine.tga"), flipped);
-  let cli;
-  try {
-    raytracer(["-input", scene, "-compare_depth", "12", "17", "mine.tga"], folder);
-    assert.fail("the command line finds no difference");
-  } catch (error) {
-    assert.equal(error.status, 3);
-    cli = error.stdout.toString().split("\n").filter((l) => l.startsWith("diagnosis: ")).map((l) => l.slice(11));
-  }
+  const cli = cliDiagnosis(["-input", scene, "-compare_depth", "12", "17", "mine.tga"], folder);
   assert.deepEqual(cli.map((l) => l.split(": ")[0]), ["flipped-vertically"]);
   await dropFile(page, "mine.tga", flipped);
   await page.waitForFunction(() => window.raytracer.diagnosis().length > 0, null, { timeout: 60_000 });
