@@ -146,7 +146,7 @@ fn large_case(folder: &Path, count: usize, mistakes: &[Mistake]) -> Case {
 
 /// The slowest single image: a depth image alone that no model of a ray caster draws (grey
 /// noise from a fixed seed, scene1_04 at 200²), which the fit tries from every start and named
-/// point before it says so.
+/// point (`compare/fit/restart.rs`) before it says so.
 fn noise_case(folder: &Path) -> Case {
     let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
     let noise = image::RgbImage::from_fn(200, 200, |_, _| {

@@ -278,7 +278,7 @@ impl ViewerApp {
 
     /// The page's way to write the files `stage` stages: each downloaded now, named by its last
     /// part (the desktop writes them: `app::desktop`); the status bar says `done` (what was
-    /// written: the course files' range and size) and names them.
+    /// written: "exported", or the course files' range and size) and names them.
     #[expect(
         clippy::needless_pass_by_value,
         reason = "the desktop's side moves the message into the thread that writes"

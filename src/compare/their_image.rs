@@ -140,7 +140,6 @@ pub fn read_their_file_sized(
     path: &Path,
     expected: Option<(u32, u32)>,
 ) -> Result<RgbImage, TheirImageError> {
-    let read_error = |source| read_error(path, source);
     // A regular file's length is known: one too large is not read at all.
     if file
         .metadata()
@@ -157,7 +156,7 @@ pub fn read_their_file_sized(
     (&mut stream)
         .take(HEAD_BYTES as u64)
         .read_to_end(&mut bytes)
-        .map_err(read_error)?;
+        .map_err(|source| read_error(path, source))?;
     let announced = if bytes.is_empty() {
         None
     } else {
@@ -170,7 +169,7 @@ pub fn read_their_file_sized(
     (&mut stream)
         .take((most + 1).saturating_sub(bytes.len() as u64))
         .read_to_end(&mut bytes)
-        .map_err(read_error)?;
+        .map_err(|source| read_error(path, source))?;
     if bytes.len() as u64 > most {
         if announced.is_none() || most == MAX_FILE_BYTES {
             return Err(TheirImageError::TooLarge {

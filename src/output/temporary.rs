@@ -1,6 +1,6 @@
 //! The temporary files a run writes beside its destinations (`.raytracer-PID-N-NANOS.tmp`):
-//! registered before they exist, so that [`remove_temporary_files`] (the signal handler's
-//! clean-up) finds every one still being written; removed when dropped unless renamed over their
+//! created and registered under one lock, so that [`remove_temporary_files`] (the signal
+//! handler's clean-up) finds every one still being written and none is created after it; removed when dropped unless renamed over their
 //! destination; and, once per run and folder, the ones a process that has ended left behind are
 //! removed ([`sweep_stale_temporaries`]).
 
@@ -36,15 +36,17 @@ pub(super) static COMMITTING: Mutex<()> = Mutex::new(());
 /// under way to end first, and lets no commit start after it.
 pub fn remove_temporary_files() {
     let committing = COMMITTING.lock().unwrap_or_else(PoisonError::into_inner);
-    for path in open_temporaries().iter() {
+    let registry = open_temporaries();
+    for path in registry.iter() {
         let _ = std::fs::remove_file(path);
     }
-    // The program ends now: no commit may start after this clean-up (its temporaries would be
-    // left), so the lock is never released.
+    // The program ends now: no commit may start after this clean-up, nor any temporary file be
+    // created (either would be left), so neither lock is ever released.
+    std::mem::forget(registry);
     std::mem::forget(committing);
 }
 
-/// A temporary file beside a destination: registered for signal cleanup before it exists,
+/// A temporary file beside a destination: registered for signal cleanup as it is created,
 /// removed on drop unless it was renamed over the destination.
 pub(super) struct Temporary {
     pub(super) path: PathBuf,
@@ -65,21 +67,21 @@ impl Temporary {
                 std::process::id()
             );
             let path = folder.join(name);
-            open_temporaries().insert(path.clone());
-            let opened = files::create_new(&path, mode);
-            match opened {
+            // Created and registered under the registry's lock: a clean-up that runs meanwhile
+            // (a signal's) either finds the file registered or keeps it from being created.
+            let mut registry = open_temporaries();
+            match files::create_new(&path, mode) {
                 Ok(file) => {
+                    registry.insert(path.clone());
                     return Ok(Self {
                         path,
                         file: Some(file),
                     });
                 }
-                Err(error) => {
-                    open_temporaries().remove(&path);
-                    if error.kind() != std::io::ErrorKind::AlreadyExists {
-                        return Err(error);
-                    }
+                Err(error) if error.kind() != std::io::ErrorKind::AlreadyExists => {
+                    return Err(error);
                 }
+                Err(_) => {}
             }
         }
     }

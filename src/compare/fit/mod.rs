@@ -419,8 +419,12 @@ pub fn fit(scorer: &mut Scorer<'_>) -> Fitted {
     if scorer.score(&model) > 0 && scene.spheres.len() <= MAX_GRID_SPHERES {
         model = search_sample_grid(scorer, &model, &mut seen);
     }
-    if scorer.theirs.colour.is_none() {
-        model = restart::from_named_points(scorer, &labels, model, &mut seen);
+    if scorer.theirs.colour.is_none()
+        && let Some((restarted, restarted_ties)) =
+            restart::from_named_points(scorer, &labels, &model, &mut seen)
+    {
+        model = restarted;
+        ties = restarted_ties;
     }
     // A plain scale beside a matrix a hair sheared, or swapped: the shorter story.
     fitted.plainer = plainer(scorer, &model, step);

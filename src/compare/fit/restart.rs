@@ -1,11 +1,13 @@
 //! A depth image alone that the fit leaves unexplained, fitted again from each named point of
-//! the map (the course's, mirrored, upside down, stretched, …) under the course's hit rule.
+//! the map (the course's, mirrored, upside down, stretched, …), the hit rule searched from the
+//! course's at each.
 //!
 //! A depth image tells only where something is hit, not which sphere: a flipped picture of a
 //! program that also refuses some hits (a tmin of zero) is a few discs that the fit from the
 //! plain starts matches with the wrong spheres, and the hit rule searched from there finds
-//! nothing. From the named point that is their map, the hit rule is found at once, and the map
-//! is fitted again from there with the black pixels the rule draws grey taken for empty.
+//! nothing. From the named point that is their map, the hit rule is found at once; the map is
+//! then fitted again from the few points that leave at most nine tenths of what the first fit
+//! left, with the black pixels the rule draws grey taken for empty.
 //! Bounded: only small scenes and images (the course's) are fitted again.
 
 use super::geometry::{Affine, Problem};
@@ -37,40 +39,45 @@ const REFITTED: usize = 4;
 /// this many tenths of the pixels `model` leaves.
 const CLEARLY_BETTER_TENTHS: usize = 9;
 
-/// `model`, or a model fitted from one of the named points that leaves fewer pixels
-/// unexplained, where `model` leaves more than 1% of the image; the named points are tried
-/// simplest first, the search stopping at one that explains every pixel, and the map is fitted
-/// again from the few best.
+/// A model fitted from one of the named points that leaves fewer pixels unexplained than
+/// `model`, where `model` leaves more than 1% of the image, with the rival maps of its fit (none
+/// for a named point taken as it is: the other points are in `seen`); `None` where none does
+/// better. The named points are tried simplest first, the search stopping at one that explains
+/// every pixel; the map is fitted again from the few best.
 pub(super) fn from_named_points(
     scorer: &mut Scorer<'_>,
     labels: &Labels,
-    model: Model,
+    model: &Model,
     seen: &mut Vec<(usize, Model)>,
-) -> Model {
-    let Some(depth) = scorer.theirs.depth else {
-        return model;
-    };
+) -> Option<(Model, Vec<Model>)> {
+    let depth = scorer.theirs.depth?;
     let view = *scorer.view;
-    let discs = scorer.discs.clone();
-    let step = Model::step_world(&view);
     let (width, height) = (view.width_px, view.height_px);
     let pixels = (width as usize) * (height as usize);
-    let mut best = (scorer.score(&model), model);
-    if best.0 <= pixels / EXPLAINED_ONE_IN
+    let entry_left_px = scorer.score(model);
+    if entry_left_px <= pixels / EXPLAINED_ONE_IN
         || pixels > MAX_RESTART_PIXELS
         || scorer.scene.spheres.len() > MAX_RESTART_SPHERES
     {
-        return model;
+        return None;
     }
-    let entry = best.0;
+    let discs = scorer.discs.clone();
+    let step = Model::step_world(&view);
+    let mut best: Option<(usize, Model, Vec<Model>)> = None;
+    let mut keep = |score: usize, candidate: Model, ties: Vec<Model>| {
+        if score < best.as_ref().map_or(entry_left_px, |b| b.0) {
+            best = Some((score, candidate, ties));
+        }
+    };
     let course = Model::course(&view);
     let mut named = named_geometry(&view);
     named.sort_by_key(|&(complexity, _)| complexity);
     // Each named point under the hit rule searched from the course's: cheap, and what tells
     // their map from the others.
     let mut ruled: Vec<(usize, Model)> = Vec::new();
+    let mut explained_all = false;
     for (_, point) in named {
-        let mut start = model;
+        let mut start = *model;
         start.pixels = point.pixels;
         start.t_ramp = point.t_ramp;
         start.hits = course.hits;
@@ -78,28 +85,30 @@ pub(super) fn from_named_points(
         let candidate = search_hit_rule(scorer, &start, RULE_ROUNDS, seen);
         let score = scorer.score(&candidate);
         seen.push((score, candidate));
-        if score < best.0 {
-            best = (score, candidate);
-        }
+        keep(score, candidate, Vec::new());
         if score == 0 {
-            return candidate;
+            explained_all = true;
+            break;
         }
         ruled.push((score, candidate));
     }
     // The map fitted again only from the few that clearly draw more of their image than the
-    // fit did: the fit is most of the time, and a picture that is no depth image of the scene
-    // (noise) would pay it from every point.
-    let clearly_better = entry * CLEARLY_BETTER_TENTHS / 10;
+    // first fit did: the refit takes most of the time, and a picture that is no depth image of
+    // the scene (noise) would pay it from every point.
+    let clearly_better_px = entry_left_px * CLEARLY_BETTER_TENTHS / 10;
     ruled.sort_by_key(|&(score, _)| score);
-    for (_, ruled) in ruled
+    for (_, start) in ruled
         .into_iter()
-        .filter(|&(score, _)| score <= clearly_better)
+        .filter(|&(score, _)| score <= clearly_better_px)
         .take(REFITTED)
     {
+        if explained_all {
+            break;
+        }
         // From where it is, with the black pixels where the rule draws a clear grey taken for
         // the background (black says nothing of a depth image's hits by itself).
-        let hits = scorer.hits(&ruled);
-        let drawn = depth_image(&view, &hits, &ruled);
+        let hits = scorer.hits(&start);
+        let drawn = depth_image(&view, &hits, &start);
         let relabelled = with_black_where_grey(labels, depth, &drawn);
         let problem = Problem {
             discs: &discs,
@@ -108,19 +117,15 @@ pub(super) fn from_named_points(
             step,
         };
         let mut from = starts(width, height);
-        from.insert(0, Affine::of_map(&ruled.pixels, width, height, step));
+        from.insert(0, Affine::of_map(&start.pixels, width, height, step));
         let mut ties = Vec::new();
-        let refitted = fit_geometry(&problem, &ruled, &from, &view, &mut ties);
+        let refitted = fit_geometry(&problem, &start, &from, &view, &mut ties);
         let refitted = fit_depth(scorer, &refitted);
         let candidate = search_hit_rule(scorer, &refitted, RULE_ROUNDS, seen);
         let score = scorer.score(&candidate);
         seen.push((score, candidate));
-        if score < best.0 {
-            best = (score, candidate);
-        }
-        if best.0 == 0 {
-            break;
-        }
+        keep(score, candidate, ties);
+        explained_all = score == 0;
     }
-    best.1
+    best.map(|(_, model, ties)| (model, ties))
 }
