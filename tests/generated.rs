@@ -102,15 +102,14 @@ fn generated_programs_get_no_false_statement_and_are_explained() {
     );
 }
 
-/// The diagnosis of `program`'s images of the course scene `name` at 200×200, the program drawing
-/// depth over `theirs` and the diagnosis given `given`: the statements said (with values), and
-/// the pixels left unexplained.
-fn diagnosed(
+/// The answer for `program`'s two images of the course scene `name` at 200×200, the program
+/// drawing depth over `theirs` and the diagnosis given `given`.
+fn answer_of(
     name: &str,
     program: &student::Program,
     theirs: (f64, f64),
     given: (f64, f64),
-) -> (Vec<String>, usize) {
+) -> raytracer::compare::Diagnosis {
     use raytracer::compare::{Theirs, diagnose};
     let scene = raytracer::scene::load_scene(
         &std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.txt")),
@@ -118,14 +117,25 @@ fn diagnosed(
     .unwrap();
     let (colour, depth) = student::render(program, &scene, 200, 200, theirs.0, theirs.1);
     let view = View::of_camera(&scene.camera, 200, 200, DepthRange::new(given.0, given.1));
-    let answer = diagnose(
+    diagnose(
         &scene,
         &view,
         Theirs {
             colour: Some(&colour),
             depth: Some(&depth),
         },
-    );
+    )
+}
+
+/// The diagnosis of `program`'s images (as [`answer_of`]): the statements said (with values), and
+/// the pixels left unexplained.
+fn diagnosed(
+    name: &str,
+    program: &student::Program,
+    theirs: (f64, f64),
+    given: (f64, f64),
+) -> (Vec<String>, usize) {
+    let answer = answer_of(name, program, theirs, given);
     let said = answer
         .stated()
         .iter()
@@ -361,24 +371,11 @@ fn a_flipped_depth_image_alone_is_fitted_again_from_the_named_points() {
 /// farther from the course's map.
 #[test]
 fn a_vertical_flip_with_scaled_axes_is_never_said_as_a_mirror() {
-    use raytracer::compare::{Deviation, Theirs, diagnose};
-    let scene = raytracer::scene::load_scene(
-        &std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/scene1_02.txt"),
-    )
-    .unwrap();
-    let view = View::of_camera(&scene.camera, 200, 200, DepthRange::new(8.0, 12.0));
+    use raytracer::compare::Deviation;
     for seed in [37, 53] {
         let program = student::draw_program(&mut student::Draw::new(seed), false);
         assert!(program.upside_down && !program.mirrored, "{program:?}");
-        let (colour, depth) = student::render(&program, &scene, 200, 200, 8.0, 12.0);
-        let answer = diagnose(
-            &scene,
-            &view,
-            Theirs {
-                colour: Some(&colour),
-                depth: Some(&depth),
-            },
-        );
+        let answer = answer_of("scene1_02", &program, (8.0, 12.0), (8.0, 12.0));
         let words = |list: &[Deviation]| -> Vec<String> {
             list.iter().map(|d| d.word().to_owned()).collect()
         };
