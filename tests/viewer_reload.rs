@@ -2,10 +2,13 @@
 //! an editor's save in several quick writes reloads once, a save that renames a new file over the
 //! scene reloads it, reading the file (as the viewer itself does) reloads nothing, and where no
 //! file dialog can be shown the window says so, Open… does nothing else, and the typed export
-//! paths do the job; another scene opened closes the comparison made against the one before.
+//! paths do the job; another scene opened closes the comparison made against the one before;
+//! their two images dropped at once are judged together, and again when their program writes them.
 #![cfg(feature = "gui")]
 
 mod common;
+#[path = "common/compare_run.rs"]
+mod compare_run;
 
 use std::time::{Duration, Instant};
 
@@ -231,4 +234,90 @@ fn their_image_still_being_written_is_waited_for() {
         std::thread::sleep(Duration::from_millis(10));
     }
     assert!(written);
+}
+
+/// A file dropped on the window, as the desktop's integration hands it over: by its path.
+#[derive(Debug)]
+struct Dropped(std::path::PathBuf);
+
+impl egui::DroppedFile for Dropped {
+    fn path(&self) -> &std::path::Path {
+        &self.0
+    }
+
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        std::fs::read(&self.0).map_err(|error| error.to_string())
+    }
+}
+
+/// Steps until the comparison on screen is a pair judged, and `condition` holds of it (at most
+/// 120 s: each pair is diagnosed).
+fn wait_for_pair(
+    harness: &mut Harness,
+    condition: impl Fn(&raytracer::app::compare::ComparisonPixels) -> bool,
+) {
+    let deadline = Instant::now() + Duration::from_secs(120);
+    loop {
+        harness.step();
+        let app = harness.state();
+        let paired = app.comparison().filter(|c| c.paired.is_some());
+        if !app.comparing() && paired.is_some_and(&condition) {
+            break;
+        }
+        assert!(Instant::now() < deadline, "the pair was not judged");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    settle(harness);
+    harness.run_steps(2);
+}
+
+/// Their colour and depth images dropped on the window at once are judged together, as the
+/// command line judges the pair: the answer names what neither image says alone (last-wins from
+/// the colour, depth-reversed from the depth), and both images are shown in place of the render.
+/// When their program, fixed, writes both again, the pair is judged again and matches.
+#[test]
+fn their_two_images_dropped_at_once_are_judged_together_as_the_command_line_judges_them() {
+    use raytracer::compare::{Mistake, MistakeSet};
+    let folder = tempfile::tempdir().unwrap();
+    let program = MistakeSet::of(&[Mistake::DepthReversed, Mistake::LastWins]);
+    compare_run::write_mistaken(folder.path(), program, "tga");
+    let mut said = compare_run::diagnosis(&compare_run::compare(folder.path(), "tga", &[]));
+    said.sort();
+    assert_eq!(said, ["depth-reversed", "last-wins"]);
+    let mut harness = viewer(Some(compare_run::path(compare_run::SCENE)));
+    for name in ["colour.tga", "depth.tga"] {
+        let file = Dropped(folder.path().join(name));
+        harness
+            .input_mut()
+            .dropped_files
+            .push(std::sync::Arc::new(file));
+    }
+    wait_for_pair(&mut harness, |_| true);
+    let comparison = harness.state().comparison().unwrap().clone();
+    let mut kinds = [comparison.kind, comparison.paired.as_ref().unwrap().kind];
+    kinds.sort_by_key(|kind| *kind == raytracer::app::compare::ImageKind::Depth);
+    assert_eq!(
+        kinds,
+        [
+            raytracer::app::compare::ImageKind::Colour,
+            raytracer::app::compare::ImageKind::Depth
+        ]
+    );
+    let mut names: Vec<String> = comparison
+        .diagnosis()
+        .iter()
+        .map(|statement| statement.split(' ').next().unwrap().to_owned())
+        .collect();
+    names.sort();
+    assert_eq!(names, said, "the viewer's answer is the command line's");
+    assert!(common::label_shown(&harness, "judged together with the"));
+    for caption in ["colour: difference", "depth: difference"] {
+        assert!(common::label_shown(&harness, caption), "{caption}");
+    }
+    compare_run::write_mistaken(folder.path(), MistakeSet::NONE, "tga");
+    wait_for_pair(&mut harness, |c| {
+        c.images()
+            .all(raytracer::app::compare::ComparisonPixels::matches)
+    });
+    assert!(common::label_shown(&harness, "match: yes"));
 }

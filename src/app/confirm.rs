@@ -37,8 +37,8 @@ pub(crate) const CREATE_FOLDER_LABEL: &str = "Create the folder and export";
 pub(crate) struct Guarded<'a> {
     /// The scene file on screen.
     pub(crate) scene: Option<&'a Path>,
-    /// The image being compared.
-    pub(crate) compared: Option<&'a Path>,
+    /// The images being compared (one, or a colour and a depth image judged together).
+    pub(crate) compared: [Option<&'a Path>; 2],
 }
 
 /// What a write must wait for, if anything: the folder it would create (`missing_folder`), else
@@ -66,7 +66,8 @@ pub(crate) fn wait_for_yes<A>(
     let among = |guarded: Option<&Path>| {
         guarded.is_some_and(|file| existing.iter().any(|path| same_file(path, file)))
     };
-    let (open_scene, compared) = (among(guarded.scene), among(guarded.compared));
+    let open_scene = among(guarded.scene);
+    let compared = guarded.compared.into_iter().any(among);
     Err(PendingReplace {
         action,
         existing,

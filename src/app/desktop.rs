@@ -11,6 +11,7 @@ use std::path::Path;
 
 use super::actions::{Action, Write};
 use super::background::Task;
+use super::compare::dropped_image_kind;
 use super::dialogs::{DialogKind, PendingDialog};
 use super::status::Status;
 use super::viewer::ViewerApp;
@@ -43,8 +44,15 @@ impl ViewerApp {
         reason = "the page's side keeps the handle to read the file later"
     )]
     pub(super) fn open_dropped(&mut self, file: egui::DroppedFileHandle) {
-        if !file.path().as_os_str().is_empty() {
-            self.open(file.path());
+        let path = file.path();
+        if path.as_os_str().is_empty() {
+            return;
+        }
+        // An image (`.png`, `.tga`) is compared, the kind its name says, else the one chosen;
+        // anything else is opened as a scene.
+        match dropped_image_kind(&path.to_string_lossy()) {
+            Some(kind) => self.apply(Action::CompareImage(path.to_path_buf(), kind)),
+            None => self.open(path),
         }
     }
 

@@ -48,8 +48,9 @@ pub(super) fn claim_zoom_keys(ctx: &egui::Context) {
 pub(super) struct Input {
     /// Shortcuts, the watched file's reload and navigation keys, in that order.
     pub(super) actions: Vec<Action>,
-    /// A file dropped on the window (opened by the platform's seam).
-    pub(super) dropped: Option<egui::DroppedFileHandle>,
+    /// The files dropped on the window (opened by the platform's seam): a scene, or their
+    /// images (two at once are judged together).
+    pub(super) dropped: Vec<egui::DroppedFileHandle>,
 }
 
 /// Reads the shortcuts (Ctrl+O, Ctrl+S, Ctrl+R), a dropped file, the watched file and the
@@ -89,7 +90,7 @@ pub(super) fn read(
             })
             .map(|(_, _, action)| action)
             .collect();
-        let dropped = input.raw.dropped_files.first().cloned();
+        let dropped = input.raw.dropped_files.clone();
         (pressed, dropped)
     });
     // The watcher wakes the window at each change; while the file settles, the window wakes

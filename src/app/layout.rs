@@ -7,7 +7,7 @@
 use std::path::PathBuf;
 
 use super::actions::{Action, Write};
-use super::compare::{CompareShow, CompareSource, CompareState};
+use super::compare::{CompareShow, CompareSource, CompareState, ComparisonPixels};
 use super::confirm;
 use super::probe::Probe;
 use super::render_requests::Frames;
@@ -24,6 +24,7 @@ use super::viewing::Viewing;
 use super::writes::Writes;
 use crate::export::numbers::grouped;
 use crate::render::View;
+use egui::TextureHandle;
 
 /// What the side panel's fields hold between frames.
 #[derive(Debug, Clone, Default)]
@@ -278,13 +279,8 @@ impl Window<'_> {
         let pinned = pinned_px.and_then(|px| self.probe_at(px));
         let hover = self.viewing.probe.hover_px.and_then(|px| self.probe_at(px));
         let mut probe_lines = probe_text::probe_lines(pinned, hover, depth_rgb);
-        if let Some(line) = self
-            .viewing
-            .probe
-            .hover_px
-            .and_then(|px| self.compare.probe_line(px))
-        {
-            probe_lines.push(line);
+        if let Some(px) = self.viewing.probe.hover_px {
+            probe_lines.extend(self.compare.probe_lines(px));
         }
         self.close_stale_measurement();
         let compared = compared_picture(self.compare, &self.viewing.view);
@@ -332,14 +328,13 @@ impl Window<'_> {
     }
 }
 
-/// What the Compare section shows in place of a rendered image, if anything.
-fn compared_picture<'a>(compare: &'a CompareState, view: &View) -> Option<Compared<'a>> {
-    let current = compare.current.as_ref()?;
-    let pixels = &current.pixels;
-    let kind = match pixels.kind {
-        super::compare::ImageKind::Colour => "colour",
-        super::compare::ImageKind::Depth => "depth",
+/// What the Compare section shows in place of the rendered images: one picture, or one for each
+/// image of a pair.
+fn compared_picture<'a>(compare: &'a CompareState, view: &View) -> Vec<Compared<'a>> {
+    let Some(current) = compare.current.as_ref() else {
+        return Vec::new();
     };
+    let pixels = &current.pixels;
     let theirs = match pixels.source {
         CompareSource::File(_) => "theirs",
         CompareSource::Quality(_) => "chosen quality",
@@ -359,40 +354,62 @@ fn compared_picture<'a>(compare: &'a CompareState, view: &View) -> Option<Compar
     };
     let shown: Vec<&crate::compare::Deviation> =
         pixels.statements.iter().chain(&pixels.partial).collect();
-    let (texture, caption, heat_scale) = match (compare.highlighted(), compare.show) {
-        (Some((texture, index, count)), _) => (
-            texture,
-            format!(
-                "{kind}: the {} pixels {} explains, in colour",
-                grouped(count as f64, 0),
-                shown
-                    .get(index)
-                    .map_or_else(String::new, |s| s.name_and_values())
-            ),
-            true,
-        ),
-        (None, CompareShow::Rendered) => return None,
-        (None, CompareShow::Theirs) => (
-            &current.theirs_texture,
-            format!("{kind}: {theirs} (B: the render){note}"),
-            false,
-        ),
-        (None, CompareShow::Difference) => (
-            &current.heat_texture,
-            format!(
-                "{kind}: difference, {} pixels, largest {} (Shift+B: the render){note}",
-                grouped(pixels.difference.pixels_differing() as f64, 0),
-                pixels.difference.max_difference()
-            ),
-            true,
-        ),
+    let together = if pixels.paired.is_some() {
+        ", judged together"
+    } else {
+        ""
     };
-    let (width, height) = pixels.theirs.dimensions();
-    Some(Compared {
-        index: pixels.kind.index(),
-        texture,
-        size_px: [width, height],
-        caption,
-        heat_scale,
-    })
+    let picture = |image: &'a ComparisonPixels,
+                   (theirs_texture, heat_texture): (&'a TextureHandle, &'a TextureHandle),
+                   highlighted: Option<(&'a TextureHandle, usize, usize)>| {
+        let kind = image.kind.word();
+        let (texture, caption, heat_scale) = match (highlighted, compare.show) {
+            (Some((texture, index, count)), _) => (
+                texture,
+                format!(
+                    "{kind}: the {} pixels {} explains, in colour",
+                    grouped(count as f64, 0),
+                    shown
+                        .get(index)
+                        .map_or_else(String::new, |s| s.name_and_values())
+                ),
+                true,
+            ),
+            (None, CompareShow::Rendered) => return None,
+            (None, CompareShow::Theirs) => (
+                theirs_texture,
+                format!("{kind}: {theirs}{together} (B: the render){note}"),
+                false,
+            ),
+            (None, CompareShow::Difference) => (
+                heat_texture,
+                format!(
+                    "{kind}: difference, {} pixels, largest {}{together} (Shift+B: the \
+                     render){note}",
+                    grouped(image.difference.pixels_differing() as f64, 0),
+                    image.difference.max_difference()
+                ),
+                true,
+            ),
+        };
+        let (width, height) = image.theirs.dimensions();
+        Some(Compared {
+            index: image.kind.index(),
+            texture,
+            size_px: [width, height],
+            caption,
+            heat_scale,
+        })
+    };
+    let mut pictures: Vec<Compared<'a>> = picture(
+        pixels,
+        (&current.theirs_texture, &current.heat_texture),
+        compare.highlighted(),
+    )
+    .into_iter()
+    .collect();
+    if let (Some(paired), Some((theirs, heat))) = (&pixels.paired, &current.paired_textures) {
+        pictures.extend(picture(paired, (theirs, heat), None));
+    }
+    pictures
 }

@@ -156,7 +156,7 @@ impl ViewerApp {
                 .files_of(&write, missing_folder.is_some(), &self.settings, &written);
         let (scene, compared) = (
             self.scene.loaded.path.as_deref(),
-            self.compare.watched_file(),
+            self.compare.watched_files(),
         );
         let guarded = confirm::Guarded { scene, compared };
         match asked.map(|files| confirm::wait_for_yes(write, missing_folder, files, guarded)) {
@@ -457,7 +457,7 @@ impl eframe::App for ViewerApp {
         for action in input.actions {
             self.apply(action);
         }
-        if let Some(file) = input.dropped {
+        for file in input.dropped {
             self.open_dropped(file);
         }
         let window = layout::Window {

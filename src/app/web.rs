@@ -25,7 +25,7 @@ use crate::platform::browser::{
 use crate::platform::browser::{scene_parameter, set_title};
 
 use super::actions::{Action, Write};
-use super::compare::ImageKind;
+use super::compare::{ImageKind, dropped_image_kind};
 use super::dialogs::DialogKind;
 use super::status::Status;
 use super::viewer::ViewerApp;
@@ -156,20 +156,6 @@ impl Page {
     fn take(&self) -> Vec<Incoming> {
         std::mem::take(&mut *self.inbox.borrow_mut())
     }
-}
-
-/// What a dropped image is compared as, by its name: `.png` and `.tga` files are images, and a
-/// name that says "depth" is a depth image. `None` for anything else (a scene).
-pub(crate) fn dropped_image_kind(name: &str) -> Option<ImageKind> {
-    let lower = name.to_lowercase();
-    let is_image = [".png", ".tga"].iter().any(|ext| lower.ends_with(ext));
-    is_image.then(|| {
-        if lower.contains("depth") {
-            ImageKind::Depth
-        } else {
-            ImageKind::Colour
-        }
-    })
 }
 
 /// The last part of a dropped file's path (the page gives only the name).
@@ -435,6 +421,21 @@ impl WebHandle {
                     .statements
                     .iter()
                     .map(crate::compare::Deviation::said)
+                    .collect()
+            })
+        })
+        .unwrap_or_default()
+    }
+
+    /// The names of the images the comparison on screen judged, each as `kind name` (two when a
+    /// colour and a depth image were judged together).
+    pub fn compared(&self) -> Vec<String> {
+        self.with_app(|app| {
+            let current = app.compare.current.as_ref();
+            current.map_or_else(Vec::new, |c| {
+                let images = c.pixels.images();
+                images
+                    .map(|i| format!("{} {}", i.kind.word(), i.name()))
                     .collect()
             })
         })

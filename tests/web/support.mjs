@@ -175,17 +175,23 @@ export async function viewOf(page) {
 
 /** Drops a file named `name` with `bytes` on the page's canvas, as a user's drag and drop does. */
 export async function dropFile(page, name, bytes) {
+  await dropFiles(page, [[name, bytes]]);
+}
+
+/** Drops the files `named` (each `[name, bytes]`) on the page's canvas at once. */
+export async function dropFiles(page, named) {
   await page.evaluate(
-    ({ name, data }) => {
-      const file = new File([Uint8Array.from(atob(data), (c) => c.charCodeAt(0))], name);
+    (files) => {
       const transfer = new DataTransfer();
-      transfer.items.add(file);
+      for (const { name, data } of files) {
+        transfer.items.add(new File([Uint8Array.from(atob(data), (c) => c.charCodeAt(0))], name));
+      }
       const canvas = document.querySelector("canvas");
       for (const type of ["dragenter", "dragover", "drop"]) {
         canvas.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
       }
     },
-    { name, data: Buffer.from(bytes).toString("base64") },
+    named.map(([name, bytes]) => ({ name, data: Buffer.from(bytes).toString("base64") })),
   );
 }
 

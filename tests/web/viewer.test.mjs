@@ -9,7 +9,7 @@ import { execFileSync } from "node:child_process";
 import fs from "node:fs";
 import path from "node:path";
 import {
-  assertOnScreen, dropFile, env, launch, nativeRender, openViewer, pngToRgb, raytracer, serve,
+  assertOnScreen, dropFile, dropFiles, env, launch, nativeRender, openViewer, pngToRgb, raytracer, serve,
   settled, temporaryFolder, viewOf,
 } from "./support.mjs";
 
@@ -163,6 +163,26 @@ test("a depth image dropped under a name that says nothing is judged as depth, a
   assert.deepEqual(cli.map((l) => l.split(": ")[0]), ["flipped-vertically"]);
   await dropFile(page, "mine.tga", flipped);
   await page.waitForFunction(() => window.raytracer.diagnosis().length > 0, null, { timeout: 60_000 });
+  assert.deepEqual(await page.evaluate(() => window.raytracer.diagnosis()), cli);
+  await context.close();
+});
+
+test("a colour and a depth image dropped at once are judged together, as the command line judges the pair", async () => {
+  const scene = path.resolve(env.scenes, "scene1_04.txt");
+  const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_04.txt`);
+  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_04.txt");
+  await settled(page);
+  // A student's two images of the course's line, each written top row first.
+  const folder = temporaryFolder();
+  raytracer(["-input", scene, "-size", "200", "200", "-output", "c.tga", "-depth", "12", "17", "d.tga"], folder);
+  const [colour, depth] = [upsideDown(path.join(folder, "c.tga")), upsideDown(path.join(folder, "d.tga"))];
+  fs.writeFileSync(path.join(folder, "output1_04.tga"), colour);
+  fs.writeFileSync(path.join(folder, "depth1_04.tga"), depth);
+  const cli = cliDiagnosis(["-input", scene, "-compare_output", "output1_04.tga", "-compare_depth", "12", "17", "depth1_04.tga"], folder);
+  assert.deepEqual(cli.map((l) => l.split(": ")[0]), ["flipped-vertically"]);
+  await dropFiles(page, [["output1_04.tga", colour], ["depth1_04.tga", depth]]);
+  await page.waitForFunction(() => window.raytracer.compared().length === 2 && window.raytracer.diagnosis().length > 0, null, { timeout: 60_000 });
+  assert.deepEqual((await page.evaluate(() => window.raytracer.compared())).sort(), ["colour output1_04.tga", "depth depth1_04.tga"]);
   assert.deepEqual(await page.evaluate(() => window.raytracer.diagnosis()), cli);
   await context.close();
 });

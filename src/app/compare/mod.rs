@@ -12,6 +12,8 @@
 //!   a high-sample one): mean error, share of pixels off by over 8 levels, frame time.
 
 pub(crate) mod gallery;
+mod given;
+mod kind;
 mod pixels;
 
 use std::path::{Path, PathBuf};
@@ -20,20 +22,21 @@ use std::sync::Arc;
 use egui::{ColorImage, TextureHandle, TextureOptions};
 use image::RgbImage;
 
+pub(crate) use given::Against;
+use given::{Given, Job};
+pub use kind::{ImageKind, dropped_image_kind, recognised_kind};
 pub use pixels::{
-    CompareShow, CompareSource, ComparisonPixels, ImageKind, QualityFigures, RangeSource,
-    compare_file, compare_quality, recognised_kind,
+    CompareShow, CompareSource, ComparisonPixels, QualityFigures, RangeSource, compare_file,
+    compare_quality,
 };
 pub(crate) use pixels::{OFF_LEVELS, REFERENCE_SAMPLES};
 
 use super::background::{Poll, Task};
-use super::reload::{FileWatcher, WatchState};
 use super::status::{Status, say};
 use crate::compare::judge::their_depth_at;
 use crate::compare::picture::{heat_map, heat_map_highlighted, heat_map_marked};
-use crate::compare::their_image::{TheirImageError, read_their_image, read_their_image_settled};
+use crate::compare::their_image::{TheirImageError, read_their_image};
 use crate::explore::trace::PixelTrace;
-use crate::render::depth_map::DepthRange;
 use crate::render::{Quality, View};
 use crate::scene::Scene;
 
@@ -42,6 +45,8 @@ pub(crate) struct Comparison {
     pub(crate) pixels: ComparisonPixels,
     pub(crate) theirs_texture: TextureHandle,
     pub(crate) heat_texture: TextureHandle,
+    /// The image judged with it, if any: its picture and its difference.
+    pub(crate) paired_textures: Option<(TextureHandle, TextureHandle)>,
     /// The difference with one statement's pixels highlighted: the statement's index, and the
     /// picture.
     highlight: Option<(usize, TextureHandle)>,
@@ -67,10 +72,32 @@ pub(crate) struct CompareState {
     pointed: Option<usize>,
     /// The gallery's pictures of the known mistakes.
     pub(crate) gallery: gallery::Gallery,
-    /// Their image file, watched: when their program writes it again it is compared again.
-    /// With the kind it was given and whether that kind was clicked.
-    watched: Option<(PathBuf, ImageKind, bool, FileWatcher)>,
+    /// Their images given and watched ([`given::Inputs`]).
+    inputs: given::Inputs,
 }
+/// The pictures of one compared image: theirs, and the heat map of the difference (its
+/// unexplained pixels marked), named with `suffix`.
+fn textures(
+    ctx: &egui::Context,
+    pixels: &ComparisonPixels,
+    suffix: &str,
+) -> (TextureHandle, TextureHandle) {
+    let theirs = ctx.load_texture(
+        format!("compare theirs{suffix}"),
+        to_colour_image(&pixels.theirs),
+        TextureOptions::NEAREST,
+    );
+    let heat = ctx.load_texture(
+        format!("compare heat{suffix}"),
+        to_colour_image(&match &pixels.unexplained {
+            Some(unexplained) => heat_map_marked(&pixels.difference, unexplained),
+            None => heat_map(&pixels.difference),
+        }),
+        TextureOptions::NEAREST,
+    );
+    (theirs, heat)
+}
+
 /// An RGB image as an egui image.
 fn to_colour_image(image: &RgbImage) -> ColorImage {
     ColorImage::from_rgb(
@@ -80,9 +107,9 @@ fn to_colour_image(image: &RgbImage) -> ColorImage {
 }
 
 impl CompareState {
-    /// Their image file being compared (and watched).
-    pub(crate) fn watched_file(&self) -> Option<&Path> {
-        self.watched.as_ref().map(|(path, ..)| path.as_path())
+    /// Their image files being compared (and watched): one, or a colour and a depth image.
+    pub(crate) fn watched_files(&self) -> [Option<&Path>; 2] {
+        self.inputs.files()
     }
 
     /// Shows `show` in the compared image, when a comparison is open.
@@ -124,7 +151,7 @@ impl CompareState {
     /// Closes the comparison (the view is free again).
     pub(crate) fn close(&mut self) {
         self.drop_result();
-        self.watched = None;
+        self.inputs.clear();
     }
 
     /// Takes the comparison off the screen (a failed one, or one closed); their file stays
@@ -133,17 +160,6 @@ impl CompareState {
         self.current = None;
         self.pending = None;
         self.show = CompareShow::Rendered;
-    }
-
-    /// Their depth image on screen, compared at another depth range than `depth_range`: its
-    /// name and pixels, to compare again (the image is not read again: a page has no file).
-    fn stale_depth_image(&self, depth_range: DepthRange) -> Option<(PathBuf, RgbImage)> {
-        let pixels = &self.current.as_ref()?.pixels;
-        let CompareSource::File(path) = &pixels.source else {
-            return None;
-        };
-        (pixels.kind == ImageKind::Depth && pixels.view.depth_range != depth_range)
-            .then(|| (path.clone(), pixels.theirs.clone()))
     }
 
     /// Takes a finished comparison in, its textures made through `ctx`. `Ok(Some((view, kind)))`
@@ -170,19 +186,11 @@ impl CompareState {
         let first = self.current.is_none();
         let hold =
             matches!(pixels.source, CompareSource::File(_)).then_some((pixels.view, pixels.kind));
-        let theirs_texture = ctx.load_texture(
-            "compare theirs",
-            to_colour_image(&pixels.theirs),
-            TextureOptions::NEAREST,
-        );
-        let heat_texture = ctx.load_texture(
-            "compare heat",
-            to_colour_image(&match &pixels.unexplained {
-                Some(unexplained) => heat_map_marked(&pixels.difference, unexplained),
-                None => heat_map(&pixels.difference),
-            }),
-            TextureOptions::NEAREST,
-        );
+        let (theirs_texture, heat_texture) = textures(ctx, &pixels, "");
+        let paired_textures = pixels
+            .paired
+            .as_deref()
+            .map(|paired| textures(ctx, paired, " paired"));
         if first || matches!(pixels.source, CompareSource::Quality(_)) {
             self.show = CompareShow::Difference;
         }
@@ -190,6 +198,7 @@ impl CompareState {
             pixels,
             theirs_texture,
             heat_texture,
+            paired_textures,
             highlight: None,
         });
         Ok(hold)
@@ -202,12 +211,13 @@ impl CompareState {
         let CompareSource::File(path) = &pixels.source else {
             return None;
         };
-        let matches = match pixels.kind {
-            ImageKind::Colour => pixels.difference.colour_matches(),
-            ImageKind::Depth => pixels.difference.depth_matches(),
+        let together = match &pixels.paired {
+            Some(paired) => format!(" with {}, together", paired.name()),
+            None => String::new(),
         };
+        let matches = pixels.images().all(ComparisonPixels::matches);
         Some(Status::info(format!(
-            "compared {}: {}",
+            "compared {}{together}: {}",
             path.display(),
             if matches { "match" } else { "differs" }
         )))
@@ -251,7 +261,7 @@ impl CompareState {
     }
 
     /// Their pixel beside a trace of it, while their image is compared at the traced size: its
-    /// value and, for a depth image, the t its grey stands for.
+    /// value and, for a depth image, the t its grey stands for (both images of a pair).
     pub(crate) fn their_pixel(&self, scene: &Scene, traced: &PixelTrace) -> Option<String> {
         let pixels = &self.current.as_ref()?.pixels;
         if !matches!(pixels.source, CompareSource::File(_))
@@ -260,26 +270,31 @@ impl CompareState {
             return None;
         }
         let row = traced.size_px.1 - 1 - traced.y_up_px;
-        let pixel = pixels.theirs.get_pixel(traced.x_px, row).0;
-        Some(match pixels.kind {
-            ImageKind::Colour => traced.their_colour_line(pixel),
-            ImageKind::Depth => {
-                let drew = pixels.model.as_ref().and_then(|model| {
-                    their_depth_at(
-                        scene,
-                        &pixels.view,
-                        model,
-                        (traced.x_px, traced.y_up_px),
-                        pixel[0],
-                    )
-                });
-                PixelTrace {
-                    depth_range: Some(pixels.view.depth_range),
-                    ..traced.clone()
+        let mut images: Vec<&ComparisonPixels> = pixels.images().collect();
+        images.sort_by_key(|image| image.kind.index());
+        let lines = images.into_iter().map(|image| {
+            let pixel = image.theirs.get_pixel(traced.x_px, row).0;
+            match image.kind {
+                ImageKind::Colour => traced.their_colour_line(pixel),
+                ImageKind::Depth => {
+                    let drew = image.model.as_ref().and_then(|model| {
+                        their_depth_at(
+                            scene,
+                            &image.view,
+                            model,
+                            (traced.x_px, traced.y_up_px),
+                            pixel[0],
+                        )
+                    });
+                    PixelTrace {
+                        depth_range: Some(image.view.depth_range),
+                        ..traced.clone()
+                    }
+                    .their_depth_line(pixel[0], drew)
                 }
-                .their_depth_line(pixel[0], drew)
             }
-        })
+        });
+        Some(lines.collect())
     }
 
     /// The A/B flip: the render and their image in turn.
@@ -302,66 +317,71 @@ impl CompareState {
         }
     }
 
-    /// The probe's line for the compared image at pixel `px` (y up): theirs, exact, difference.
-    pub(crate) fn probe_line(&self, px: glam::DVec2) -> Option<String> {
-        let pixels = &self.current.as_ref()?.pixels;
-        let (width, height) = pixels.theirs.dimensions();
-        if px.x < 0.0 || px.y < 0.0 || px.x >= f64::from(width) || px.y >= f64::from(height) {
-            return None;
-        }
-        let (x, row) = (px.x as u32, height - 1 - px.y as u32);
-        let rgb = |image: &RgbImage| {
-            let [r, g, b] = image.get_pixel(x, row).0;
-            format!("{r} {g} {b}")
+    /// The probe's lines for the compared images at pixel `px` (y up): theirs, exact,
+    /// difference; one line for each image of a pair, named by its kind.
+    pub(crate) fn probe_lines(&self, px: glam::DVec2) -> Vec<String> {
+        let Some(current) = &self.current else {
+            return Vec::new();
         };
-        let name = match pixels.source {
-            CompareSource::File(_) => "theirs",
-            CompareSource::Quality(_) => "chosen",
-        };
-        let index = (row * width + x) as usize;
-        let unexplained = pixels
-            .unexplained
-            .as_ref()
-            .is_some_and(|flags| flags.get(index).copied().unwrap_or(false));
-        Some(format!(
-            "{name} {} · exact {} · off by {}{}",
-            rgb(&pixels.theirs),
-            rgb(&pixels.exact),
-            pixels.difference.per_pixel[index],
-            if unexplained { " · unexplained" } else { "" }
-        ))
+        let paired = current.pixels.paired.is_some();
+        let mut images: Vec<&ComparisonPixels> = current.pixels.images().collect();
+        images.sort_by_key(|image| image.kind.index());
+        images
+            .into_iter()
+            .filter_map(|pixels| probe_line(pixels, px, paired))
+            .collect()
     }
 }
 
-/// What a comparison is made against: the open scene, the view on screen, and the context woken
-/// when the comparison is done.
-pub(crate) struct Against {
-    pub(crate) ctx: egui::Context,
-    pub(crate) scene: Arc<Scene>,
-    pub(crate) view: View,
+/// The probe's line for one compared image at pixel `px` (y up), named by its kind when it is
+/// one of a pair.
+fn probe_line(pixels: &ComparisonPixels, px: glam::DVec2, paired: bool) -> Option<String> {
+    let (width, height) = pixels.theirs.dimensions();
+    if px.x < 0.0 || px.y < 0.0 || px.x >= f64::from(width) || px.y >= f64::from(height) {
+        return None;
+    }
+    let (x, row) = (px.x as u32, height - 1 - px.y as u32);
+    let rgb = |image: &RgbImage| {
+        let [r, g, b] = image.get_pixel(x, row).0;
+        format!("{r} {g} {b}")
+    };
+    let name = match pixels.source {
+        CompareSource::File(_) if paired => format!("{} theirs", pixels.kind.word()),
+        CompareSource::File(_) => "theirs".to_owned(),
+        CompareSource::Quality(_) => "chosen".to_owned(),
+    };
+    let index = (row * width + x) as usize;
+    let unexplained = pixels
+        .unexplained
+        .as_ref()
+        .is_some_and(|flags| flags.get(index).copied().unwrap_or(false));
+    Some(format!(
+        "{name} {} · exact {} · off by {}{}",
+        rgb(&pixels.theirs),
+        rgb(&pixels.exact),
+        pixels.difference.per_pixel[index],
+        if unexplained { " · unexplained" } else { "" }
+    ))
 }
 
 impl CompareState {
-    /// Opens the image at `path` and compares it with the exact render of the open scene (and
-    /// watches the file, to compare it again when their program writes it again).
+    /// Opens the image at `path` and compares it with the exact render of the open scene (with
+    /// the image of the other kind on screen, if any, as a pair), and watches the file, to
+    /// compare it again when their program writes it again.
     pub(crate) fn with_file(
         &mut self,
         against: &Against,
         path: PathBuf,
         kind: ImageKind,
     ) -> Option<Status> {
-        let ctx = against.ctx.clone();
-        let forced = self.kind_forced;
-        let watched = FileWatcher::watch(&path, move || ctx.request_repaint())
-            .ok()
-            .map(|watcher| (path.clone(), kind, forced, watcher));
-        let status = self.with_image(against, path, kind, read_their_image);
-        self.watched = watched;
-        status
+        self.inputs
+            .watch(&path, kind, self.kind_forced, &against.ctx);
+        self.with_image(against, path, kind, read_their_image)
     }
 
     /// Compares the image `read` gets for `path` (a file, or a browser page's dropped or picked
-    /// file: its bytes, decoded) with the exact render, unwatched.
+    /// file: its bytes, decoded) with the exact render; with the image of the other kind on
+    /// screen, if any, as a pair. Given while another comparison is computed, it waits for it.
     pub(crate) fn with_image(
         &mut self,
         against: &Against,
@@ -369,38 +389,21 @@ impl CompareState {
         kind: ImageKind,
         read: impl FnOnce(&Path) -> Result<RgbImage, TheirImageError> + Send + 'static,
     ) -> Option<Status> {
-        self.watched = None;
         let forced = std::mem::take(&mut self.kind_forced);
-        self.theirs(against, path, kind, None, forced, read)
+        let given = Given::new(path, kind, forced, read);
+        if self.busy() {
+            self.inputs.queue(given);
+            return None;
+        }
+        let job = Job::beside(given, self.current.as_ref().map(|c| &c.pixels));
+        self.run(against, job)
     }
 
-    /// Compares the image `read` gets for `path` with the exact render, in the background: a
-    /// depth image under `range`, or with `None` under the range read back from it. As `kind`
-    /// where it was clicked (`forced`) or a range is given; else as the kind its content and
-    /// name say ([`recognised_kind`]), which the answer says when it is not `kind`.
-    fn theirs(
-        &mut self,
-        against: &Against,
-        path: PathBuf,
-        kind: ImageKind,
-        range: Option<DepthRange>,
-        forced: bool,
-        read: impl FnOnce(&Path) -> Result<RgbImage, TheirImageError> + Send + 'static,
-    ) -> Option<Status> {
-        let scene = Arc::clone(&against.scene);
-        let fallback = against.view.depth_range;
-        self.kind = kind;
-        self.start(&against.ctx, move || {
-            let theirs = read(&path).map_err(|error| error.to_string())?;
-            let (kind, assumed) = if forced || range.is_some() {
-                (kind, None)
-            } else {
-                recognised_kind(&scene, &path, &theirs, kind)
-            };
-            let mut pixels = compare_file(&scene, &path, theirs, kind, range, fallback)?;
-            pixels.kind_assumed = assumed;
-            Ok(pixels)
-        })
+    /// Starts `job` in the background.
+    fn run(&mut self, against: &Against, job: Job) -> Option<Status> {
+        self.kind = job.kind();
+        let work = job.work(against);
+        self.start(&against.ctx, work)
     }
 
     /// Measures `quality` against the exact render on the view on screen.
@@ -416,7 +419,8 @@ impl CompareState {
     /// at the file's camera and their size, and says the outcome in `status`. A depth image sets
     /// the depth range to the one it was judged under (read back from it), and follows the depth
     /// range after: it is judged again under the range the user sets. Their file written again
-    /// (and settled) is read and judged again.
+    /// (and settled) is read and judged again, and so is the image on screen when the other
+    /// kind is clicked; an image given while one was judged is judged next.
     pub(crate) fn take_in(
         &mut self,
         ctx: &egui::Context,
@@ -424,58 +428,27 @@ impl CompareState {
         view: &mut View,
         status: &mut Option<Status>,
     ) {
-        // Made only when a comparison starts again, not on every frame.
-        let against = |view: View| Against {
-            ctx: ctx.clone(),
-            scene: Arc::clone(scene),
-            view,
-        };
-        // (Asked only between comparisons: a change seen while one runs waits for it.)
-        let seen = self
-            .watched
-            .as_ref()
-            .filter(|_| !self.busy())
-            .map(|(path, kind, forced, watcher)| (path, *kind, *forced, watcher.poll()));
-        match seen {
-            Some((path, kind, forced, WatchState::Changed)) => {
-                let path = path.clone();
-                let again = against(*view);
-                let said = self.theirs(&again, path, kind, None, forced, read_their_image_settled);
-                say(status, said);
-                return;
-            }
-            Some((_, _, _, WatchState::Settling(wait))) => ctx.request_repaint_after(wait),
-            _ => {}
-        }
         if !self.busy() {
-            // The other kind clicked: their image on screen is judged as that at once.
-            if self.kind_forced
-                && let Some(current) = &self.current
-                && let CompareSource::File(path) = &current.pixels.source
-                && current.pixels.kind != self.kind
-            {
-                let (path, theirs, kind) = (path.clone(), current.pixels.theirs.clone(), self.kind);
+            // (Asked only between comparisons: a change seen while one runs waits for it.)
+            let (changed, settling) = self.inputs.poll();
+            let mut clicked = self.kind_forced.then_some(self.kind);
+            let current = self.current.as_ref().map(|c| &c.pixels);
+            let job = self
+                .inputs
+                .again(current, &mut clicked, changed, view.depth_range);
+            if self.kind_forced && clicked.is_none() {
                 self.kind_forced = false;
-                if let Some(watched) = &mut self.watched {
-                    (watched.1, watched.2) = (kind, true);
-                }
-                let again = against(*view);
-                let said = self.theirs(&again, path, kind, None, true, move |_| Ok(theirs));
-                say(status, said);
-                return;
             }
-            let range = view.depth_range;
-            if let Some((path, theirs)) = self.stale_depth_image(range) {
-                let again = against(*view);
-                let said = self.theirs(
-                    &again,
-                    path,
-                    ImageKind::Depth,
-                    Some(range),
-                    true,
-                    move |_| Ok(theirs),
-                );
+            if let Some(job) = job {
+                let against = Against {
+                    ctx: ctx.clone(),
+                    scene: Arc::clone(scene),
+                    view: *view,
+                };
+                let said = self.run(&against, job);
                 say(status, said);
+            } else if let Some(wait) = settling {
+                ctx.request_repaint_after(wait);
             }
             return;
         }
@@ -483,17 +456,28 @@ impl CompareState {
             Ok(None) => {}
             Ok(Some((held, kind))) => {
                 self.kind = kind;
-                let depth_range = match kind {
-                    ImageKind::Depth => held.depth_range,
-                    ImageKind::Colour => view.depth_range,
+                let has_depth = self
+                    .current
+                    .as_ref()
+                    .is_some_and(|c| c.pixels.images().any(|i| i.kind == ImageKind::Depth));
+                let depth_range = if has_depth {
+                    held.depth_range
+                } else {
+                    view.depth_range
                 };
                 *view = View {
                     depth_range,
                     ..held
                 };
+                if let Some(current) = &self.current {
+                    self.inputs.keep_on_screen(&current.pixels);
+                }
                 *status = self.done_message();
             }
             Err(error) => *status = Some(error),
+        }
+        if self.inputs.waiting() && !self.busy() {
+            ctx.request_repaint();
         }
     }
 }

@@ -16,6 +16,8 @@ use crate::render::sampling::Sampling;
 use crate::render::{Quality, View, render_with};
 use crate::scene::Scene;
 
+use super::kind::ImageKind;
+
 /// What the compared image shows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum CompareShow {
@@ -26,117 +28,6 @@ pub enum CompareShow {
     Theirs,
     /// The heat map of the difference.
     Difference,
-}
-
-/// Which of the two images is compared.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum ImageKind {
-    /// The colour image.
-    #[default]
-    Colour,
-    /// The depth image (grey, the view's depth range).
-    Depth,
-}
-
-impl ImageKind {
-    /// The index of the image on screen (0 colour, 1 depth).
-    pub(crate) fn index(self) -> usize {
-        match self {
-            Self::Colour => 0,
-            Self::Depth => 1,
-        }
-    }
-}
-
-/// Which kind of image `theirs` (named `name`) is, where its content or its name says so against
-/// `chosen`, with the reason said when it is not `chosen`. A depth image is grey: every pixel
-/// grey but a single no-hit colour (their fill, where it is the scene's background), with a ramp
-/// of at least three levels; a colour image of a scene with colours has two colours or more that
-/// are not grey, or one that is a sphere's. Where the content cannot tell (a scene of grey spheres), a name that says
-/// "depth", or "output" or "colour", does.
-pub fn recognised_kind(
-    scene: &Scene,
-    name: &Path,
-    theirs: &RgbImage,
-    chosen: ImageKind,
-) -> (ImageKind, Option<String>) {
-    use std::collections::BTreeSet;
-    let grey = |p: &image::Rgb<u8>| p.0[0] == p.0[1] && p.0[1] == p.0[2];
-    let mut levels = BTreeSet::new();
-    let mut colours = BTreeSet::new();
-    for pixel in theirs.pixels() {
-        if grey(pixel) {
-            levels.insert(pixel.0[0]);
-        } else if colours.len() < 3 {
-            colours.insert(pixel.0);
-        }
-    }
-    let background = crate::compare::model::colour_bytes(scene.background, false);
-    let coloured = |c: glam::Vec3| c.x != c.y || c.y != c.z;
-    let scene_has_colour = scene
-        .spheres
-        .iter()
-        .any(|sphere| coloured(scene.sphere_colour(sphere)))
-        || coloured(scene.background);
-    let stem = name
-        .file_stem()
-        .map(|s| s.to_string_lossy().to_lowercase())
-        .unwrap_or_default();
-    let by_name = if stem.contains("depth") {
-        Some(ImageKind::Depth)
-    } else if ["output", "colour", "color"]
-        .iter()
-        .any(|w| stem.contains(w))
-    {
-        Some(ImageKind::Colour)
-    } else {
-        None
-    };
-    let looks_depth = levels.len() >= 3
-        && (colours.is_empty() || (colours.len() == 1 && colours.contains(&background)));
-    // Two colours, or one that is a sphere's (a lone red sphere on black): no depth image's.
-    let sphere_colour = |c: &[u8; 3]| {
-        scene.spheres.iter().any(|sphere| {
-            let colour = scene.sphere_colour(sphere);
-            [false, true]
-                .map(|rounded| crate::compare::model::colour_bytes(colour, rounded))
-                .contains(c)
-        })
-    };
-    let looks_colour =
-        colours.len() >= 2 || colours.iter().any(|c| *c != background && sphere_colour(c));
-    let (kind, why) = if scene_has_colour && looks_depth {
-        (
-            ImageKind::Depth,
-            format!(
-                "every pixel is grey ({} levels{}) where the scene's spheres have colours",
-                levels.len(),
-                if colours.is_empty() {
-                    ""
-                } else {
-                    ", and the scene's background where nothing is hit"
-                }
-            ),
-        )
-    } else if looks_colour {
-        (
-            ImageKind::Colour,
-            "it has colours, which a depth image has not".to_owned(),
-        )
-    } else if let Some(kind) = by_name {
-        (kind, format!("its name, {}", name.display()))
-    } else {
-        (chosen, String::new())
-    };
-    if kind == chosen {
-        (kind, None)
-    } else {
-        let word = match kind {
-            ImageKind::Colour => "a colour image",
-            ImageKind::Depth => "a depth image",
-        };
-        (kind, Some(format!("judged as {word}: {why}")))
-    }
 }
 
 /// Samples per pixel of the high-sample reference an anti-aliased picture is measured against.
@@ -212,6 +103,10 @@ pub struct ComparisonPixels {
     /// For each statement shown (the statements, then the partial ones), the pixels it explains
     /// on its own, one flag per pixel from the top row (highlighted when it is pointed at).
     pub explained_by: Vec<Option<Vec<bool>>>,
+    /// The other image of a pair judged together (the depth image beside a colour one, or the
+    /// colour image beside a depth one), with its own pixels; the answer is the pair's, the same
+    /// in both (`None`: their image was judged alone).
+    pub paired: Option<Box<ComparisonPixels>>,
 }
 
 /// Where the depth range a depth image is judged under comes from.
@@ -226,6 +121,27 @@ pub enum RangeSource {
 }
 
 impl ComparisonPixels {
+    /// Whether this image matches the exact one under the course's rule for its kind.
+    pub fn matches(&self) -> bool {
+        match self.kind {
+            ImageKind::Colour => self.difference.colour_matches(),
+            ImageKind::Depth => self.difference.depth_matches(),
+        }
+    }
+
+    /// The image's name: its file, or the quality measured.
+    pub fn name(&self) -> String {
+        match &self.source {
+            CompareSource::File(path) => path.display().to_string(),
+            CompareSource::Quality(figures) => figures.quality.clone(),
+        }
+    }
+
+    /// This image and the one paired with it, if any: the images on screen.
+    pub fn images(&self) -> impl Iterator<Item = &ComparisonPixels> {
+        std::iter::once(self).chain(self.paired.as_deref())
+    }
+
     /// Each statement as its word and values (`zoom 1.118`).
     pub fn diagnosis(&self) -> Vec<String> {
         self.statements
@@ -236,40 +152,45 @@ impl ComparisonPixels {
 }
 
 /// Compares `theirs` with the exact picture of the scene's own camera at their size, and
-/// diagnoses the difference ([`judge`], as the command line does). A depth image is judged under
-/// `range`, or with `None` under the range read back from it (`fallback`, the viewer's, where it
-/// has no ramp to read one from).
+/// diagnoses the difference ([`judge`], as the command line does). With `partner` (the image of
+/// the other kind, at the same size) the two are judged together, as the grader does: the answer
+/// is the pair's, and the partner's pixels come back in [`ComparisonPixels::paired`]. A depth
+/// image is judged under `range`, or with `None` under the range read back from it (`fallback`,
+/// the viewer's, where it has no ramp to read one from).
 pub fn compare_file(
     scene: &Scene,
     path: &Path,
     theirs: RgbImage,
     kind: ImageKind,
+    partner: Option<(PathBuf, RgbImage)>,
     range: Option<DepthRange>,
     fallback: DepthRange,
 ) -> Result<ComparisonPixels, String> {
     let (width_px, height_px) = theirs.dimensions();
     let view = View::of_camera(&scene.camera, width_px, height_px, fallback);
     let frame = render_with(scene, &view, &Quality::default()).map_err(|e| e.to_string())?;
-    let given = match kind {
-        ImageKind::Colour => Theirs {
-            colour: Some(&theirs),
-            depth: None,
-        },
-        ImageKind::Depth => Theirs {
-            colour: None,
-            depth: Some(&theirs),
-        },
+    let partner = partner.filter(|(_, image)| image.dimensions() == theirs.dimensions());
+    let of_kind = |wanted: ImageKind| {
+        if kind == wanted {
+            Some(&theirs)
+        } else {
+            partner.as_ref().map(|(_, image)| image)
+        }
     };
-    let (judged, range_source) = match (kind, range) {
-        (ImageKind::Colour, _) => (
+    let given = Theirs {
+        colour: of_kind(ImageKind::Colour),
+        depth: of_kind(ImageKind::Depth),
+    };
+    let (judged, range_source) = match (given.depth.is_some(), range) {
+        (false, _) => (
             judge(scene, &frame, given, Some(fallback)),
             RangeSource::Viewer,
         ),
-        (ImageKind::Depth, Some(range)) => (
+        (true, Some(range)) => (
             judge(scene, &frame, given, Some(range)),
             RangeSource::Viewer,
         ),
-        (ImageKind::Depth, None) => match judge(scene, &frame, given, None) {
+        (true, None) => match judge(scene, &frame, given, None) {
             Ok(judged) => (Ok(judged), RangeSource::ReadBack),
             Err(NoDepthRange) => (
                 judge(scene, &frame, given, Some(fallback)),
@@ -283,26 +204,6 @@ pub fn compare_file(
         judged.diagnosis = judged.diagnosis.with_range_from(RangeFrom::Viewer);
     }
     let diagnosis = &judged.diagnosis;
-    let (exact, difference, unexplained) = match kind {
-        ImageKind::Colour => (
-            judged.exact_colour.clone(),
-            judged.colour.clone(),
-            &diagnosis.unexplained.colour,
-        ),
-        ImageKind::Depth => (
-            judged.exact_depth.clone(),
-            judged.depth.clone(),
-            &diagnosis.unexplained.depth,
-        ),
-    };
-    let (Some(exact), Some(difference)) = (exact, difference) else {
-        return Err("the exact image was not made".to_owned());
-    };
-    let unexplained = if diagnosis.stated().is_empty() && diagnosis.partial().is_empty() {
-        None
-    } else {
-        unexplained.clone()
-    };
     // The pixels each statement shown explains (the answer's, or those that explain part).
     let shown: Vec<Deviation> = diagnosis
         .stated()
@@ -310,42 +211,70 @@ pub fn compare_file(
         .chain(diagnosis.partial())
         .cloned()
         .collect();
-    let explained_by = explained_by_each(scene, &judged.view, given, &shown)
-        .into_iter()
-        .map(|each| match kind {
-            ImageKind::Colour => each.colour,
-            ImageKind::Depth => each.depth,
+    let explained = explained_by_each(scene, &judged.view, given, &shown);
+    let tell_apart = tell_apart(scene, &judged.view, diagnosis, given);
+    let stated = !(diagnosis.stated().is_empty() && diagnosis.partial().is_empty());
+    // One image's pixels: its exact picture, difference, unexplained and explained pixels.
+    let side = |kind: ImageKind, path: &Path, theirs: RgbImage| {
+        let (exact, difference, unexplained) = match kind {
+            ImageKind::Colour => (
+                judged.exact_colour.clone(),
+                judged.colour.clone(),
+                &diagnosis.unexplained.colour,
+            ),
+            ImageKind::Depth => (
+                judged.exact_depth.clone(),
+                judged.depth.clone(),
+                &diagnosis.unexplained.depth,
+            ),
+        };
+        let (Some(exact), Some(difference)) = (exact, difference) else {
+            return Err("the exact image was not made".to_owned());
+        };
+        Ok(ComparisonPixels {
+            source: CompareSource::File(path.to_path_buf()),
+            kind,
+            kind_assumed: None,
+            view: judged.view,
+            exact,
+            difference,
+            model: diagnosis.stated_model().copied(),
+            tell_apart: tell_apart.clone(),
+            not_fitted_because: diagnosis.not_fitted_because(),
+            statements: diagnosis.stated().to_vec(),
+            alternatives: diagnosis
+                .alternatives()
+                .iter()
+                .map(|set| {
+                    set.iter()
+                        .map(Deviation::name_and_values)
+                        .collect::<Vec<_>>()
+                        .join(" + ")
+                })
+                .collect(),
+            partial: diagnosis.partial().to_vec(),
+            unexplained_pixels: diagnosis.unexplained_pixels(),
+            unexplained: unexplained.clone().filter(|_| stated),
+            depth_range_inferred: judged.depth_range_inferred.flatten(),
+            range_source,
+            explained_by: explained
+                .iter()
+                .map(|each| match kind {
+                    ImageKind::Colour => each.colour.clone(),
+                    ImageKind::Depth => each.depth.clone(),
+                })
+                .collect(),
+            theirs,
+            paired: None,
         })
-        .collect();
-    Ok(ComparisonPixels {
-        source: CompareSource::File(path.to_path_buf()),
-        kind,
-        kind_assumed: None,
-        view: judged.view,
-        exact,
-        difference,
-        model: diagnosis.stated_model().copied(),
-        tell_apart: tell_apart(scene, &judged.view, diagnosis, given),
-        not_fitted_because: diagnosis.not_fitted_because(),
-        statements: diagnosis.stated().to_vec(),
-        alternatives: diagnosis
-            .alternatives()
-            .iter()
-            .map(|set| {
-                set.iter()
-                    .map(Deviation::name_and_values)
-                    .collect::<Vec<_>>()
-                    .join(" + ")
-            })
-            .collect(),
-        partial: diagnosis.partial().to_vec(),
-        unexplained_pixels: diagnosis.unexplained_pixels(),
-        unexplained,
-        depth_range_inferred: judged.depth_range_inferred.flatten(),
-        range_source,
-        explained_by,
-        theirs,
-    })
+    };
+    let paired = match partner {
+        Some((partner_path, image)) => Some(Box::new(side(kind.other(), &partner_path, image)?)),
+        None => None,
+    };
+    let mut pixels = side(kind, path, theirs)?;
+    pixels.paired = paired;
+    Ok(pixels)
 }
 
 /// The colour image of `view` at `quality` against the exact one (and, with anti-aliasing, a
@@ -410,67 +339,6 @@ pub fn compare_quality(
         depth_range_inferred: None,
         range_source: RangeSource::Viewer,
         explained_by: Vec::new(),
+        paired: None,
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use std::path::Path;
-
-    use super::{ImageKind, recognised_kind};
-    use crate::render::depth_map::DepthRange;
-    use crate::render::{View, render};
-    use crate::scene::bundled::BUNDLED_SCENES;
-    use crate::scene::parse_scene;
-
-    /// The course's scene1_01 (a red sphere on black) at 200×200 over its line's range, 9 … 10:
-    /// its colour and depth images, as the course's program writes them.
-    fn scene1_01() -> (crate::scene::Scene, image::RgbImage, image::RgbImage) {
-        let text = BUNDLED_SCENES
-            .iter()
-            .find(|(name, _)| *name == "scene1_01.txt")
-            .unwrap()
-            .1;
-        let scene = parse_scene(text).unwrap();
-        let range = DepthRange::new(9.0, 10.0);
-        let frame = render(&scene, &View::of_camera(&scene.camera, 200, 200, range)).unwrap();
-        let (colour, depth) = (frame.colour_image(), frame.depth_image(range));
-        (scene, colour, depth)
-    }
-
-    /// A red sphere on black is a colour image though it has one colour only (a sphere's), and
-    /// its depth image a depth image; each said when it is not the kind chosen, and nothing said
-    /// when it is.
-    #[test]
-    fn each_image_is_recognised_by_its_content_whatever_its_name() {
-        let (scene, colour, depth) = scene1_01();
-        let name = Path::new("mine.png");
-        let (kind, said) = recognised_kind(&scene, name, &colour, ImageKind::Depth);
-        assert_eq!(kind, ImageKind::Colour);
-        assert!(
-            said.unwrap()
-                .starts_with("judged as a colour image: it has colours")
-        );
-        let (kind, said) = recognised_kind(&scene, name, &depth, ImageKind::Colour);
-        assert_eq!(kind, ImageKind::Depth);
-        assert!(
-            said.unwrap()
-                .starts_with("judged as a depth image: every pixel is grey")
-        );
-        assert_eq!(
-            recognised_kind(&scene, name, &colour, ImageKind::Colour),
-            (ImageKind::Colour, None)
-        );
-        // All black says nothing of its kind: the name, then the kind chosen, decide.
-        let black = image::RgbImage::new(200, 200);
-        let depth_name = Path::new("depth1_01.tga");
-        assert_eq!(
-            recognised_kind(&scene, depth_name, &black, ImageKind::Colour).0,
-            ImageKind::Depth
-        );
-        assert_eq!(
-            recognised_kind(&scene, name, &black, ImageKind::Depth),
-            (ImageKind::Depth, None)
-        );
-    }
 }

@@ -6,7 +6,8 @@ use egui::{RichText, Ui};
 
 use crate::app::actions::Action;
 use crate::app::compare::{
-    CompareShow, CompareSource, CompareState, ImageKind, OFF_LEVELS, REFERENCE_SAMPLES, RangeSource,
+    CompareShow, CompareSource, CompareState, ComparisonPixels, ImageKind, OFF_LEVELS,
+    REFERENCE_SAMPLES, RangeSource,
 };
 use crate::app::dialogs::DialogKind;
 use crate::compare::deviation::Deviation;
@@ -152,25 +153,55 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
             ));
         }
     }
-    let differing = pixels.difference.pixels_differing();
-    let total = pixels.difference.per_pixel.len().max(1);
-    ui.label(format!(
-        "pixels differing: {differing} ({:.2}%) · largest difference: {} levels",
-        100.0 * differing as f64 / total as f64,
-        pixels.difference.max_difference()
-    ));
+    let paired = pixels.paired.is_some();
+    if let Some(other) = &pixels.paired {
+        ui.label(format!(
+            "judged together with the {} image {}, as the grader does",
+            other.kind.word(),
+            other.name()
+        ))
+        .on_hover_text(
+            "an image of the other kind at the same size, given while one is open (or both \
+             dropped at once), is judged with it; Close comparison, then give one, to judge it \
+             alone",
+        );
+    }
+    for image in pixels.images() {
+        let differing = image.difference.pixels_differing();
+        let total = image.difference.per_pixel.len().max(1);
+        let named = if paired {
+            format!("{}: ", image.kind.word())
+        } else {
+            String::new()
+        };
+        ui.label(format!(
+            "{named}pixels differing: {differing} ({:.2}%) · largest difference: {} levels",
+            100.0 * differing as f64 / total as f64,
+            image.difference.max_difference()
+        ));
+    }
     match &pixels.source {
         CompareSource::File(_) => {
-            let matches = match pixels.kind {
-                ImageKind::Colour => pixels.difference.colour_matches(),
-                ImageKind::Depth => pixels.difference.depth_matches(),
-            };
+            let matches = pixels.images().all(ComparisonPixels::matches);
             ui.label(if matches {
-                "match: yes (the course's rule)"
+                "match: yes (the course's rule)".to_owned()
+            } else if paired {
+                let each: Vec<String> = pixels
+                    .images()
+                    .map(|image| {
+                        let word = if image.matches() {
+                            "matches"
+                        } else {
+                            "differs"
+                        };
+                        format!("{} {word}", image.kind.word())
+                    })
+                    .collect();
+                format!("match: no ({})", each.join(", "))
             } else {
-                "match: no"
+                "match: no".to_owned()
             });
-            if pixels.kind == ImageKind::Depth {
+            if pixels.images().any(|image| image.kind == ImageKind::Depth) {
                 let used = pixels.view.depth_range;
                 let from = match pixels.range_source {
                     RangeSource::ReadBack => "read from their image",

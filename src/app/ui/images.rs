@@ -51,8 +51,9 @@ pub(crate) struct ShownImages<'a> {
     pub(crate) depth_range: DepthRange,
     /// Visible t of the frame.
     pub(crate) histogram: Option<&'a DepthHistogram>,
-    /// A picture shown in place of one of the two (the Compare section's).
-    pub(crate) compared: Option<Compared<'a>>,
+    /// Pictures shown in place of the two (the Compare section's): one, or one for each image
+    /// of a pair.
+    pub(crate) compared: Vec<Compared<'a>>,
 }
 
 /// A picture shown in place of one of the rendered images: their image or the difference.
@@ -192,15 +193,17 @@ pub(crate) fn images_ui(
         hover,
         magnifier,
     };
-    let heat_scale_on = shown
-        .and_then(|s| s.compared.as_ref())
+    let heat_scale_on: Vec<usize> = shown
+        .iter()
+        .flat_map(|s| &s.compared)
         .filter(|compared| compared.heat_scale)
-        .map(|compared| compared.index);
+        .map(|compared| compared.index)
+        .collect();
     let mut image = |ui: &mut Ui, index: usize| {
         // One line: a long caption is elided (whole on hover), so it never pushes the footer out.
         ui.horizontal(|ui| {
             ui.set_width(layout.image_points.x);
-            if heat_scale_on == Some(index) {
+            if heat_scale_on.contains(&index) {
                 heat_scale_ui(ui);
             }
             ui.add(egui::Label::new(&captions[index]).truncate());
@@ -303,7 +306,7 @@ fn captions(shown: Option<&ShownImages<'_>>) -> [String; 2] {
         }
         None => ["colour".to_owned(), "depth".to_owned()],
     };
-    if let Some(compared) = shown.and_then(|s| s.compared.as_ref()) {
+    for compared in shown.iter().flat_map(|s| &s.compared) {
         captions[compared.index].clone_from(&compared.caption);
     }
     captions
@@ -334,10 +337,11 @@ fn image_ui(
         ui.painter().rect_filled(area, 0.0, Color32::from_gray(30));
         return;
     };
-    let (texture, size_px) = match &images.compared {
-        Some(compared) if compared.index == index => (compared.texture, compared.size_px),
-        _ if index == 0 => (images.colour, images.size_px),
-        _ => (images.depth, images.size_px),
+    let compared = images.compared.iter().find(|c| c.index == index);
+    let (texture, size_px) = match compared {
+        Some(compared) => (compared.texture, compared.size_px),
+        None if index == 0 => (images.colour, images.size_px),
+        None => (images.depth, images.size_px),
     };
     let rect = image_rect(area, size_px, ui.ctx().pixels_per_point());
     let region = marks.magnifier.region(size_px);
