@@ -166,7 +166,10 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
              alone",
         );
     }
-    for image in pixels.images() {
+    // Colour first, then depth, as the two images stand.
+    let mut images: Vec<&ComparisonPixels> = pixels.images().collect();
+    images.sort_by_key(|image| image.kind.index());
+    for image in &images {
         let differing = image.difference.pixels_differing();
         let total = image.difference.per_pixel.len().max(1);
         let named = if paired {
@@ -186,8 +189,8 @@ pub(crate) fn compare_ui(ui: &mut Ui, state: &mut CompareState, quality: &Qualit
             ui.label(if matches {
                 "match: yes (the course's rule)".to_owned()
             } else if paired {
-                let each: Vec<String> = pixels
-                    .images()
+                let each: Vec<String> = images
+                    .iter()
                     .map(|image| {
                         let word = if image.matches() {
                             "matches"
