@@ -9,162 +9,25 @@
 //! A page has no threads here: loads, comparisons and exports run on the page's thread, and the
 //! render worker renders one frame per page frame (see `platform/worker.rs`).
 
-use std::cell::RefCell;
 use std::path::Path;
-use std::rc::Rc;
 use std::sync::Arc;
 
-use wasm_bindgen::JsCast as _;
 use wasm_bindgen::prelude::*;
-use wasm_bindgen_futures::JsFuture;
 
 use crate::compare::their_image::decode_their_image;
-use crate::platform::browser::{
-    download, download_name, fetch_bytes, js_error, same_site_url, window,
-};
-use crate::platform::browser::{scene_parameter, set_title};
+use crate::platform::browser::{download, download_name, scene_parameter, set_title};
 
 use super::actions::{Action, Write};
-use super::compare::{ImageKind, dropped_image_kind};
+use super::compare::{CompareSource, dropped_image_kind};
 use super::dialogs::DialogKind;
+mod page_files;
+
 use super::status::Status;
 use super::viewer::ViewerApp;
 use super::writes::Stager;
 use crate::output::atomic::FilesInMemory;
-
-/// What a file that came in is for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Purpose {
-    /// A scene to open.
-    Open,
-    /// An image to compare, as this kind.
-    Compare(ImageKind),
-    /// Decided by its name: an image (`.png`, `.tga`) is compared, anything else opened.
-    ByName,
-}
-
-/// A file that came in, or why it could not.
-#[derive(Debug)]
-pub(crate) struct Incoming {
-    name: String,
-    purpose: Purpose,
-    bytes: Result<Vec<u8>, String>,
-}
-
-/// The page's side of the viewer: files on their way in.
-#[derive(Debug, Clone, Default)]
-pub(crate) struct Page {
-    inbox: Rc<RefCell<Vec<Incoming>>>,
-}
-
-impl Page {
-    fn deliver(&self, incoming: Incoming, ctx: &egui::Context) {
-        self.inbox.borrow_mut().push(incoming);
-        ctx.request_repaint();
-    }
-
-    /// Reads a file dropped on the page.
-    pub(crate) fn read_dropped(&self, file: egui::DroppedFileHandle, ctx: &egui::Context) {
-        let (page, ctx) = (self.clone(), ctx.clone());
-        wasm_bindgen_futures::spawn_local(async move {
-            let name = file_name(file.path());
-            let bytes = file.bytes_async().await;
-            page.deliver(
-                Incoming {
-                    name,
-                    purpose: Purpose::ByName,
-                    bytes,
-                },
-                &ctx,
-            );
-        });
-    }
-
-    /// Shows the browser's file chooser (files of `accept`, e.g. `.txt`) and reads the file
-    /// chosen. Nothing comes in when the user cancels.
-    pub(crate) fn pick(
-        &self,
-        purpose: Purpose,
-        accept: &str,
-        ctx: &egui::Context,
-    ) -> Result<(), String> {
-        let document = window()?.document().ok_or("the page has no document")?;
-        let input: web_sys::HtmlInputElement = document
-            .create_element("input")
-            .map_err(|e| js_error(&e))?
-            .dyn_into()
-            .map_err(|_| "cannot make a file input")?;
-        input.set_type("file");
-        input.set_accept(accept);
-        let (page, ctx, chooser) = (self.clone(), ctx.clone(), input.clone());
-        let on_change = Closure::once_into_js(move || {
-            let Some(file) = chooser.files().and_then(|files| files.get(0)) else {
-                return;
-            };
-            wasm_bindgen_futures::spawn_local(async move {
-                let bytes = JsFuture::from(file.array_buffer())
-                    .await
-                    .map(|buffer| js_sys::Uint8Array::new(&buffer).to_vec())
-                    .map_err(|e| js_error(&e));
-                page.deliver(
-                    Incoming {
-                        name: file.name(),
-                        purpose,
-                        bytes,
-                    },
-                    &ctx,
-                );
-            });
-        });
-        input.set_onchange(Some(on_change.unchecked_ref()));
-        input.click();
-        Ok(())
-    }
-
-    /// Fetches the scene at `address`, relative to the page. Only the page's own site is asked
-    /// (a course page links its scenes); anything else is refused with a message.
-    pub(crate) fn fetch_scene(&self, address: &str, ctx: &egui::Context) {
-        let name = address.rsplit('/').next().unwrap_or(address).to_owned();
-        let url = match same_site_url(address) {
-            Ok(url) => url,
-            Err(error) => {
-                self.deliver(
-                    Incoming {
-                        name,
-                        purpose: Purpose::Open,
-                        bytes: Err(error),
-                    },
-                    ctx,
-                );
-                return;
-            }
-        };
-        let (page, ctx) = (self.clone(), ctx.clone());
-        wasm_bindgen_futures::spawn_local(async move {
-            let bytes = fetch_bytes(&url).await;
-            page.deliver(
-                Incoming {
-                    name,
-                    purpose: Purpose::Open,
-                    bytes,
-                },
-                &ctx,
-            );
-        });
-    }
-
-    fn take(&self) -> Vec<Incoming> {
-        std::mem::take(&mut *self.inbox.borrow_mut())
-    }
-}
-
-/// The last part of a dropped file's path (the page gives only the name).
-fn file_name(path: &Path) -> String {
-    path.file_name().map_or_else(
-        || path.display().to_string(),
-        |n| n.to_string_lossy().into_owned(),
-    )
-}
+pub(crate) use page_files::Page;
+use page_files::Purpose;
 
 impl ViewerApp {
     /// A page opens the scene its address names (`?scene=`), not the last one (that was a file
@@ -219,6 +82,15 @@ impl ViewerApp {
                 Purpose::Open => None,
                 Purpose::Compare(kind) => Some(kind),
                 Purpose::ByName => dropped_image_kind(&name),
+                // A watched image written again is compared while it is on screen (or being
+                // judged); once closed, or another scene opened, its watch stops.
+                Purpose::Rewritten(kind) => {
+                    if !self.compare.busy() && !self.shows(Path::new(&name)) {
+                        self.page.stop_watching(&name);
+                        continue;
+                    }
+                    Some(kind)
+                }
             };
             let Some(kind) = compared_as else {
                 self.open_bytes(&name, bytes);
@@ -229,6 +101,14 @@ impl ViewerApp {
             let status = self.compare.with_image(&against, name.into(), kind, read);
             self.say(status);
         }
+    }
+
+    /// Whether an image named `path` is among the compared images on screen.
+    fn shows(&self, path: &Path) -> bool {
+        self.compare.current.as_ref().is_some_and(|current| {
+            let mut images = current.pixels.images();
+            images.any(|image| matches!(&image.source, CompareSource::File(p) if p == path))
+        })
     }
 
     /// Opens the scene at `path`: in a page, the path field holds an address on the page's
@@ -242,6 +122,8 @@ impl ViewerApp {
     pub(super) fn open_dialog(&mut self, kind: DialogKind) {
         let chosen = match kind {
             DialogKind::Open => self.page.pick(Purpose::Open, ".txt,text/plain", &self.ctx),
+            // Where the browser can, the image picked is watched, as the desktop watches it.
+            DialogKind::CompareImage(kind) if self.page.pick_watched(kind, &self.ctx) => Ok(()),
             DialogKind::CompareImage(kind) => {
                 self.page
                     .pick(Purpose::Compare(kind), ".png,.tga,image/png", &self.ctx)
@@ -360,7 +242,7 @@ impl WebHandle {
         self.with_app(|app| {
             !super::layout::busy(&app.frames, &app.writes, &app.compare)
                 && app.scene.loading.is_none()
-                && app.page.inbox.borrow().is_empty()
+                && app.page.inbox_empty()
                 && app.frame_is_current()
         })
         .unwrap_or(false)

@@ -105,3 +105,72 @@ pub(crate) fn download_name(path: &std::path::Path) -> String {
         |name| name.to_string_lossy().into_owned(),
     )
 }
+
+/// The browser's file picker with lasting access to the file chosen (`showOpenFilePicker`, the
+/// File System Access API: Chromium), where it has one.
+pub fn file_picker() -> Option<js_sys::Function> {
+    let window = web_sys::window()?;
+    js_sys::Reflect::get(&window, &"showOpenFilePicker".into())
+        .ok()?
+        .dyn_into()
+        .ok()
+}
+
+/// Shows `picker` for one TGA or PNG image: the handle of the file chosen, `None` when the user
+/// cancelled.
+pub async fn pick_handle(picker: &js_sys::Function) -> Result<Option<JsValue>, String> {
+    let accept = js_sys::Object::new();
+    let extensions = js_sys::Array::of2(&".png".into(), &".tga".into());
+    js_sys::Reflect::set(&accept, &"image/*".into(), &extensions).map_err(|e| js_error(&e))?;
+    let kind = js_sys::Object::new();
+    js_sys::Reflect::set(&kind, &"description".into(), &"TGA or PNG image".into())
+        .and_then(|_| js_sys::Reflect::set(&kind, &"accept".into(), &accept))
+        .map_err(|e| js_error(&e))?;
+    let options = js_sys::Object::new();
+    js_sys::Reflect::set(&options, &"types".into(), &js_sys::Array::of1(&kind))
+        .map_err(|e| js_error(&e))?;
+    let window = window()?;
+    let promise: js_sys::Promise = picker
+        .call1(&window, &options)
+        .map_err(|e| js_error(&e))?
+        .dyn_into()
+        .map_err(|_| "the file picker gave no promise".to_owned())?;
+    match JsFuture::from(promise).await {
+        Ok(handles) => Ok(js_sys::Array::from(&handles).get(0).dyn_into().ok()),
+        // The user closed the picker.
+        Err(error)
+            if js_sys::Reflect::get(&error, &"name".into()).ok() == Some("AbortError".into()) =>
+        {
+            Ok(None)
+        }
+        Err(error) => Err(js_error(&error)),
+    }
+}
+
+/// The file a picked `handle` stands for, as it is now.
+pub async fn file_of(handle: &JsValue) -> Result<web_sys::File, String> {
+    let get_file: js_sys::Function = js_sys::Reflect::get(handle, &"getFile".into())
+        .map_err(|e| js_error(&e))?
+        .dyn_into()
+        .map_err(|_| "not a file handle".to_owned())?;
+    let promise: js_sys::Promise = get_file
+        .call0(handle)
+        .map_err(|e| js_error(&e))?
+        .dyn_into()
+        .map_err(|_| "not a file handle".to_owned())?;
+    JsFuture::from(promise)
+        .await
+        .map_err(|e| js_error(&e))?
+        .dyn_into()
+        .map_err(|_| "not a file".to_owned())
+}
+
+/// Waits `ms` milliseconds without holding the page's thread.
+pub async fn sleep_ms(ms: i32) {
+    let promise = js_sys::Promise::new(&mut |resolve, _| {
+        if let Ok(window) = window() {
+            let _ = window.set_timeout_with_callback_and_timeout_and_arguments_0(&resolve, ms);
+        }
+    });
+    let _ = JsFuture::from(promise).await;
+}

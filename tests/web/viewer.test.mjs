@@ -187,6 +187,43 @@ test("a colour and a depth image dropped at once are judged together, as the com
   await context.close();
 });
 
+test("an image picked where the browser lets the page keep it is compared again when it changes", async () => {
+  const scene = path.resolve(env.scenes, "scene1_04.txt");
+  const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_04.txt`);
+  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_04.txt");
+  await settled(page);
+  const folder = temporaryFolder();
+  raytracer(["-input", scene, "-size", "200", "200", "-output", "output1_04.tga"], folder);
+  const right = fs.readFileSync(path.join(folder, "output1_04.tga"));
+  const flipped = upsideDown(path.join(folder, "output1_04.tga"));
+  fs.writeFileSync(path.join(folder, "student.tga"), flipped);
+  const cli = cliDiagnosis(["-input", scene, "-compare_output", "student.tga"], folder);
+  // Chromium's file picker, which headless Chromium cannot show, answers with a real file
+  // handle: a file of the page's private file system, written as their program would.
+  const write = (bytes) => page.evaluate(async (data) => {
+    const root = await navigator.storage.getDirectory();
+    const handle = await root.getFileHandle("output1_04.tga", { create: true });
+    const writable = await handle.createWritable();
+    await writable.write(Uint8Array.from(atob(data), (c) => c.charCodeAt(0)));
+    await writable.close();
+    window.showOpenFilePicker = async () => [handle];
+  }, Buffer.from(bytes).toString("base64"));
+  await write(flipped);
+  // The left panel scrolled to its end: the Compare section's "…" (choose the image).
+  await page.mouse.move(170, 500);
+  await page.mouse.wheel(0, 3000);
+  await page.waitForTimeout(500);
+  await page.mouse.click(319, 241);
+  await page.waitForFunction(() => window.raytracer.diagnosis().length > 0, null, { timeout: 60_000 });
+  assert.deepEqual(await page.evaluate(() => window.raytracer.diagnosis()), cli);
+  // Their program, fixed, writes the file again: compared again with no click.
+  await write(right);
+  await page.waitForFunction(() => /: match$/.test(window.raytracer.message() ?? ""), null, { timeout: 60_000 });
+  assert.equal(await page.evaluate(() => window.raytracer.message()), "compared output1_04.tga: match");
+  assert.deepEqual(await page.evaluate(() => window.raytracer.diagnosis()), []);
+  await context.close();
+});
+
 test("an export downloads the files the command line writes for the same request, named after the scene", async () => {
   const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_02.txt`);
   await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_02.txt");
