@@ -53,6 +53,14 @@ function cliDiagnosis(args, folder) {
   assert.fail("the command line finds no difference");
 }
 
+/** A fresh page on `?scene=scenes/scene1_04.txt`, the scene open and its frame settled. */
+async function openScene1_04() {
+  const opened = await openViewer(browser, `${site.url}?scene=scenes/scene1_04.txt`);
+  await opened.page.waitForFunction(() => window.raytracer.scene_name() === "scene1_04.txt");
+  await settled(opened.page);
+  return opened;
+}
+
 test("the page loads without a console error and shows the default scene's two images", async () => {
   const { page, context, errors } = await openViewer(browser, site.url);
   await settled(page);
@@ -131,9 +139,7 @@ test("a drag on the colour image moves the view", async () => {
 
 test("a wrong image dropped on the page gets the command line's diagnosis", async () => {
   const scene = path.resolve(env.scenes, "scene1_04.txt");
-  const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_04.txt`);
-  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_04.txt");
-  await settled(page);
+  const { page, context } = await openScene1_04();
   // A student's picture written top row first without saying so in the file.
   const folder = temporaryFolder();
   raytracer(["-input", scene, "-size", "120", "80", "-output", "c.tga"], folder);
@@ -150,9 +156,7 @@ test("a wrong image dropped on the page gets the command line's diagnosis", asyn
 
 test("a depth image dropped under a name that says nothing is judged as depth, as the command line judges it", async () => {
   const scene = path.resolve(env.scenes, "scene1_04.txt");
-  const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_04.txt`);
-  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_04.txt");
-  await settled(page);
+  const { page, context } = await openScene1_04();
   // The course's depth image of scene1_04, written top row first, named "mine.tga": only its
   // content (every pixel grey) says it is a depth image; the page's kind is "colour".
   const folder = temporaryFolder();
@@ -169,9 +173,7 @@ test("a depth image dropped under a name that says nothing is judged as depth, a
 
 test("a colour and a depth image dropped at once are judged together, as the command line judges the pair", async () => {
   const scene = path.resolve(env.scenes, "scene1_04.txt");
-  const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_04.txt`);
-  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_04.txt");
-  await settled(page);
+  const { page, context } = await openScene1_04();
   // A student's two images of the course's line, each written top row first.
   const folder = temporaryFolder();
   raytracer(["-input", scene, "-size", "200", "200", "-output", "c.tga", "-depth", "12", "17", "d.tga"], folder);
@@ -189,9 +191,7 @@ test("a colour and a depth image dropped at once are judged together, as the com
 
 test("an image picked where the browser lets the page keep it is compared again when it changes", async () => {
   const scene = path.resolve(env.scenes, "scene1_04.txt");
-  const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_04.txt`);
-  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_04.txt");
-  await settled(page);
+  const { page, context } = await openScene1_04();
   const folder = temporaryFolder();
   raytracer(["-input", scene, "-size", "200", "200", "-output", "output1_04.tga"], folder);
   const right = fs.readFileSync(path.join(folder, "output1_04.tga"));
@@ -264,9 +264,7 @@ test("an export downloads the files the command line writes for the same request
 });
 
 test("Course files downloads the bytes of the course's own command line, and says its range", async () => {
-  const { page, context } = await openViewer(browser, `${site.url}?scene=scenes/scene1_04.txt`);
-  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_04.txt");
-  await settled(page);
+  const { page, context } = await openScene1_04();
   const downloads = [];
   page.on("download", (download) => downloads.push(download));
   // The left panel scrolled to its end: "Course files" is its last button, where the 1280×720
