@@ -17,10 +17,8 @@
 #   cargo xtask release sums      SHA256SUMS of what target/artefacts/ holds;
 #   cargo xtask release sizes     docs/release-sizes.md: each archive's size, and the
 #     programs' sizes unpacked, from what target/artefacts/ holds.
-# The programs are the release profile the benchmarks measure, stripped of symbols and debug
-# information by the system's strip: Linux's is the release build itself (the one the page's
-# tests make), Windows' and macOS' the `dist` profile (Cargo.toml: release without debug
-# information). Installs what it lacks (cargo-about, the Windows toolchain).
+# The programs are built with the `dist` profile (Cargo.toml): the release profile the
+# benchmarks measure, without debug information; the system's strip removes the symbols. Installs what it lacks (cargo-about, the Windows toolchain).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
@@ -71,14 +69,11 @@ zipped() {
 
 linux() {
   [ -f "$dist/THIRD-PARTY-LICENSES.html" ] || notice
-  # The release build itself (line tables only, which change no code), stripped of its symbols
-  # and debug information: the same program as the `dist` profile's, and the build the page's
-  # tests (cargo xtask web test) have already made, so CI does not build it twice.
-  cargo build --release --bin raytracer
+  cargo build --profile dist --bin raytracer
   local name="raytracer-$version-x86_64-linux"
   rm -rf "${dist:?}/$name"
   mkdir -p "$dist/$name"
-  strip -o "$dist/$name/raytracer" target/release/raytracer
+  strip -o "$dist/$name/raytracer" target/dist/raytracer
   extras "$dist/$name"
   tarball "$name"
 }
