@@ -321,3 +321,44 @@ fn their_two_images_dropped_at_once_are_judged_together_as_the_command_line_judg
     });
     assert!(common::label_shown(&harness, "match: yes"));
 }
+
+/// Their file, taken for a depth image by its content, written again as a colour image: it is
+/// recognised again (the kind was guessed, not clicked) and judged alone, never beside its own
+/// older version.
+#[test]
+fn their_file_written_again_as_the_other_kind_is_recognised_again_and_judged_alone() {
+    use raytracer::app::compare::ImageKind;
+    let folder = tempfile::tempdir().unwrap();
+    compare_run::write_mistaken(folder.path(), raytracer::compare::MistakeSet::NONE, "png");
+    let mine = folder.path().join("mine.png");
+    std::fs::copy(folder.path().join("depth.png"), &mine).unwrap();
+    let mut harness = viewer(Some(compare_run::path(compare_run::SCENE)));
+    common::compare_image(&mut harness, &mine.display().to_string());
+    assert_eq!(harness.state().comparison().unwrap().kind, ImageKind::Depth);
+    let again = folder.path().join("again.png");
+    std::fs::copy(folder.path().join("colour.png"), &again).unwrap();
+    std::fs::rename(&again, &mine).unwrap();
+    let deadline = Instant::now() + Duration::from_secs(60);
+    loop {
+        harness.step();
+        let app = harness.state();
+        if !app.comparing()
+            && app
+                .comparison()
+                .is_some_and(|c| c.kind == ImageKind::Colour)
+        {
+            break;
+        }
+        assert!(
+            Instant::now() < deadline,
+            "not judged again as a colour image"
+        );
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let comparison = harness.state().comparison().unwrap();
+    assert!(
+        comparison.paired.is_none(),
+        "paired with its own older version"
+    );
+    assert!(comparison.matches());
+}

@@ -11,7 +11,7 @@ use std::path::Path;
 
 use super::actions::{Action, Write};
 use super::background::Task;
-use super::compare::dropped_image_kind;
+use super::compare::{ImageKind, dropped_image_kind};
 use super::dialogs::{DialogKind, PendingDialog};
 use super::status::Status;
 use super::viewer::ViewerApp;
@@ -48,10 +48,18 @@ impl ViewerApp {
         if path.as_os_str().is_empty() {
             return;
         }
-        // An image (`.png`, `.tga`) is compared, the kind its name says, else the one chosen;
-        // anything else is opened as a scene.
-        match dropped_image_kind(&path.to_string_lossy()) {
-            Some(kind) => self.apply(Action::CompareImage(path.to_path_buf(), kind)),
+        // An image (`.png`, `.tga`) is compared: a depth image where its file name says so, else
+        // as the kind chosen (its content decides unless that was clicked); anything else is
+        // opened as a scene.
+        let name = path.file_name().unwrap_or_default().to_string_lossy();
+        match dropped_image_kind(&name) {
+            Some(ImageKind::Depth) => {
+                self.apply(Action::CompareImage(path.to_path_buf(), ImageKind::Depth));
+            }
+            Some(ImageKind::Colour) => {
+                let kind = self.compare.kind;
+                self.apply(Action::CompareImage(path.to_path_buf(), kind));
+            }
             None => self.open(path),
         }
     }

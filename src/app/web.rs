@@ -18,7 +18,7 @@ use crate::compare::their_image::decode_their_image;
 use crate::platform::browser::{download, download_name, scene_parameter, set_title};
 
 use super::actions::{Action, Write};
-use super::compare::{CompareSource, dropped_image_kind};
+use super::compare::dropped_image_kind;
 use super::dialogs::DialogKind;
 mod page_files;
 
@@ -59,8 +59,10 @@ impl ViewerApp {
         set_title(title);
     }
 
-    /// Takes in the files that came to the page since the last frame.
+    /// Takes in the files that came to the page since the last frame. The watches stop when the
+    /// comparison is closed (by the user, or by another scene opened).
     pub(super) fn poll_platform(&mut self) {
+        self.page.stop_watching_at(self.compare.closes);
         for incoming in self.page.take() {
             let bytes: Arc<[u8]> = match incoming.bytes {
                 Ok(bytes) => bytes.into(),
@@ -82,15 +84,9 @@ impl ViewerApp {
                 Purpose::Open => None,
                 Purpose::Compare(kind) => Some(kind),
                 Purpose::ByName => dropped_image_kind(&name),
-                // A watched image written again is compared while it is on screen (or being
-                // judged); once closed, or another scene opened, its watch stops.
-                Purpose::Rewritten(kind) => {
-                    if !self.compare.busy() && !self.shows(Path::new(&name)) {
-                        self.page.stop_watching(&name);
-                        continue;
-                    }
-                    Some(kind)
-                }
+                // A watched image written again is compared again (its watch stops when the
+                // comparison is closed or another scene opened: below).
+                Purpose::Rewritten(kind) => Some(kind),
             };
             let Some(kind) = compared_as else {
                 self.open_bytes(&name, bytes);
@@ -101,14 +97,6 @@ impl ViewerApp {
             let status = self.compare.with_image(&against, name.into(), kind, read);
             self.say(status);
         }
-    }
-
-    /// Whether an image named `path` is among the compared images on screen.
-    fn shows(&self, path: &Path) -> bool {
-        self.compare.current.as_ref().is_some_and(|current| {
-            let mut images = current.pixels.images();
-            images.any(|image| matches!(&image.source, CompareSource::File(p) if p == path))
-        })
     }
 
     /// Opens the scene at `path`: in a page, the path field holds an address on the page's

@@ -108,9 +108,10 @@ impl Job {
                 recognised_kind(&scene, &path, &theirs, given.kind)
             };
             // A partner that cannot be read (gone, or being written) leaves this one alone.
+            // (Never the same file: an image is not judged with its own older version.)
             let partner = partners
                 .into_iter()
-                .find(|partner| partner.kind != kind)
+                .find(|partner| partner.kind != kind && partner.path != path)
                 .and_then(|partner| {
                     let image = (partner.read)(&partner.path).ok()?;
                     (image.dimensions() == theirs.dimensions()).then_some((partner.path, image))
@@ -200,11 +201,6 @@ impl Inputs {
         self.queued = Some(given);
     }
 
-    /// An image waits to be judged.
-    pub(crate) fn waiting(&self) -> bool {
-        self.queued.is_some()
-    }
-
     /// Whether a watched file changed (and settled) since the last look, and else how long to
     /// wait for one still settling.
     pub(crate) fn poll(&self) -> (bool, Option<Duration>) {
@@ -232,9 +228,27 @@ impl Inputs {
             return Some(Job::beside(queued, current));
         }
         if changed {
-            let mut files = self.watched.iter().map(|watched| {
-                let read = read_their_image_settled;
-                Given::new(watched.path.clone(), watched.kind, watched.forced, read)
+            // A partner that cannot be read now (being written, or gone) stays as it is on
+            // screen, so the pair holds.
+            let shown = on_screen(current);
+            let mut shown: Vec<Option<Given>> = shown.into_iter().map(Some).collect();
+            let mut files = self.watched.iter().enumerate().map(|(index, watched)| {
+                let path = watched.path.clone();
+                let fallback = (index > 0)
+                    .then(|| {
+                        shown
+                            .iter_mut()
+                            .find(|g| g.as_ref().is_some_and(|g| g.path == path))
+                    })
+                    .flatten()
+                    .and_then(Option::take);
+                let read = move |file: &Path| {
+                    read_their_image_settled(file).or_else(|error| match fallback {
+                        Some(given) => (given.read)(file),
+                        None => Err(error),
+                    })
+                };
+                Given::new(path, watched.kind, watched.forced, read)
             });
             let given = files.next()?;
             let mut partners: Vec<Given> = files.collect();
@@ -304,9 +318,8 @@ impl Inputs {
                 // An image waiting to be judged stays watched.
                 return queued.as_ref() == Some(&watched.path);
             };
-            if *kind != watched.kind {
-                (watched.kind, watched.forced) = (*kind, true);
-            }
+            // The kind it was judged as; still recognised again at each write unless clicked.
+            watched.kind = *kind;
             true
         });
         self.watched.sort_by_key(|watched| {

@@ -74,6 +74,9 @@ pub(crate) struct CompareState {
     pub(crate) gallery: gallery::Gallery,
     /// Their images given and watched ([`given::Inputs`]).
     inputs: given::Inputs,
+    /// How many times the comparison was closed, by the user or by another scene opened (a
+    /// page stops its watches at each).
+    pub(crate) closes: u64,
 }
 /// The pictures of one compared image: theirs, and the heat map of the difference (its
 /// unexplained pixels marked), named with `suffix`.
@@ -152,6 +155,7 @@ impl CompareState {
     pub(crate) fn close(&mut self) {
         self.drop_result();
         self.inputs.clear();
+        self.closes += 1;
     }
 
     /// Takes the comparison off the screen (a failed one, or one closed); their file stays
@@ -476,7 +480,8 @@ impl CompareState {
             }
             Err(error) => *status = Some(error),
         }
-        if self.inputs.waiting() && !self.busy() {
+        // The next look comes at once: an image waits, or a watched file changed meanwhile.
+        if !self.busy() {
             ctx.request_repaint();
         }
     }

@@ -49,6 +49,8 @@ pub(crate) struct Page {
     inbox: Rc<RefCell<Vec<Incoming>>>,
     /// The images picked and watched, by name, each with the flag that stops its watch.
     watches: Rc<RefCell<Vec<Watch>>>,
+    /// The comparison's count of closes when the watches were last looked at.
+    closes_seen: Rc<Cell<u64>>,
 }
 
 impl Page {
@@ -225,8 +227,18 @@ impl Page {
         stop
     }
 
-    /// Stops watching the image `name` (it left the screen).
-    pub(crate) fn stop_watching(&self, name: &str) {
+    /// Stops every watch when the comparison's count of closes (`closes`) has moved since the
+    /// last look: the images watched were closed, or another scene opened.
+    pub(crate) fn stop_watching_at(&self, closes: u64) {
+        if self.closes_seen.replace(closes) != closes {
+            for (_, stop) in self.watches.borrow_mut().drain(..) {
+                stop.set(true);
+            }
+        }
+    }
+
+    /// Stops watching the image `name` (picked again).
+    fn stop_watching(&self, name: &str) {
         self.watches.borrow_mut().retain(|(watched, stop)| {
             let same = watched == name;
             if same {
