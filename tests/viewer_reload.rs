@@ -310,10 +310,92 @@ fn their_two_images_dropped_at_once_are_judged_together_as_the_command_line_judg
         .collect();
     names.sort();
     assert_eq!(names, said, "the viewer's answer is the command line's");
-    assert!(common::label_shown(&harness, "judged together with the"));
+    // Each sentence of the pair, its counts measured on the files: the exact images written by
+    // the binary at the same size and range, compared byte by byte with theirs.
+    let scene = compare_run::path(compare_run::SCENE);
+    let arguments = ["-input", scene.to_str().unwrap(), "-size", "120", "80"];
+    let exact = [
+        "-output",
+        "exact.tga",
+        "-depth",
+        "6",
+        "10",
+        "exact_depth.tga",
+    ];
+    let written = compare_run::run(folder.path(), &[&arguments[..], &exact[..]].concat());
+    assert!(written.status.success());
+    let read = |name: &str| image::open(folder.path().join(name)).unwrap().to_rgb8();
+    let images = [
+        ("colour", read("colour.tga"), read("exact.tga")),
+        ("depth", read("depth.tga"), read("exact_depth.tga")),
+    ];
+    let differing = |(_, theirs, exact): &(&str, image::RgbImage, image::RgbImage)| {
+        theirs
+            .pixels()
+            .zip(exact.pixels())
+            .filter(|(a, b)| a != b)
+            .count()
+    };
+    let (colour, depth) = (differing(&images[0]), differing(&images[1]));
+    assert!(colour > 0 && depth > 0);
+    let other = comparison.paired.as_ref().unwrap();
+    let named = format!(
+        "judged together with the {} image {}, as the grader does",
+        if other.kind == raytracer::app::compare::ImageKind::Depth {
+            "depth"
+        } else {
+            "colour"
+        },
+        other.name()
+    );
+    assert!(common::label_shown(&harness, &named), "{named}");
+    for (kind, count) in [("colour", colour), ("depth", depth)] {
+        let counted = format!("{kind}: pixels differing: {count} (");
+        assert!(common::label_shown(&harness, &counted), "{counted}");
+    }
+    assert!(common::label_shown(
+        &harness,
+        "match: no (colour differs, depth differs)"
+    ));
+    let (message, error) = harness.state().message().unwrap();
+    let said = format!(
+        "compared {} with {}, together: differs",
+        comparison.name(),
+        other.name()
+    );
+    assert!(!error && message == said, "{message}");
     for caption in ["colour: difference", "depth: difference"] {
         assert!(common::label_shown(&harness, caption), "{caption}");
     }
+    // The probe over a pixel where both differ gives both images' values, each named.
+    let (x, row) = (0..120 * 80)
+        .map(|i| (i % 120, i / 120))
+        .find(|&(x, row)| {
+            images
+                .iter()
+                .all(|(_, t, e)| t.get_pixel(x, row) != e.get_pixel(x, row))
+        })
+        .unwrap();
+    let shown = harness.get_by_label("colour image").rect();
+    let fit = (shown.width() / 120.0).min(shown.height() / 80.0);
+    let at = egui::vec2((x as f32 + 0.5) * fit, (row as f32 + 0.5) * fit);
+    harness.hover_at(shown.min + at);
+    harness.run_steps(3);
+    for (kind, theirs, exact) in &images {
+        let rgb = |image: &image::RgbImage| {
+            let [r, g, b] = image.get_pixel(x, row).0;
+            format!("{r} {g} {b}")
+        };
+        let line = format!(
+            "{kind} theirs {} · exact {} · off by",
+            rgb(theirs),
+            rgb(exact)
+        );
+        assert!(common::label_shown(&harness, &line), "no probe line {line}");
+    }
+    // Both captions say the pictures were judged together.
+    let together = harness.query_all_by_label_contains(", judged together (Shift+B");
+    assert_eq!(together.count(), 2);
     compare_run::write_mistaken(folder.path(), MistakeSet::NONE, "tga");
     wait_for_pair(&mut harness, |c| {
         c.images()
