@@ -230,25 +230,18 @@ impl Inputs {
         if changed {
             // A partner that cannot be read now (being written, or gone) stays as it is on
             // screen, so the pair holds.
-            let shown = on_screen(current);
-            let mut shown: Vec<Option<Given>> = shown.into_iter().map(Some).collect();
+            let shown_pixels = |path: &Path| {
+                let mut images = current.into_iter().flat_map(ComparisonPixels::images);
+                let image =
+                    images.find(|i| matches!(&i.source, CompareSource::File(p) if p == path));
+                image.map(|image| image.theirs.clone())
+            };
             let mut files = self.watched.iter().enumerate().map(|(index, watched)| {
-                let path = watched.path.clone();
-                let fallback = (index > 0)
-                    .then(|| {
-                        shown
-                            .iter_mut()
-                            .find(|g| g.as_ref().is_some_and(|g| g.path == path))
-                    })
-                    .flatten()
-                    .and_then(Option::take);
+                let fallback = (index > 0).then(|| shown_pixels(&watched.path)).flatten();
                 let read = move |file: &Path| {
-                    read_their_image_settled(file).or_else(|error| match fallback {
-                        Some(given) => (given.read)(file),
-                        None => Err(error),
-                    })
+                    read_their_image_settled(file).or_else(|error| fallback.ok_or(error))
                 };
-                Given::new(path, watched.kind, watched.forced, read)
+                Given::new(watched.path.clone(), watched.kind, watched.forced, read)
             });
             let given = files.next()?;
             let mut partners: Vec<Given> = files.collect();
@@ -265,40 +258,44 @@ impl Inputs {
                 range,
             });
         }
-        let pixels = current?;
-        let mut images = on_screen(Some(pixels));
-        if images.is_empty() {
+        // Asked at every frame: the images on screen are copied only when a job is made.
+        let pixels = current.filter(|p| matches!(p.source, CompareSource::File(_)))?;
+        let clicked = clicked.take_if(|kind| *kind != pixels.kind);
+        let has_depth = pixels.images().any(|i| i.kind == ImageKind::Depth);
+        let range_moved = has_depth && pixels.view.depth_range != depth_range;
+        if clicked.is_none() && !range_moved {
             return None;
         }
+        let mut images = on_screen(Some(pixels));
         let first = images.remove(0);
-        if let Some(kind) = clicked.take_if(|kind| *kind != first.kind) {
-            for watched in &mut self.watched {
-                let now = if watched.path == first.path {
-                    kind
-                } else {
-                    kind.other()
-                };
-                (watched.kind, watched.forced) = (now, true);
-            }
-            let partners = images
-                .into_iter()
-                .map(|partner| Given {
-                    kind: kind.other(),
-                    ..partner
-                })
-                .collect();
-            let given = Given { kind, ..first };
+        let Some(kind) = clicked else {
             return Some(Job {
-                given,
-                partners,
-                range: None,
+                given: first,
+                partners: images,
+                range: Some(depth_range),
             });
+        };
+        // The other kind clicked: the image is judged as that at once, its partner as the other.
+        for watched in &mut self.watched {
+            let now = if watched.path == first.path {
+                kind
+            } else {
+                kind.other()
+            };
+            (watched.kind, watched.forced) = (now, true);
         }
-        let has_depth = pixels.images().any(|i| i.kind == ImageKind::Depth);
-        (has_depth && pixels.view.depth_range != depth_range).then_some(Job {
-            given: first,
-            partners: images,
-            range: Some(depth_range),
+        let partners = images
+            .into_iter()
+            .map(|partner| Given {
+                kind: kind.other(),
+                ..partner
+            })
+            .collect();
+        let given = Given { kind, ..first };
+        Some(Job {
+            given,
+            partners,
+            range: None,
         })
     }
 
