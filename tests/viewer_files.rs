@@ -420,20 +420,6 @@ fn course_files_of_a_scene_not_the_courses_say_which_range_they_used() {
     );
 }
 
-/// A file dropped on the window, as the desktop's integration hands it over: by its path.
-#[derive(Debug)]
-struct DroppedOnTheWindow(std::path::PathBuf);
-
-impl egui::DroppedFile for DroppedOnTheWindow {
-    fn path(&self) -> &Path {
-        &self.0
-    }
-
-    fn bytes(&self) -> Result<Vec<u8>, String> {
-        std::fs::read(&self.0).map_err(|error| error.to_string())
-    }
-}
-
 #[test]
 fn a_scene_file_dropped_on_the_window_opens() {
     let folder = tempfile::tempdir().unwrap();
@@ -444,7 +430,9 @@ fn a_scene_file_dropped_on_the_window_opens() {
     harness
         .input_mut()
         .dropped_files
-        .push(std::sync::Arc::new(DroppedOnTheWindow(dropped.clone())));
+        .push(std::sync::Arc::new(common::DroppedOnTheWindow(
+            dropped.clone(),
+        )));
     settle(&mut harness);
     assert_eq!(
         harness.state().loaded_scene().path.as_deref(),

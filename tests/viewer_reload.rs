@@ -236,20 +236,6 @@ fn their_image_still_being_written_is_waited_for() {
     assert!(written);
 }
 
-/// A file dropped on the window, as the desktop's integration hands it over: by its path.
-#[derive(Debug)]
-struct Dropped(std::path::PathBuf);
-
-impl egui::DroppedFile for Dropped {
-    fn path(&self) -> &std::path::Path {
-        &self.0
-    }
-
-    fn bytes(&self) -> Result<Vec<u8>, String> {
-        std::fs::read(&self.0).map_err(|error| error.to_string())
-    }
-}
-
 /// Steps until the comparison on screen is a pair judged, and `condition` holds of it (at most
 /// 120 s: each pair is diagnosed).
 fn wait_for_pair(
@@ -286,7 +272,7 @@ fn their_two_images_dropped_at_once_are_judged_together_as_the_command_line_judg
     assert_eq!(said, ["depth-reversed", "last-wins"]);
     let mut harness = viewer(Some(compare_run::path(compare_run::SCENE)));
     for name in ["colour.tga", "depth.tga"] {
-        let file = Dropped(folder.path().join(name));
+        let file = common::DroppedOnTheWindow(folder.path().join(name));
         harness
             .input_mut()
             .dropped_files

@@ -168,3 +168,17 @@ pub(crate) fn compare_image(harness: &mut Harness<'static, ViewerApp>, path: &st
 pub(crate) fn label_shown(harness: &Harness<'static, ViewerApp>, text: &str) -> bool {
     harness.query_by_label_contains(text).is_some()
 }
+
+/// A file dropped on the window, as the desktop's integration hands it over: by its path.
+#[derive(Debug)]
+pub(crate) struct DroppedOnTheWindow(pub(crate) PathBuf);
+
+impl egui::DroppedFile for DroppedOnTheWindow {
+    fn path(&self) -> &Path {
+        &self.0
+    }
+
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        std::fs::read(&self.0).map_err(|error| error.to_string())
+    }
+}
