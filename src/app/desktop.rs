@@ -27,6 +27,16 @@ impl ViewerApp {
         }
     }
 
+    /// The window loads the scene it was started on in the background and shows the default
+    /// scene meanwhile: nothing to wait for.
+    #[expect(
+        clippy::unused_self,
+        reason = "a method, as each seam's are: the caller names no seam"
+    )]
+    pub(super) fn first_scene_on_its_way(&self) -> bool {
+        false
+    }
+
     /// The folder an export or the course files would have to create, which is asked for before
     /// it is.
     pub(super) fn missing_export_folder(&self, write: &Write) -> Option<PathBuf> {

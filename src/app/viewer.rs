@@ -477,9 +477,11 @@ impl eframe::App for ViewerApp {
             log.missing_glyphs(&ctx, &self.scene.loaded.name());
         }
         self.viewing.observe();
-        let wanted = self.wanted();
-        self.frames
-            .submit_if_changed(&self.scene.loaded.scene, wanted, &self.ctx);
+        if !self.first_scene_on_its_way() {
+            let wanted = self.wanted();
+            self.frames
+                .submit_if_changed(&self.scene.loaded.scene, wanted, &self.ctx);
+        }
         if layout::busy(&self.frames, &self.writes, &self.compare) {
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }

@@ -31,11 +31,18 @@ use page_files::Purpose;
 
 impl ViewerApp {
     /// A page opens the scene its address names (`?scene=`), not the last one (that was a file
-    /// the page has no access to any more); it has no command line.
-    pub(super) fn open_first(&mut self, _input: Option<std::path::PathBuf>) {
-        if let Some(address) = scene_parameter() {
-            self.page.fetch_scene(&address, &self.ctx);
-        }
+    /// the page has no access to any more); it has no command line. That scene is asked for
+    /// before the viewer starts (`WebHandle::start`), which gives the viewer the page it comes to.
+    #[expect(
+        clippy::unused_self,
+        reason = "a method, as each seam's are: the caller names no seam"
+    )]
+    pub(super) fn open_first(&mut self, _input: Option<std::path::PathBuf>) {}
+
+    /// True while the scene the page's address names is on its way: until it comes (or fails),
+    /// the page renders no frame of the embedded default scene, which would only pass by.
+    pub(super) fn first_scene_on_its_way(&self) -> bool {
+        self.frames.shown.is_none() && self.page.fetching_scene()
     }
 
     /// A page's files are downloads: there is no folder an export would have to create.
@@ -49,7 +56,7 @@ impl ViewerApp {
 
     /// A file dropped on the page: the page gives its name, and its bytes are read later.
     pub(super) fn open_dropped(&mut self, file: egui::DroppedFileHandle) {
-        self.page.read_dropped(file, &self.ctx);
+        self.page.read_dropped(file);
     }
 
     /// Names the page (and eframe's viewport) `title`.
@@ -102,20 +109,19 @@ impl ViewerApp {
     /// Opens the scene at `path`: in a page, the path field holds an address on the page's
     /// site, fetched.
     pub(super) fn open_path(&mut self, path: &std::path::Path) {
-        self.page.fetch_scene(&path.to_string_lossy(), &self.ctx);
+        self.page.fetch_scene(&path.to_string_lossy(), None);
     }
 
     /// In a browser page: the browser's file chooser to open a scene or an image; export and save
     /// download at once (the browser asks where, or saves to its downloads folder).
     pub(super) fn open_dialog(&mut self, kind: DialogKind) {
         let chosen = match kind {
-            DialogKind::Open => self.page.pick(Purpose::Open, ".txt,text/plain", &self.ctx),
+            DialogKind::Open => self.page.pick(Purpose::Open, ".txt,text/plain"),
             // Where the browser can, the image picked is watched, as the desktop watches it.
-            DialogKind::CompareImage(kind) if self.page.pick_watched(kind, &self.ctx) => Ok(()),
-            DialogKind::CompareImage(kind) => {
-                self.page
-                    .pick(Purpose::Compare(kind), ".png,.tga,image/png", &self.ctx)
-            }
+            DialogKind::CompareImage(kind) if self.page.pick_watched(kind) => Ok(()),
+            DialogKind::CompareImage(kind) => self
+                .page
+                .pick(Purpose::Compare(kind), ".png,.tga,image/png"),
             DialogKind::Export => {
                 let base = std::path::PathBuf::from(self.settings.export.path.trim());
                 self.apply(Action::Write(Write::ExportTo(base)));
@@ -157,6 +163,11 @@ impl ViewerApp {
     }
 }
 
+/// How long the viewer waits, at most, for the scene the page's address names before it starts,
+/// milliseconds. A scene that comes later is drawn when it comes (the page meanwhile draws no
+/// frame of the default scene).
+const FIRST_SCENE_WAIT_MS: i32 = 200;
+
 /// What the page's script holds: it starts the viewer on a canvas and, for tests and tools, reads
 /// what is on screen (the viewer's canvas has no DOM to query).
 #[wasm_bindgen]
@@ -177,17 +188,28 @@ impl WebHandle {
     }
 
     /// Starts the viewer on `canvas`: the embedded default scene, or the scene the page's
-    /// address names (`?scene=`).
-    pub async fn start(&self, canvas: web_sys::HtmlCanvasElement) -> Result<(), JsValue> {
+    /// address names (`?scene=`), whose fetch the page's script may have made already (`asked`,
+    /// made beside the .wasm's). That scene is given up to [`FIRST_SCENE_WAIT_MS`] to come
+    /// before eframe starts, so that it is the first frame drawn (tests/web/first_frame.mjs).
+    pub async fn start(
+        &self,
+        canvas: web_sys::HtmlCanvasElement,
+        asked: Option<js_sys::Promise>,
+    ) -> Result<(), JsValue> {
+        let page = Page::default();
+        if let Some(address) = scene_parameter() {
+            page.fetch_scene(&address, asked);
+            page.scenes_in(FIRST_SCENE_WAIT_MS).await;
+        }
         self.runner
             .start(
                 canvas,
                 eframe::WebOptions::default(),
-                Box::new(|cc| {
-                    Ok(Box::new(ViewerApp::new(
-                        cc,
-                        crate::cli::ViewerRequest::default(),
-                    )))
+                Box::new(move |cc| {
+                    let mut app = ViewerApp::new(cc, crate::cli::ViewerRequest::default());
+                    page.attach(&cc.egui_ctx);
+                    app.page = page;
+                    Ok(Box::new(app))
                 }),
             )
             .await
@@ -269,6 +291,13 @@ impl WebHandle {
                 .map(|shown| vec![shown.frame.width_px, shown.frame.height_px])
         })
         .flatten()
+    }
+
+    /// Which scene the frame on screen is of: 0 for the embedded default scene the page starts
+    /// with, one more for each scene opened since.
+    pub fn frame_scene_epoch(&self) -> Option<u64> {
+        self.with_app(|app| app.frames.shown.as_ref().map(|shown| shown.scene_epoch))
+            .flatten()
     }
 
     /// The colour image on screen, 3 bytes a pixel, top row first.

@@ -38,7 +38,13 @@ pub fn same_site_url(address: &str) -> Result<String, String> {
 
 /// The bytes at `url`, or why not (an HTTP status, a network error).
 pub async fn fetch_bytes(url: &str) -> Result<Vec<u8>, String> {
-    let response: web_sys::Response = JsFuture::from(window()?.fetch_with_str(url))
+    answer_bytes(url, window()?.fetch_with_str(url)).await
+}
+
+/// The bytes of `answer`, the browser's `fetch` of `url` (made here, or by the page's script), or
+/// why not (an HTTP status, a network error).
+pub async fn answer_bytes(url: &str, answer: js_sys::Promise) -> Result<Vec<u8>, String> {
+    let response: web_sys::Response = JsFuture::from(answer)
         .await
         .map_err(|error| format!("cannot fetch {url}: {}", js_error(&error)))?
         .dyn_into()

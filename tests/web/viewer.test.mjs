@@ -85,6 +85,38 @@ test("?scene= opens a scene from the page's site, the same pixels as the native 
   await context.close();
 });
 
+test("?scene= shows that scene first: no frame of the default scene passes by while it comes, even late", async () => {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 720 } });
+  // At each of the page's frames, which scene the frame on screen is of (0: the default scene).
+  await context.addInitScript(() => {
+    window.framesSeen = [];
+    const look = () => {
+      const epoch = window.raytracer?.frame_scene_epoch();
+      if (epoch !== undefined) window.framesSeen.push(Number(epoch));
+      requestAnimationFrame(look);
+    };
+    requestAnimationFrame(look);
+  });
+  // The scene comes a second late, as from a slow site: the viewer starts without it.
+  await context.route("**/scenes/scene1_02.txt", async (route) => {
+    await new Promise((resolve) => setTimeout(resolve, 1000));
+    await route.continue();
+  });
+  const page = await context.newPage();
+  // Asked for once: by the page's script, beside the .wasm; the viewer takes that answer.
+  const asked = [];
+  page.on("request", (request) => new URL(request.url()).pathname === "/scenes/scene1_02.txt" && asked.push(request.url()));
+  await page.goto(`${site.url}?scene=scenes/scene1_02.txt`);
+  await page.waitForFunction(() => window.raytracer?.scene_name() === "scene1_02.txt", null, { timeout: 60_000 });
+  await settled(page);
+  // The scene's frame on screen has been looked at (the look runs at the page's next frame).
+  await page.waitForFunction(() => window.framesSeen.length > 0, null, { timeout: 10_000 });
+  const seen = await page.evaluate(() => window.framesSeen);
+  assert.deepEqual([...new Set(seen)], [1], "every frame on screen is of the scene the address names");
+  assert.equal(asked.length, 1, `the scene was asked for once: ${asked.join(", ")}`);
+  await context.close();
+});
+
 test("?scene= elsewhere or missing says why, and the default scene stays", async () => {
   for (const [address, expected] of [
     ["https://example.com/scene.txt", /only scenes on this page's own site/],

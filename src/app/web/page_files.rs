@@ -13,7 +13,8 @@ use wasm_bindgen_futures::JsFuture;
 
 use crate::app::compare::ImageKind;
 use crate::platform::browser::{
-    fetch_bytes, file_of, file_picker, js_error, pick_handle, same_site_url, sleep_ms, window,
+    answer_bytes, fetch_bytes, file_of, file_picker, js_error, pick_handle, same_site_url,
+    sleep_ms, window,
 };
 
 /// How often a watched image is looked at, milliseconds.
@@ -51,39 +52,43 @@ pub(crate) struct Page {
     watches: Rc<RefCell<Vec<Watch>>>,
     /// The comparison's count of closes when the watches were last looked at.
     closes_seen: Rc<Cell<u64>>,
+    /// Scenes asked of the page's site whose answer has not come yet.
+    scenes_fetching: Rc<Cell<u32>>,
+    /// The viewer, woken when a file comes; none before it starts (the scene the page's address
+    /// names is asked for before: `WebHandle::start`).
+    viewer: Rc<RefCell<Option<egui::Context>>>,
 }
 
 impl Page {
-    fn deliver(&self, incoming: Incoming, ctx: &egui::Context) {
+    /// From now on, a file that comes wakes the viewer of `ctx`.
+    pub(crate) fn attach(&self, ctx: &egui::Context) {
+        *self.viewer.borrow_mut() = Some(ctx.clone());
+    }
+
+    fn deliver(&self, incoming: Incoming) {
         self.inbox.borrow_mut().push(incoming);
-        ctx.request_repaint();
+        if let Some(ctx) = self.viewer.borrow().as_ref() {
+            ctx.request_repaint();
+        }
     }
 
     /// Reads a file dropped on the page.
-    pub(crate) fn read_dropped(&self, file: egui::DroppedFileHandle, ctx: &egui::Context) {
-        let (page, ctx) = (self.clone(), ctx.clone());
+    pub(crate) fn read_dropped(&self, file: egui::DroppedFileHandle) {
+        let page = self.clone();
         wasm_bindgen_futures::spawn_local(async move {
             let name = file_name(file.path());
             let bytes = file.bytes_async().await;
-            page.deliver(
-                Incoming {
-                    name,
-                    purpose: Purpose::ByName,
-                    bytes,
-                },
-                &ctx,
-            );
+            page.deliver(Incoming {
+                name,
+                purpose: Purpose::ByName,
+                bytes,
+            });
         });
     }
 
     /// Shows the browser's file chooser (files of `accept`, e.g. `.txt`) and reads the file
     /// chosen. Nothing comes in when the user cancels.
-    pub(crate) fn pick(
-        &self,
-        purpose: Purpose,
-        accept: &str,
-        ctx: &egui::Context,
-    ) -> Result<(), String> {
+    pub(crate) fn pick(&self, purpose: Purpose, accept: &str) -> Result<(), String> {
         let document = window()?.document().ok_or("the page has no document")?;
         let input: web_sys::HtmlInputElement = document
             .create_element("input")
@@ -92,7 +97,7 @@ impl Page {
             .map_err(|_| "cannot make a file input")?;
         input.set_type("file");
         input.set_accept(accept);
-        let (page, ctx, chooser) = (self.clone(), ctx.clone(), input.clone());
+        let (page, chooser) = (self.clone(), input.clone());
         let on_change = Closure::once_into_js(move || {
             let Some(file) = chooser.files().and_then(|files| files.get(0)) else {
                 return;
@@ -102,14 +107,11 @@ impl Page {
                     .await
                     .map(|buffer| js_sys::Uint8Array::new(&buffer).to_vec())
                     .map_err(|e| js_error(&e));
-                page.deliver(
-                    Incoming {
-                        name: file.name(),
-                        purpose,
-                        bytes,
-                    },
-                    &ctx,
-                );
+                page.deliver(Incoming {
+                    name: file.name(),
+                    purpose,
+                    bytes,
+                });
             });
         });
         input.set_onchange(Some(on_change.unchecked_ref()));
@@ -118,35 +120,44 @@ impl Page {
     }
 
     /// Fetches the scene at `address`, relative to the page. Only the page's own site is asked
-    /// (a course page links its scenes); anything else is refused with a message.
-    pub(crate) fn fetch_scene(&self, address: &str, ctx: &egui::Context) {
+    /// (a course page links its scenes); anything else is refused with a message. `asked` is
+    /// that fetch when the page's script made it already (`WebHandle::start`).
+    pub(crate) fn fetch_scene(&self, address: &str, asked: Option<js_sys::Promise>) {
         let name = address.rsplit('/').next().unwrap_or(address).to_owned();
         let url = match same_site_url(address) {
             Ok(url) => url,
             Err(error) => {
-                self.deliver(
-                    Incoming {
-                        name,
-                        purpose: Purpose::Open,
-                        bytes: Err(error),
-                    },
-                    ctx,
-                );
+                self.deliver(Incoming {
+                    name,
+                    purpose: Purpose::Open,
+                    bytes: Err(error),
+                });
                 return;
             }
         };
-        let (page, ctx) = (self.clone(), ctx.clone());
+        let page = self.clone();
+        self.scenes_fetching.set(self.scenes_fetching.get() + 1);
         wasm_bindgen_futures::spawn_local(async move {
-            let bytes = fetch_bytes(&url).await;
-            page.deliver(
-                Incoming {
-                    name,
-                    purpose: Purpose::Open,
-                    bytes,
-                },
-                &ctx,
-            );
+            let bytes = match asked {
+                Some(answer) => answer_bytes(&url, answer).await,
+                None => fetch_bytes(&url).await,
+            };
+            page.scenes_fetching.set(page.scenes_fetching.get() - 1);
+            page.deliver(Incoming {
+                name,
+                purpose: Purpose::Open,
+                bytes,
+            });
         });
+    }
+
+    /// Waits until no scene is on its way, or `most_ms` milliseconds have passed.
+    pub(crate) async fn scenes_in(&self, most_ms: i32) {
+        let mut waited_ms = 0;
+        while self.fetching_scene() && waited_ms < most_ms {
+            sleep_ms(5).await;
+            waited_ms += 5;
+        }
     }
 
     /// In a browser that has a file picker with lasting access to the file chosen (Chromium's
@@ -154,25 +165,22 @@ impl Page {
     /// it: looked at every [`WATCH_INTERVAL_MS`], read again once it has changed and its time and
     /// size have held for one look, and compared again. `false` where the browser has no such
     /// picker (the file input serves, with no watch).
-    pub(crate) fn pick_watched(&self, kind: ImageKind, ctx: &egui::Context) -> bool {
+    pub(crate) fn pick_watched(&self, kind: ImageKind) -> bool {
         let Some(picker) = file_picker() else {
             return false;
         };
-        let (page, ctx) = (self.clone(), ctx.clone());
+        let page = self.clone();
         wasm_bindgen_futures::spawn_local(async move {
             let handle = match pick_handle(&picker).await {
                 Ok(Some(handle)) => handle,
                 Ok(None) => return,
                 Err(error) => {
                     let (name, purpose) = ("image".to_owned(), Purpose::Compare(kind));
-                    page.deliver(
-                        Incoming {
-                            name,
-                            purpose,
-                            bytes: Err(error),
-                        },
-                        &ctx,
-                    );
+                    page.deliver(Incoming {
+                        name,
+                        purpose,
+                        bytes: Err(error),
+                    });
                     return;
                 }
             };
@@ -196,14 +204,11 @@ impl Page {
                             .map(|buffer| js_sys::Uint8Array::new(&buffer).to_vec())
                             .map_err(|e| js_error(&e));
                         let name = name.clone();
-                        page.deliver(
-                            Incoming {
-                                name,
-                                purpose,
-                                bytes,
-                            },
-                            &ctx,
-                        );
+                        page.deliver(Incoming {
+                            name,
+                            purpose,
+                            bytes,
+                        });
                         delivered = Some(stamp);
                     }
                     seen = Some(stamp);
@@ -249,6 +254,11 @@ impl Page {
     }
 
     /// Nothing came in since the last frame's look.
+    /// True while a scene asked of the page's site has not come (its bytes or its error).
+    pub(crate) fn fetching_scene(&self) -> bool {
+        self.scenes_fetching.get() > 0
+    }
+
     pub(crate) fn inbox_empty(&self) -> bool {
         self.inbox.borrow().is_empty()
     }
