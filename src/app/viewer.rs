@@ -477,10 +477,9 @@ impl eframe::App for ViewerApp {
             log.missing_glyphs(&ctx, &self.scene.loaded.name());
         }
         self.viewing.observe();
+        let (scene, wanted) = (&self.scene.loaded.scene, self.wanted());
         if !self.first_scene_on_its_way() {
-            let wanted = self.wanted();
-            self.frames
-                .submit_if_changed(&self.scene.loaded.scene, wanted, &self.ctx);
+            self.frames.submit_if_changed(scene, wanted, &self.ctx);
         }
         if layout::busy(&self.frames, &self.writes, &self.compare) {
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
