@@ -16,7 +16,7 @@ start=$(date +%s.%N)
 cargo build --release --quiet
 build=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
 start=$(date +%s.%N)
-if ! cargo xtask test --quiet >"$work/test.log" 2>&1; then
+if ! cargo xtask test >"$work/test.log" 2>&1; then
   # Say what failed: the clone and its log go with the temporary folder.
   echo "the test suite (cargo xtask test) failed on the fresh clone; the end of its log:" >&2
   tail -n 60 "$work/test.log" >&2
@@ -36,3 +36,14 @@ passed=$(grep -o '[0-9]* passed' "$work/test.log" | awk '{ n += $1 } END { print
   echo "| the test suite, its debug build included | \`cargo xtask test\` ($passed tests) | $(minutes "$tests") min ($(seconds "$tests") s) |"
 } > "$repository/docs/setup-times.md"
 cat "$repository/docs/setup-times.md"
+# Where the test command's time went, by test binary (docs/test-times.md), and the log's lines it
+# was read from (docs/test-times.log).
+grep -E '^ *Running |^test result:|Finished `test` profile' "$work/test.log" \
+  | awk '/Finished `test` profile/ { if (++builds == 2) exit } { print }' > "$repository/docs/test-times.log"
+bash xtask/reports/test-times.sh "$repository/docs/test-times.log" \
+  "Where the test command's time goes ($(nproc) cores, a fresh clone, $(date -u +%Y-%m-%d))" \
+  "Read by \`bash xtask/reports/test-times.sh docs/test-times.log\` from the log of \`cargo xtask
+test\` (the README's test command) on the fresh clone of \`cargo xtask report setup-times\`
+([setup-times.md](setup-times.md)). The log's lines it reads are in [test-times.log](test-times.log)." \
+  > "$repository/docs/test-times.md"
+cat "$repository/docs/test-times.md"
