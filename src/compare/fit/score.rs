@@ -24,6 +24,10 @@ pub const DEPTH_LEVELS_UNNOTICED: u8 = 1;
 /// counts them.
 pub const MAX_CACHED_HITS: usize = 6;
 
+/// How many counts a scorer keeps ([`Scorer::count_beyond`]); past it, it starts again (a key
+/// is a model's text, a few hundred bytes).
+const MAX_KEPT_COUNTS: usize = 2048;
+
 /// Pixels of an image above which candidates are screened, and maps polished, on a sample of
 /// its pixels first ([`Scorer::samples`]).
 pub const SAMPLED_ABOVE_PX: usize = 250_000;
@@ -123,6 +127,11 @@ pub struct Scorer<'a> {
     pub discs: Discs,
     hits: HashMap<(HitKey, u32), Arc<Hits>>,
     order: Vec<(HitKey, u32)>,
+    /// Counts made ([`Self::count_beyond`]), by the model (its exact `Debug` text: every field,
+    /// each number to the bit) and what was counted: the fit asks for the same count again and
+    /// again (three times in four on a course scene's depth image), and a count is a pass over
+    /// every pixel.
+    counted: HashMap<(String, u32, bool, u8), usize>,
     /// Models scored so far.
     pub evaluated: usize,
 }
@@ -137,6 +146,7 @@ impl<'a> Scorer<'a> {
             discs: Discs::of(scene, view),
             hits: HashMap::new(),
             order: Vec::new(),
+            counted: HashMap::new(),
             evaluated: 0,
         }
     }
@@ -263,6 +273,26 @@ impl<'a> Scorer<'a> {
     /// theirs: the colour image (where `with_colour`) by any level, the depth image by more than
     /// `depth_levels`.
     fn count_beyond(
+        &mut self,
+        model: &Model,
+        stride: u32,
+        with_colour: bool,
+        depth_levels: u8,
+    ) -> usize {
+        let key = (format!("{model:?}"), stride, with_colour, depth_levels);
+        if let Some(&count) = self.counted.get(&key) {
+            return count;
+        }
+        if self.counted.len() >= MAX_KEPT_COUNTS {
+            self.counted.clear();
+        }
+        let count = self.count_beyond_now(model, stride, with_colour, depth_levels);
+        self.counted.insert(key, count);
+        count
+    }
+
+    /// [`Self::count_beyond`], counted now.
+    fn count_beyond_now(
         &mut self,
         model: &Model,
         stride: u32,
