@@ -390,6 +390,49 @@ fn their_two_images_dropped_at_once_are_judged_together_as_the_command_line_judg
     assert!(common::label_shown(&harness, "match: yes"));
 }
 
+/// Three images dropped at once: the viewer cannot know which two make the pair, so it compares
+/// none and says so in the status bar, naming the three and what to drop instead; an image
+/// dropped alone after it is compared.
+#[test]
+fn three_images_dropped_at_once_are_refused_with_a_reason_and_none_is_judged() {
+    let folder = tempfile::tempdir().unwrap();
+    compare_run::write_mistaken(folder.path(), raytracer::compare::MistakeSet::NONE, "tga");
+    std::fs::copy(folder.path().join("colour.tga"), folder.path().join("other.tga")).unwrap();
+    let mut harness = viewer(Some(compare_run::path(compare_run::SCENE)));
+    settle(&mut harness);
+    for name in ["colour.tga", "depth.tga", "other.tga"] {
+        let file = common::DroppedOnTheWindow(folder.path().join(name));
+        harness
+            .input_mut()
+            .dropped_files
+            .push(std::sync::Arc::new(file));
+    }
+    harness.run_steps(3);
+    settle(&mut harness);
+    let app = harness.state();
+    assert!(
+        !app.comparing() && app.comparison().is_none(),
+        "an image of the three was compared"
+    );
+    let (message, error) = app.message().unwrap();
+    let said = "3 images dropped at once (colour.tga, depth.tga, other.tga): none was compared; \
+                the viewer judges one colour image and its depth image together: drop those \
+                two, or one image alone";
+    assert!(error && message == said, "{message}");
+    assert!(common::label_shown(&harness, said), "the status bar shows it");
+    let file = common::DroppedOnTheWindow(folder.path().join("depth.tga"));
+    harness
+        .input_mut()
+        .dropped_files
+        .push(std::sync::Arc::new(file));
+    let deadline = Instant::now() + Duration::from_secs(60);
+    while harness.state().comparing() || harness.state().comparison().is_none() {
+        harness.step();
+        assert!(Instant::now() < deadline, "the image dropped alone was not compared");
+        std::thread::sleep(Duration::from_millis(10));
+    }
+}
+
 /// Their file, taken for a depth image by its content, written again as a colour image: it is
 /// recognised again (the kind was guessed, not clicked) and judged alone, never beside its own
 /// older version.

@@ -6,8 +6,10 @@ use egui::{Key, KeyboardShortcut, Modifiers};
 use glam::DVec2;
 
 use super::actions::Action;
+use super::compare::dropped_image_kind;
 use super::dialogs::DialogKind;
 use super::reload::{FileWatcher, WatchState};
+use super::status::Status;
 use super::ui::gestures::{ImageGestures, ORBIT_RAD_PER_POINT};
 use super::viewing::Navigation;
 use crate::render::View;
@@ -51,6 +53,9 @@ pub(super) struct Input {
     /// The files dropped on the window (opened by the platform's seam): a scene, or their
     /// images (two at once are judged together).
     pub(super) dropped: Vec<egui::DroppedFileHandle>,
+    /// Why the images dropped were not compared: more than two came at once
+    /// ([`at_most_a_pair`]).
+    pub(super) refused: Option<Status>,
 }
 
 /// Reads the shortcuts (Ctrl+O, Ctrl+S, Ctrl+R), a dropped file, the watched file and the
@@ -101,7 +106,38 @@ pub(super) fn read(
         _ => {}
     }
     actions.extend(navigation_keys(ctx, help_open, view));
-    Input { actions, dropped }
+    let (dropped, refused) = at_most_a_pair(dropped);
+    Input {
+        actions,
+        dropped,
+        refused,
+    }
+}
+
+/// The files of one drop that are opened: all of them when at most two are images (`.png`,
+/// `.tga`: one colour and one depth image are judged together); else only the others (a scene),
+/// with the error that says why no image was compared: which of three or more images would make
+/// the pair is the user's to say, never guessed.
+fn at_most_a_pair(
+    dropped: Vec<egui::DroppedFileHandle>,
+) -> (Vec<egui::DroppedFileHandle>, Option<Status>) {
+    let name = |file: &egui::DroppedFileHandle| {
+        let name = file.path().file_name().unwrap_or_default();
+        name.to_string_lossy().into_owned()
+    };
+    let is_image = |file: &egui::DroppedFileHandle| dropped_image_kind(&name(file)).is_some();
+    let images: Vec<String> = dropped.iter().filter(|f| is_image(f)).map(name).collect();
+    if images.len() <= 2 {
+        return (dropped, None);
+    }
+    let refused = Status::error(format!(
+        "{} images dropped at once ({}): none was compared; the viewer judges one colour image \
+         and its depth image together: drop those two, or one image alone",
+        images.len(),
+        images.join(", ")
+    ));
+    let others = dropped.into_iter().filter(|file| !is_image(file)).collect();
+    (others, Some(refused))
 }
 
 /// Keyboard navigation while no text field or slider has the keyboard: arrows move the camera,

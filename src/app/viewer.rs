@@ -284,8 +284,7 @@ impl ViewerApp {
             Action::CompareFlip => self.compare.flip(),
             Action::CompareDifference => self.compare.toggle_difference(),
             Action::CompareClose => self.compare.close(),
-            // Said above.
-            Action::Reload
+            Action::Reload // (said above)
             | Action::AutoRange
             | Action::Undo
             | Action::Redo
@@ -457,6 +456,7 @@ impl eframe::App for ViewerApp {
         for action in input.actions {
             self.apply(action);
         }
+        self.say(input.refused);
         for file in input.dropped {
             self.open_dropped(file);
         }
