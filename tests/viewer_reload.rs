@@ -260,7 +260,9 @@ fn wait_for_pair(
 /// Their colour and depth images dropped on the window at once are judged together, as the
 /// command line judges the pair: the answer names what neither image says alone (last-wins from
 /// the colour, depth-reversed from the depth), and both images are shown in place of the render.
-/// When their program, fixed, writes both again, the pair is judged again and matches.
+/// The probe and the pixel trace give both images' values; a statement pointed at highlights its
+/// pixels in each image where it explains any. When their program, fixed, writes both again, the
+/// pair is judged again and matches.
 #[test]
 fn their_two_images_dropped_at_once_are_judged_together_as_the_command_line_judges_them() {
     use raytracer::compare::{Mistake, MistakeSet};
@@ -382,6 +384,66 @@ fn their_two_images_dropped_at_once_are_judged_together_as_the_command_line_judg
     // Both captions say the pictures were judged together.
     let together = harness.query_all_by_label_contains(", judged together (Shift+B");
     assert_eq!(together.count(), 2);
+    // A statement pointed at highlights the pixels it explains in each image of the pair
+    // where it explains any, the count that image's own.
+    let both = [&comparison, comparison.paired.as_deref().unwrap()];
+    for (index, name) in comparison.diagnosis().iter().enumerate() {
+        let name = name.split(' ').next().unwrap();
+        harness
+            .get_by_label_contains(&format!("{name}: "))
+            .scroll_to_me();
+        harness.run_steps(3);
+        harness.get_by_label_contains(&format!("{name}: ")).hover();
+        harness.run_steps(4);
+        let mut highlighted = 0;
+        for image in both {
+            let count = image.explained_by[index]
+                .as_ref()
+                .map_or(0, |flags| flags.iter().filter(|&&f| f).count());
+            let kind = match image.kind {
+                raytracer::app::compare::ImageKind::Colour => "colour",
+                raytracer::app::compare::ImageKind::Depth => "depth",
+            };
+            let caption = format!("{kind}: the {} pixels {name} explains", thousands(count));
+            if count > 0 {
+                assert!(common::label_shown(&harness, &caption), "{caption}");
+                highlighted += 1;
+            }
+        }
+        assert!(highlighted > 0, "{name} explains no pixel in either image");
+        harness.hover_at(egui::pos2(1.0, 1.0));
+        harness.run_steps(4);
+    }
+    // Pinned there and traced, the trace gives both images' values at that pixel, each beside
+    // the exact one.
+    let pixel_at = shown.min + at;
+    for pressed in [true, false] {
+        harness.event(egui::Event::PointerButton {
+            pos: pixel_at,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::NONE,
+        });
+        harness.step();
+    }
+    harness.run_steps(2);
+    click(&mut harness, "Trace");
+    harness.run_steps(3);
+    let value = |image: &image::RgbImage| image.get_pixel(x, row).0;
+    let [r, g, b] = value(&images[0].1);
+    let [er, eg, eb] = value(&images[0].2);
+    let (grey, exact_grey) = (value(&images[1].1)[0], value(&images[1].2)[0]);
+    for line in [
+        format!("theirs, colour: {r} {g} {b} (exact {er} {eg} {eb})"),
+        format!("theirs, depth: grey {grey} (exact {exact_grey})"),
+    ] {
+        assert!(
+            harness.query_by_label_contains(&line).is_some(),
+            "the trace says {line}"
+        );
+    }
+    click(&mut harness, "Unpin");
+    harness.run_steps(2);
     compare_run::write_mistaken(folder.path(), MistakeSet::NONE, "tga");
     wait_for_pair(&mut harness, |c| {
         c.images()
@@ -397,7 +459,11 @@ fn their_two_images_dropped_at_once_are_judged_together_as_the_command_line_judg
 fn three_images_dropped_at_once_are_refused_with_a_reason_and_none_is_judged() {
     let folder = tempfile::tempdir().unwrap();
     compare_run::write_mistaken(folder.path(), raytracer::compare::MistakeSet::NONE, "tga");
-    std::fs::copy(folder.path().join("colour.tga"), folder.path().join("other.tga")).unwrap();
+    std::fs::copy(
+        folder.path().join("colour.tga"),
+        folder.path().join("other.tga"),
+    )
+    .unwrap();
     let mut harness = viewer(Some(compare_run::path(compare_run::SCENE)));
     settle(&mut harness);
     for name in ["colour.tga", "depth.tga", "other.tga"] {
@@ -419,7 +485,10 @@ fn three_images_dropped_at_once_are_refused_with_a_reason_and_none_is_judged() {
                 the viewer judges one colour image and its depth image together: drop those \
                 two, or one image alone";
     assert!(error && message == said, "{message}");
-    assert!(common::label_shown(&harness, said), "the status bar shows it");
+    assert!(
+        common::label_shown(&harness, said),
+        "the status bar shows it"
+    );
     let file = common::DroppedOnTheWindow(folder.path().join("depth.tga"));
     harness
         .input_mut()
@@ -428,7 +497,10 @@ fn three_images_dropped_at_once_are_refused_with_a_reason_and_none_is_judged() {
     let deadline = Instant::now() + Duration::from_secs(60);
     while harness.state().comparing() || harness.state().comparison().is_none() {
         harness.step();
-        assert!(Instant::now() < deadline, "the image dropped alone was not compared");
+        assert!(
+            Instant::now() < deadline,
+            "the image dropped alone was not compared"
+        );
         std::thread::sleep(Duration::from_millis(10));
     }
 }
@@ -472,4 +544,17 @@ fn their_file_written_again_as_the_other_kind_is_recognised_again_and_judged_alo
         "paired with its own older version"
     );
     assert!(comparison.matches());
+}
+
+/// `n` with its thousands separated by commas, as the viewer writes counts.
+fn thousands(n: usize) -> String {
+    let digits = n.to_string();
+    let mut out = String::new();
+    for (i, digit) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i).is_multiple_of(3) {
+            out.push(',');
+        }
+        out.push(digit);
+    }
+    out
 }

@@ -404,12 +404,12 @@ fn compared_picture<'a>(compare: &'a CompareState, view: &View) -> Vec<Compared<
     let mut pictures: Vec<Compared<'a>> = picture(
         pixels,
         (&current.theirs_texture, &current.heat_texture),
-        compare.highlighted(),
+        compare.highlighted(false),
     )
     .into_iter()
     .collect();
     if let (Some(paired), Some((theirs, heat))) = (&pixels.paired, &current.paired_textures) {
-        pictures.extend(picture(paired, (theirs, heat), None));
+        pictures.extend(picture(paired, (theirs, heat), compare.highlighted(true)));
     }
     pictures
 }

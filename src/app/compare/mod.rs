@@ -47,9 +47,9 @@ pub(crate) struct Comparison {
     pub(crate) heat_texture: TextureHandle,
     /// The image judged with it, if any: its picture and its difference.
     pub(crate) paired_textures: Option<(TextureHandle, TextureHandle)>,
-    /// The difference with one statement's pixels highlighted: the statement's index, and the
-    /// picture.
-    highlight: Option<(usize, TextureHandle)>,
+    /// The differences with one statement's pixels highlighted: the statement's index, and the
+    /// picture of each image (this one, then the one judged with it) where it explains pixels.
+    highlight: Option<(usize, [Option<TextureHandle>; 2])>,
 }
 
 /// The Compare section's state.
@@ -228,8 +228,8 @@ impl CompareState {
     }
 
     /// Points at the statement `index` of the answer on screen (`None`: at none): while it is
-    /// pointed at, the compared image shows the difference with the pixels it explains
-    /// highlighted (made once through `ctx`).
+    /// pointed at, each compared image (both of a pair) shows its difference with the pixels
+    /// the statement explains there highlighted (made once through `ctx`).
     pub(crate) fn point_at(&mut self, ctx: &egui::Context, index: Option<usize>) {
         self.pointed = index;
         let (Some(index), Some(current)) = (index, &mut self.current) else {
@@ -238,26 +238,32 @@ impl CompareState {
         if current.highlight.as_ref().is_some_and(|(i, _)| *i == index) {
             return;
         }
-        current.highlight = match current.pixels.explained_by.get(index) {
-            Some(Some(flags)) => Some((
-                index,
-                ctx.load_texture(
-                    "compare highlight",
-                    to_colour_image(&heat_map_highlighted(&current.pixels.difference, flags)),
-                    TextureOptions::NEAREST,
-                ),
+        let texture = |pixels: &ComparisonPixels| match pixels.explained_by.get(index) {
+            Some(Some(flags)) => Some(ctx.load_texture(
+                "compare highlight",
+                to_colour_image(&heat_map_highlighted(&pixels.difference, flags)),
+                TextureOptions::NEAREST,
             )),
             _ => None,
         };
+        let pixels = &current.pixels;
+        let textures = [texture(pixels), pixels.paired.as_deref().and_then(texture)];
+        current.highlight = Some((index, textures));
     }
 
-    /// While a statement is pointed at: the difference with its pixels highlighted, the
-    /// statement's index and how many pixels it explains.
-    pub(crate) fn highlighted(&self) -> Option<(&TextureHandle, usize, usize)> {
+    /// While a statement is pointed at, for the compared image (`paired`: the one judged with
+    /// it): its difference with the statement's pixels highlighted, the statement's index and
+    /// how many of that image's pixels it explains.
+    pub(crate) fn highlighted(&self, paired: bool) -> Option<(&TextureHandle, usize, usize)> {
         let current = self.current.as_ref()?;
-        let (index, texture) = current.highlight.as_ref()?;
+        let (index, textures) = current.highlight.as_ref()?;
+        let (pixels, texture) = if paired {
+            (current.pixels.paired.as_deref()?, textures[1].as_ref()?)
+        } else {
+            (&current.pixels, textures[0].as_ref()?)
+        };
         (self.pointed == Some(*index)).then(|| {
-            let count = current.pixels.explained_by[*index]
+            let count = pixels.explained_by[*index]
                 .as_ref()
                 .map_or(0, |flags| flags.iter().filter(|&&f| f).count());
             (texture, *index, count)
