@@ -203,7 +203,7 @@ test("a depth image dropped under a name that says nothing is judged as depth, a
   await context.close();
 });
 
-test("a colour and a depth image dropped at once are judged together, as the command line judges the pair", async () => {
+test("a colour and a depth image dropped at once are judged together, as the command line judges the pair; three are refused", async () => {
   const scene = path.resolve(env.scenes, "scene1_04.txt");
   const { page, context } = await openScene1_04();
   // A student's two images of the course's line, each written top row first.
@@ -214,6 +214,16 @@ test("a colour and a depth image dropped at once are judged together, as the com
   fs.writeFileSync(path.join(folder, "depth1_04.tga"), depth);
   const cli = cliDiagnosis(["-input", scene, "-compare_output", "output1_04.tga", "-compare_depth", "12", "17", "depth1_04.tga"], folder);
   assert.deepEqual(cli.map((l) => l.split(": ")[0]), ["flipped-vertically"]);
+  // Three images at once: which two make the pair is not guessed; none is compared, and the
+  // status says why.
+  await dropFiles(page, [["output1_04.tga", colour], ["depth1_04.tga", depth], ["output1_04_old.tga", colour]]);
+  await page.waitForFunction(() => /^3 images dropped at once/.test(window.raytracer.message() ?? ""), null, { timeout: 30_000 });
+  assert.equal(
+    await page.evaluate(() => window.raytracer.message()),
+    "3 images dropped at once (output1_04.tga, depth1_04.tga, output1_04_old.tga): none was compared; " +
+      "the viewer judges one colour image and its depth image together: drop those two, or one image alone",
+  );
+  assert.deepEqual(await page.evaluate(() => window.raytracer.compared()), []);
   await dropFiles(page, [["output1_04.tga", colour], ["depth1_04.tga", depth]]);
   await page.waitForFunction(() => window.raytracer.compared().length === 2 && window.raytracer.diagnosis().length > 0, null, { timeout: 60_000 });
   assert.deepEqual((await page.evaluate(() => window.raytracer.compared())).sort(), ["colour output1_04.tga", "depth depth1_04.tga"]);
