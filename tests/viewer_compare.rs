@@ -43,19 +43,6 @@ fn write_theirs(folder: &Path, mistakes: MistakeSet) -> (String, String) {
     )
 }
 
-/// `n` with its thousands separated by commas, as the viewer writes counts.
-fn with_commas(n: usize) -> String {
-    let digits = n.to_string();
-    let mut out = String::new();
-    for (i, digit) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i).is_multiple_of(3) {
-            out.push(',');
-        }
-        out.push(digit);
-    }
-    out
-}
-
 #[test]
 fn their_colour_image_is_diagnosed_flipped_and_probed() {
     let folder = tempfile::tempdir().unwrap();
@@ -83,7 +70,10 @@ fn their_colour_image_is_diagnosed_flipped_and_probed() {
     assert!(differing > 0);
     assert!(label_shown(
         &harness,
-        &format!("colour: difference, {} pixels", with_commas(differing))
+        &format!(
+            "colour: difference, {} pixels",
+            common::with_commas(differing)
+        )
     ));
     // The heat map's scale is beside its caption, and only while the heat map shows.
     let scale = harness.get_by_label("heat map scale").rect();
@@ -419,7 +409,7 @@ fn a_statement_pointed_at_shows_its_meaning_and_picture_and_highlights_its_pixel
         &harness,
         &format!(
             "colour: the {} pixels mirrored explains",
-            with_commas(counts[1])
+            common::with_commas(counts[1])
         )
     ));
     // Pointed away, the difference is back.

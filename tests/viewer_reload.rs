@@ -404,7 +404,10 @@ fn their_two_images_dropped_at_once_are_judged_together_as_the_command_line_judg
                 raytracer::app::compare::ImageKind::Colour => "colour",
                 raytracer::app::compare::ImageKind::Depth => "depth",
             };
-            let caption = format!("{kind}: the {} pixels {name} explains", thousands(count));
+            let caption = format!(
+                "{kind}: the {} pixels {name} explains",
+                common::with_commas(count)
+            );
             if count > 0 {
                 assert!(common::label_shown(&harness, &caption), "{caption}");
                 highlighted += 1;
@@ -452,59 +455,6 @@ fn their_two_images_dropped_at_once_are_judged_together_as_the_command_line_judg
     assert!(common::label_shown(&harness, "match: yes"));
 }
 
-/// Three images dropped at once: the viewer cannot know which two make the pair, so it compares
-/// none and says so in the status bar, naming the three and what to drop instead; an image
-/// dropped alone after it is compared.
-#[test]
-fn three_images_dropped_at_once_are_refused_with_a_reason_and_none_is_judged() {
-    let folder = tempfile::tempdir().unwrap();
-    compare_run::write_mistaken(folder.path(), raytracer::compare::MistakeSet::NONE, "tga");
-    std::fs::copy(
-        folder.path().join("colour.tga"),
-        folder.path().join("other.tga"),
-    )
-    .unwrap();
-    let mut harness = viewer(Some(compare_run::path(compare_run::SCENE)));
-    settle(&mut harness);
-    for name in ["colour.tga", "depth.tga", "other.tga"] {
-        let file = common::DroppedOnTheWindow(folder.path().join(name));
-        harness
-            .input_mut()
-            .dropped_files
-            .push(std::sync::Arc::new(file));
-    }
-    harness.run_steps(3);
-    settle(&mut harness);
-    let app = harness.state();
-    assert!(
-        !app.comparing() && app.comparison().is_none(),
-        "an image of the three was compared"
-    );
-    let (message, error) = app.message().unwrap();
-    let said = "3 images dropped at once (colour.tga, depth.tga, other.tga): none was compared; \
-                the viewer judges one colour image and its depth image together: drop those \
-                two, or one image alone";
-    assert!(error && message == said, "{message}");
-    assert!(
-        common::label_shown(&harness, said),
-        "the status bar shows it"
-    );
-    let file = common::DroppedOnTheWindow(folder.path().join("depth.tga"));
-    harness
-        .input_mut()
-        .dropped_files
-        .push(std::sync::Arc::new(file));
-    let deadline = Instant::now() + Duration::from_secs(60);
-    while harness.state().comparing() || harness.state().comparison().is_none() {
-        harness.step();
-        assert!(
-            Instant::now() < deadline,
-            "the image dropped alone was not compared"
-        );
-        std::thread::sleep(Duration::from_millis(10));
-    }
-}
-
 /// Their file, taken for a depth image by its content, written again as a colour image: it is
 /// recognised again (the kind was guessed, not clicked) and judged alone, never beside its own
 /// older version.
@@ -544,17 +494,4 @@ fn their_file_written_again_as_the_other_kind_is_recognised_again_and_judged_alo
         "paired with its own older version"
     );
     assert!(comparison.matches());
-}
-
-/// `n` with its thousands separated by commas, as the viewer writes counts.
-fn thousands(n: usize) -> String {
-    let digits = n.to_string();
-    let mut out = String::new();
-    for (i, digit) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i).is_multiple_of(3) {
-            out.push(',');
-        }
-        out.push(digit);
-    }
-    out
 }

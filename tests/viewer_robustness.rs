@@ -1,6 +1,7 @@
 //! The viewer under abuse: thousands of random slider values (extremes, NaN, infinities), typed
 //! non-numbers in the value fields, and window sizes down to 0×0 — no panic, and afterwards the
-//! viewer still renders the current view. Seeded.
+//! viewer still renders the current view (seeded); three images dropped at once are refused with
+//! a reason.
 #![cfg(feature = "gui")]
 
 use std::time::{Duration, Instant};
@@ -10,6 +11,8 @@ use egui_kittest::kittest::{NodeT, Queryable};
 use raytracer::render::rng::SplitMix64;
 
 mod common;
+#[path = "common/compare_run.rs"]
+mod compare_run;
 
 const SLIDERS: [&str; 12] = [
     "centre x",
@@ -198,4 +201,57 @@ fn thousands_of_hostile_inputs_never_panic() {
     assert_consistent(&mut harness, 2_000);
     assert!(harness.state().view().validate().is_ok());
     let _ = harness.root().accesskit_node();
+}
+
+/// Three images dropped at once: the viewer cannot know which two make the pair, so it compares
+/// none and says so in the status bar, naming the three and what to drop instead; an image
+/// dropped alone after it is compared.
+#[test]
+fn three_images_dropped_at_once_are_refused_with_a_reason_and_none_is_judged() {
+    let folder = tempfile::tempdir().unwrap();
+    compare_run::write_mistaken(folder.path(), raytracer::compare::MistakeSet::NONE, "tga");
+    std::fs::copy(
+        folder.path().join("colour.tga"),
+        folder.path().join("other.tga"),
+    )
+    .unwrap();
+    let mut harness = common::viewer(Some(compare_run::path(compare_run::SCENE)));
+    common::settle(&mut harness);
+    for name in ["colour.tga", "depth.tga", "other.tga"] {
+        let file = common::DroppedOnTheWindow(folder.path().join(name));
+        harness
+            .input_mut()
+            .dropped_files
+            .push(std::sync::Arc::new(file));
+    }
+    harness.run_steps(3);
+    common::settle(&mut harness);
+    let app = harness.state();
+    assert!(
+        !app.comparing() && app.comparison().is_none(),
+        "an image of the three was compared"
+    );
+    let (message, error) = app.message().unwrap();
+    let said = "3 images dropped at once (colour.tga, depth.tga, other.tga): none was compared; \
+                the viewer judges one colour image and its depth image together: drop those \
+                two, or one image alone";
+    assert!(error && message == said, "{message}");
+    assert!(
+        common::label_shown(&harness, said),
+        "the status bar shows it"
+    );
+    let file = common::DroppedOnTheWindow(folder.path().join("depth.tga"));
+    harness
+        .input_mut()
+        .dropped_files
+        .push(std::sync::Arc::new(file));
+    let deadline = Instant::now() + Duration::from_secs(60);
+    while harness.state().comparing() || harness.state().comparison().is_none() {
+        harness.step();
+        assert!(
+            Instant::now() < deadline,
+            "the image dropped alone was not compared"
+        );
+        std::thread::sleep(Duration::from_millis(10));
+    }
 }

@@ -182,3 +182,16 @@ impl egui::DroppedFile for DroppedOnTheWindow {
         std::fs::read(&self.0).map_err(|error| error.to_string())
     }
 }
+
+/// `n` with its thousands separated by commas, as the viewer writes counts.
+pub(crate) fn with_commas(n: usize) -> String {
+    let digits = n.to_string();
+    let mut out = String::new();
+    for (i, digit) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i).is_multiple_of(3) {
+            out.push(',');
+        }
+        out.push(digit);
+    }
+    out
+}

@@ -14,7 +14,8 @@
 #   setup-times web windows windows-viewer screenshot readme-screenshots window-sizes fuzz
 #   trace-example grading.
 # Run by name only (not in the whole list): break-diagnosis [BREAK…] (each fit and rule of the
-#   diagnosis broken in turn; DRY=1 only checks that each break applies).
+#   diagnosis broken in turn; DRY=1 only checks that each break applies); build-units (the test
+#   profile's build from nothing, about 13 minutes on two cores: where its time goes).
 # Those taking arguments: scaling [N [OUTPUT]] (on a machine without Rust, with release binaries
 #   built elsewhere: `SCALING_BIN=DIR bash xtask/reports/scaling.sh N OUTPUT`), thread-wake
 #   [N [OUTPUT]], profile [OUTPUT], windows [RUNS], window-frame-times [OUTPUT].
@@ -26,7 +27,7 @@ cd "$(dirname "$0")/../.."
 all=(accuracy performance tradeoff mistakes diagnosis diagnosis-speed compare-diff memory scaling
      thread-wake profile command-vs-cpp window-frame-times window-frame-times-wgpu setup-times web
      windows windows-viewer screenshot readme-screenshots window-sizes fuzz trace-example grading)
-by_name_only=(break-diagnosis sync)
+by_name_only=(break-diagnosis build-units sync)
 
 report() {
   local name=$1
@@ -37,7 +38,7 @@ report() {
     diagnosis-speed) cargo build --release && cargo run --release --example diagnosis_speed -- "$@" ;;
     compare-diff) bash xtask/reports/compare-example.sh "$@" ;;
     memory | scaling | thread-wake | profile | command-vs-cpp | window-frame-times | setup-times \
-      | break-diagnosis)
+      | break-diagnosis | build-units)
       bash "xtask/reports/$name.sh" "$@" ;;
     window-frame-times-wgpu)
       RAYTRACER_RENDERER=wgpu bash xtask/reports/window-frame-times.sh docs/window-frame-times-wgpu.md ;;
