@@ -156,24 +156,50 @@ fn a_trace_over_a_million_spheres_is_within_the_stated_bound() {
         "100",
         "-stats",
     ];
-    let output = Command::new(binary())
-        .current_dir(folder.path())
-        .args(arguments)
-        .output()
-        .unwrap();
+    let (output, peak) = run_with_peak(
+        Command::new(binary())
+            .current_dir(folder.path())
+            .args(arguments),
+    );
     let text = String::from_utf8_lossy(&output.stdout);
     assert!(output.status.success(), "{}", command::stderr(&output));
-    let figure = |name: &str| -> f64 {
+    let figure = |text: &str, name: &str| -> f64 {
         text.lines()
-            .find_map(|line| line.strip_prefix(name))
-            .and_then(|value| value.trim().parse().ok())
-            .unwrap_or_else(|| panic!("no {name}"))
+            .find_map(|line| line.trim().strip_prefix(name))
+            .and_then(|value| value.trim().trim_end_matches(',').parse().ok())
+            .unwrap_or_else(|| panic!("no {name} in {}", &text[text.len().saturating_sub(2000)..]))
     };
-    let (peak, bound) = (figure("peak_memory_mb:"), figure("memory_bound_mb:"));
+    let (stated_peak, bound) = (
+        figure(&text, "peak_memory_mb:"),
+        figure(&text, "memory_bound_mb:"),
+    );
+    assert!(
+        stated_peak <= bound && peak <= bound,
+        "peak {peak} MB (stated {stated_peak}) over the stated bound {bound} MB"
+    );
+    // The answer as JSON holds the trace's lines too: still within the bound it states.
+    std::fs::copy(folder.path().join("o.tga"), folder.path().join("mine.tga")).unwrap();
+    let (output, peak) = run_with_peak(Command::new(binary()).current_dir(folder.path()).args([
+        "-input",
+        "million.txt",
+        "-compare_output",
+        "mine.tga",
+        "-compare_format",
+        "json",
+        "-trace",
+        "100",
+        "100",
+        "-stats",
+    ]));
+    let text = String::from_utf8_lossy(&output.stdout);
+    assert!(output.status.success(), "{}", command::stderr(&output));
+    let bound = figure(&text, "\"memory_bound_mb\":");
     assert!(
         peak <= bound,
-        "peak {peak} MB over the stated bound {bound} MB"
+        "as JSON: peak {peak} MB over the stated bound {bound} MB"
     );
+    let document: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(document["trace"].as_array().map(Vec::len), Some(1_000_011));
     // Under 800 MB of address space, which holds the scene and its render but not the trace
     // beside them: refused with one line naming the trace (it aborted).
     let output = Command::new("prlimit")
@@ -202,4 +228,40 @@ fn a_trace_over_a_million_spheres_is_within_the_stated_bound() {
         "{said}"
     );
     assert!(!folder.path().join("p.tga").exists());
+}
+
+/// Runs `command` to its end, its output read as it comes, and its peak resident memory (VmHWM)
+/// in MB, read while it runs: the high-water mark only rises, and the last reading comes after
+/// the program's peak (it is then still writing its answer, which is read here).
+fn run_with_peak(command: &mut Command) -> (std::process::Output, f64) {
+    let child = command
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let status_file = format!("/proc/{}/status", child.id());
+    let done = std::sync::atomic::AtomicBool::new(false);
+    std::thread::scope(|scope| {
+        let watcher = scope.spawn(|| {
+            let mut peak_kib = 0_u64;
+            while !done.load(std::sync::atomic::Ordering::Relaxed) {
+                let kib = std::fs::read_to_string(&status_file)
+                    .ok()
+                    .and_then(|status| {
+                        status
+                            .lines()
+                            .find_map(|line| line.strip_prefix("VmHWM:"))
+                            .and_then(|value| {
+                                value.trim().trim_end_matches("kB").trim().parse().ok()
+                            })
+                    });
+                peak_kib = peak_kib.max(kib.unwrap_or(0));
+                std::thread::sleep(std::time::Duration::from_millis(2));
+            }
+            peak_kib as f64 * 1024.0 / 1e6
+        });
+        let output = child.wait_with_output().unwrap();
+        done.store(true, std::sync::atomic::Ordering::Relaxed);
+        (output, watcher.join().unwrap())
+    })
 }

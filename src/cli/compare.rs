@@ -196,6 +196,13 @@ impl CompareReport {
 /// meaning or goes.
 pub const COMPARE_JSON_VERSION: u32 = 2;
 
+/// What stands in the JSON document for the trace until its lines are written in.
+const TRACE_SLOT: &str = "\u{1}trace";
+
+/// Per line of a trace in the JSON answer, beside the line: its indent, quotes, comma and end
+/// (8 bytes) and room for escapes.
+pub(crate) const JSON_LINE_BYTES: u64 = 16;
+
 impl CompareReport {
     /// The report as one JSON document (docs/compare-json.md), with the `-stats` lines when
     /// given (as numbers where they are).
@@ -250,10 +257,27 @@ impl CompareReport {
             }
             document["stats"] = Value::Object(object);
         }
-        if let Some(trace) = trace {
-            document["trace"] = Value::from(trace.lines().collect::<Vec<_>>());
+        // The trace's lines (a million spheres: 150 MB) are written into the document's place
+        // for them, not copied into a value of their own first.
+        if trace.is_some() {
+            document["trace"] = Value::from(TRACE_SLOT);
         }
         let mut text = serde_json::to_string_pretty(&document).unwrap_or_default();
+        let slot = serde_json::to_string(TRACE_SLOT).unwrap_or_default();
+        if let (Some(trace), Some(at)) = (trace, text.find(&slot)) {
+            let lines = trace.lines().count();
+            let mut spliced =
+                String::with_capacity(text.len() + trace.len() + JSON_LINE_BYTES as usize * lines);
+            spliced.push_str(&text[..at]);
+            spliced.push('[');
+            for (n, line) in trace.lines().enumerate() {
+                spliced.push_str(if n == 0 { "\n    " } else { ",\n    " });
+                spliced.push_str(&serde_json::to_string(line).unwrap_or_default());
+            }
+            spliced.push_str(if lines == 0 { "]" } else { "\n  ]" });
+            spliced.push_str(&text[at + slot.len()..]);
+            text = spliced;
+        }
         text.push('\n');
         text
     }

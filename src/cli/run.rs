@@ -10,7 +10,8 @@ use std::time::{Duration, Instant};
 use image::RgbImage;
 
 use super::compare::{
-    CompareError, CompareReport, TheirImages, compare, read_theirs, their_pixel_lines,
+    CompareError, CompareReport, JSON_LINE_BYTES, TheirImages, compare, read_theirs,
+    their_pixel_lines,
 };
 use super::error::UsageError;
 use super::flags::Flag;
@@ -344,6 +345,22 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
             known_depth_range(request),
         )?),
         None => None,
+    };
+    // Its text is counted before it is made: a line holds a dozen numbers printed in full, some
+    // 150 bytes or, at the extremes of f64, thousands.
+    let trace_bound = match &traced {
+        Some(traced) => {
+            // As JSON, the answer holds a copy of the text, each line quoted.
+            let as_json = request
+                .answer_as_json()
+                .then(|| traced.text_bytes() + traced.spheres.len() as u64 * JSON_LINE_BYTES);
+            let counted = traced.text_bound_bytes() + as_json.unwrap_or(0);
+            if counted > trace_bound {
+                check_memory(request, BASELINE_BYTES + counted, traced_spheres)?;
+            }
+            counted
+        }
+        None => 0,
     };
     let streamed = streams(request);
     let measuring = Instant::now();

@@ -222,34 +222,12 @@ impl PixelTrace {
              a = d·d = 1, b = 2 f·d and c = f·f − r², so Δ/4 = (f·d)² − c = r² − |f − (f·d)d|² and the roots \
              are t0, t1 = −f·d ∓ √(Δ/4)"
         );
-        for sphere in &self.spheres {
-            let _ = write!(
-                out,
-                "sphere {}: centre {} radius {}: f·d = {}, Δ/4 = r² − |f − (f·d)d|² = {} \
-                 (b² − 4ac = {})",
-                sphere.index,
-                vector(sphere.center_world),
-                sphere.radius_world,
-                sphere.half_b,
-                sphere.quarter_discriminant,
-                4.0 * sphere.quarter_discriminant
-            );
-            match sphere.roots {
-                None => {
-                    let _ = writeln!(out, ": missed (Δ < 0)");
-                }
-                Some((near, far)) => {
-                    let seen = match self.hit {
-                        Some((index, _)) if index == sphere.index => "the nearest: seen",
-                        _ => "accepted, not the nearest",
-                    };
-                    let _ = writeln!(
-                        out,
-                        ": roots t0 = −f·d − √(Δ/4) = {near}, t1 = {far}; t0 {seen}"
-                    );
-                }
-            }
-        }
+        // One line per sphere: a million spheres make some 150 MB of text, so it is measured
+        // first and made in a string of its size, with room for the lines after it and what the
+        // command adds (grown by doubling, the old and the new buffer were both held: up to
+        // three times the text, and a peak that varied from run to run).
+        out.reserve(self.sphere_lines_bytes() + TEXT_ROOM_BYTES);
+        self.write_sphere_lines(&mut out);
         let [r, g, b] = self.colour;
         let [rb, gb, bb] = self.colour_bytes;
         if let Some((index, t)) = self.hit {
@@ -287,6 +265,72 @@ impl PixelTrace {
             let _ = writeln!(out, "depth: no hit → grey 0");
         }
         out
+    }
+
+    /// The bytes the trace holds at most while its text is made: its records, and the text with
+    /// its room, counted (a number prints in full, so a line is 200 bytes or a few thousand).
+    pub fn text_bound_bytes(&self) -> u64 {
+        (self.spheres.capacity() * std::mem::size_of::<SphereTrace>()) as u64 + self.text_bytes()
+    }
+
+    /// The bytes of its text at most, counted without making it: the sphere lines and the
+    /// room kept after them.
+    pub fn text_bytes(&self) -> u64 {
+        (self.sphere_lines_bytes() + TEXT_ROOM_BYTES) as u64
+    }
+
+    /// The length of the sphere lines, counted without making them.
+    fn sphere_lines_bytes(&self) -> usize {
+        let mut measure = CountBytes::default();
+        self.write_sphere_lines(&mut measure);
+        measure.0
+    }
+
+    /// Writes one line per sphere, in file order, to `out`.
+    fn write_sphere_lines(&self, out: &mut impl std::fmt::Write) {
+        for sphere in &self.spheres {
+            let _ = write!(
+                out,
+                "sphere {}: centre {} radius {}: f·d = {}, Δ/4 = r² − |f − (f·d)d|² = {} \
+                 (b² − 4ac = {})",
+                sphere.index,
+                vector(sphere.center_world),
+                sphere.radius_world,
+                sphere.half_b,
+                sphere.quarter_discriminant,
+                4.0 * sphere.quarter_discriminant
+            );
+            match sphere.roots {
+                None => {
+                    let _ = writeln!(out, ": missed (Δ < 0)");
+                }
+                Some((near, far)) => {
+                    let seen = match self.hit {
+                        Some((index, _)) if index == sphere.index => "the nearest: seen",
+                        _ => "accepted, not the nearest",
+                    };
+                    let _ = writeln!(
+                        out,
+                        ": roots t0 = −f·d − √(Δ/4) = {near}, t1 = {far}; t0 {seen}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Room a trace's text keeps beyond its sphere lines: its last lines, and the comparison's
+/// lines and statistics the command prints after it.
+const TEXT_ROOM_BYTES: usize = 64 << 10;
+
+/// Counts the bytes written to it.
+#[derive(Default)]
+struct CountBytes(usize);
+
+impl std::fmt::Write for CountBytes {
+    fn write_str(&mut self, text: &str) -> std::fmt::Result {
+        self.0 += text.len();
+        Ok(())
     }
 }
 
