@@ -24,7 +24,7 @@ use raytracer::{
 /// In a browser page the viewer is started by the page's script, through this handle
 /// (`cargo xtask web` builds the page).
 #[cfg(all(target_arch = "wasm32", feature = "gui"))]
-pub use raytracer::app::web::WebHandle;
+pub use raytracer::app::start::page::WebHandle;
 
 /// In a browser page there is no command line: the page's script starts the viewer.
 #[cfg(target_arch = "wasm32")]
@@ -147,16 +147,16 @@ fn open_viewer(request: raytracer::cli::ViewerRequest) -> ExitCode {
         ));
         return ExitCode::from(1);
     }
-    if let Some(problem) = raytracer::app::desktop::window::environment_problem() {
+    if let Some(problem) = raytracer::app::start::window::environment_problem() {
         print_err(&format!("raytracer: {problem}\n"));
         return ExitCode::from(2);
     }
-    if let Some(reason) = raytracer::app::desktop::window::no_display_reason() {
+    if let Some(reason) = raytracer::app::start::window::no_display_reason() {
         print_err(&format!("raytracer: {reason}\n"));
         return ExitCode::from(1);
     }
     handle_termination_signals(OnSignal::CloseViewer, remove_temporary_files);
-    let outcome = raytracer::app::desktop::window::run(request);
+    let outcome = raytracer::app::start::window::run(request);
     remove_temporary_files();
     if let Some(signal) = raytracer::platform::process::stop_requested() {
         return ExitCode::from(raytracer::platform::process::exit_status_of(signal));

@@ -4,6 +4,7 @@
 
 use std::path::PathBuf;
 
+use super::compare::ImageKind;
 use super::confirm::Answer;
 use super::dialogs::DialogKind;
 
@@ -48,7 +49,7 @@ pub(crate) enum Action {
     /// its folder first.
     Confirmed(Answer<Write>),
     /// Move the view or the magnifier.
-    Navigate(super::viewing::Navigation),
+    Navigate(super::navigate::Navigation),
     /// Pin the point seen at this image position (pixels, y up) of the frame on screen.
     Pin(glam::DVec2),
     /// Release the pinned probe.
@@ -56,7 +57,7 @@ pub(crate) enum Action {
     /// Trace the pinned pixel into the trace window.
     Trace,
     /// Compare the image at this path with the exact render.
-    CompareImage(PathBuf, crate::app::compare::ImageKind),
+    CompareImage(PathBuf, ImageKind),
     /// Measure the chosen quality against the exact render on the current view.
     CompareQuality,
     /// What the compared image shows.
@@ -67,6 +68,42 @@ pub(crate) enum Action {
     CompareDifference,
     /// Close the comparison.
     CompareClose,
+}
+
+impl Action {
+    /// Whether the view carries it out (`Viewing::carry_out`): navigation, resets, ranges,
+    /// history, named views, unpinning, the magnifier.
+    pub(crate) fn is_the_views(&self) -> bool {
+        matches!(
+            self,
+            Self::AutoRange
+                | Self::Undo
+                | Self::Redo
+                | Self::NameView(_)
+                | Self::FrameAll
+                | Self::ResetView
+                | Self::ResetDepth
+                | Self::UseDepthRange(_)
+                | Self::GoToView(_)
+                | Self::ForgetView(_)
+                | Self::Navigate(_)
+                | Self::Unpin
+                | Self::ResetMagnifier
+        )
+    }
+
+    /// Whether it changes the view at once: a step of the view's history of its own.
+    pub(crate) fn is_one_shot(&self) -> bool {
+        matches!(
+            self,
+            Self::FrameAll
+                | Self::ResetView
+                | Self::ResetDepth
+                | Self::AutoRange
+                | Self::UseDepthRange(_)
+                | Self::GoToView(_)
+        )
+    }
 }
 
 /// A write the user asked for: files the viewer makes.

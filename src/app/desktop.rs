@@ -1,30 +1,39 @@
-//! The desktop's side of what a browser page does its own way ([`super::web`]): a path opens the
-//! file; the file dialogs are the system's (or, where none can be shown, the typed paths); the
-//! files the viewer writes go into the file system, all or nothing, on a thread of their own;
-//! and the window itself ([`window`]).
+//! The desktop's seam ([`Desktop`]), which the coordinator holds and calls (the seam's methods are
+//! listed in `app/seam.rs`): the desktop's side of what a browser page does its own way
+//! (`app/web.rs`). A path opens the file; the file dialogs are the system's (or, where none can
+//! be shown, the typed paths); the files the viewer writes go into the file system, all or
+//! nothing, on a thread of their own. The window itself is opened by `app/start/window.rs`.
 
-pub mod window;
-
-use std::path::PathBuf;
-
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use super::actions::{Action, Write};
+use super::asked::Asked;
 use super::background::Task;
 use super::compare::{ImageKind, dropped_image_kind};
 use super::dialogs::{DialogKind, PendingDialog};
+use super::settings::ExportSettings;
 use super::status::Status;
-use super::viewer::ViewerApp;
 use super::writes::{Stager, Writes};
 use crate::output::atomic::FileSet;
 
-impl ViewerApp {
-    /// Opens the scene the command line names, or else the scene open when the viewer last
-    /// closed.
-    pub(super) fn open_first(&mut self, input: Option<PathBuf>) {
-        if let Some(path) = input.or_else(|| self.settings.last_scene.clone()) {
-            self.open(&path);
-        }
+/// The desktop's seam: files by their paths, the system's file dialogs, writes into the file
+/// system on a thread of their own, a termination signal closing the window.
+#[derive(Debug, Default)]
+pub(crate) struct Desktop;
+
+impl Desktop {
+    /// The scene to open first: the one the command line names, or else the one open when the
+    /// viewer last closed.
+    #[expect(
+        clippy::unused_self,
+        reason = "a method, as each seam's are: the caller names no seam"
+    )]
+    pub(crate) fn first_scene(
+        &self,
+        input: Option<PathBuf>,
+        last_scene: Option<&Path>,
+    ) -> Option<PathBuf> {
+        input.or_else(|| last_scene.map(Path::to_path_buf))
     }
 
     /// The window loads the scene it was started on in the background and shows the default
@@ -33,115 +42,164 @@ impl ViewerApp {
         clippy::unused_self,
         reason = "a method, as each seam's are: the caller names no seam"
     )]
-    pub(super) fn first_scene_on_its_way(&self) -> bool {
+    pub(crate) fn first_scene_on_its_way(&self) -> bool {
         false
     }
 
-    /// The folder an export or the course files would have to create, which is asked for before
-    /// it is.
-    pub(super) fn missing_export_folder(&self, write: &Write) -> Option<PathBuf> {
+    /// The folder an export or the course files would have to create (the course files go to
+    /// `typed_folder`, the side panel's export path), which is asked for before it is.
+    #[expect(
+        clippy::unused_self,
+        reason = "a method, as each seam's are: the caller names no seam"
+    )]
+    pub(crate) fn missing_export_folder(
+        &self,
+        write: &Write,
+        typed_folder: &str,
+    ) -> Option<PathBuf> {
         let base = match write {
             Write::ExportTo(base) => base.clone(),
-            Write::CourseFiles => PathBuf::from(self.settings.export.path.trim()),
+            Write::CourseFiles => PathBuf::from(typed_folder.trim()),
             Write::SaveViewTo(_) => return None,
         };
         crate::export::export_folder(&base).filter(|folder| !folder.is_dir())
     }
 
-    /// Opens a file dropped on the window, by its path.
+    /// A file dropped on the window, by its path: an image (`.png`, `.tga`) is compared, a
+    /// depth image where its file name says so, else as `chosen` (its content decides unless
+    /// that was clicked); anything else is opened as a scene.
     #[expect(
+        clippy::unused_self,
         clippy::needless_pass_by_value,
-        reason = "the page's side keeps the handle to read the file later"
+        reason = "a method, as each seam's are; the page's side keeps the handle to read the \
+                  file later"
     )]
-    pub(super) fn open_dropped(&mut self, file: egui::DroppedFileHandle) {
+    pub(crate) fn dropped(
+        &mut self,
+        file: egui::DroppedFileHandle,
+        chosen: ImageKind,
+    ) -> Option<Asked> {
         let path = file.path();
         if path.as_os_str().is_empty() {
-            return;
+            return None;
         }
-        // An image (`.png`, `.tga`) is compared: a depth image where its file name says so, else
-        // as the kind chosen (its content decides unless that was clicked); anything else is
-        // opened as a scene.
         let name = path.file_name().unwrap_or_default().to_string_lossy();
-        match dropped_image_kind(&name) {
+        Some(match dropped_image_kind(&name) {
             Some(ImageKind::Depth) => {
-                self.apply(Action::CompareImage(path.to_path_buf(), ImageKind::Depth));
+                Asked::Apply(Action::CompareImage(path.to_path_buf(), ImageKind::Depth))
             }
             Some(ImageKind::Colour) => {
-                let kind = self.compare.kind;
-                self.apply(Action::CompareImage(path.to_path_buf(), kind));
+                Asked::Apply(Action::CompareImage(path.to_path_buf(), chosen))
             }
-            None => self.open(path),
-        }
+            None => Asked::Open(path.to_path_buf()),
+        })
     }
 
     /// Names the window `title`.
-    pub(super) fn set_title(&self, title: &str) {
-        self.ctx
-            .send_viewport_cmd(egui::ViewportCommand::Title(title.to_owned()));
+    #[expect(
+        clippy::unused_self,
+        reason = "a method, as each seam's are: the caller names no seam"
+    )]
+    pub(crate) fn set_title(&self, ctx: &egui::Context, title: &str) {
+        ctx.send_viewport_cmd(egui::ViewportCommand::Title(title.to_owned()));
     }
 
     /// What comes in between frames on the desktop: a termination signal closes the window
-    /// (eframe saves the settings on the way out). Files are opened by their paths.
-    pub(super) fn poll_platform(&mut self) {
+    /// (eframe saves the settings on the way out). Files are opened by their paths, so nothing
+    /// comes in otherwise.
+    #[expect(
+        clippy::unused_self,
+        reason = "a method, as each seam's are: the caller names no seam"
+    )]
+    pub(crate) fn poll(&mut self, ctx: &egui::Context, _compare_closes: u64) -> Vec<Asked> {
         if crate::platform::process::stop_requested().is_some() {
-            self.ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+            ctx.send_viewport_cmd(egui::ViewportCommand::Close);
         }
+        Vec::new()
     }
 
-    /// Opens the scene file at `path` (typed in the side panel or given on the command line).
-    pub(super) fn open_path(&mut self, path: &Path) {
-        self.open(path);
+    /// Opens the scene file at `path` (typed in the side panel): by its path.
+    #[expect(
+        clippy::unused_self,
+        clippy::unnecessary_wraps,
+        reason = "a method, as each seam's are: the caller names no seam; the page's asks nothing"
+    )]
+    pub(crate) fn open_path(&mut self, path: &Path) -> Option<Asked> {
+        Some(Asked::Open(path.to_path_buf()))
     }
 
-    /// Shows a native file dialog, or says why none can be shown.
-    pub(super) fn open_dialog(&mut self, kind: DialogKind) {
-        if let Some(reason) = self.writes.dialog_note {
-            self.without_dialog(kind, reason);
-            return;
+    /// Shows a native file dialog (its answer comes back through `writes`), or says why none
+    /// can be shown.
+    #[expect(
+        clippy::unused_self,
+        reason = "a method, as each seam's are: the caller names no seam"
+    )]
+    pub(crate) fn open_dialog(
+        &mut self,
+        kind: DialogKind,
+        writes: &mut Writes,
+        export: &ExportSettings,
+        ctx: &egui::Context,
+    ) -> Option<Asked> {
+        if let Some(reason) = writes.dialog_note {
+            return Some(without_dialog(kind, export, reason));
         }
-        if self.writes.dialog.is_some() {
-            return;
+        if writes.dialog.is_some() {
+            return None;
         }
         let suggested = match kind {
-            DialogKind::SaveScene => &self.settings.export.scene_path,
-            _ => &self.settings.export.path,
+            DialogKind::SaveScene => &export.scene_path,
+            _ => &export.path,
         };
-        match spawn_dialog(kind, &self.ctx, suggested) {
-            Ok(dialog) => self.writes.dialog = Some(dialog),
-            Err(error) => {
-                self.status = Some(Status::error(format!("cannot open a file dialog: {error}")));
+        match spawn_dialog(kind, ctx, suggested) {
+            Ok(dialog) => {
+                writes.dialog = Some(dialog);
+                None
             }
+            Err(error) => Some(Asked::Say(Status::error(format!(
+                "cannot open a file dialog: {error}"
+            )))),
         }
     }
 
-    /// Where no file dialog can be shown: export and save go to the side panel's typed paths (the
-    /// section says so under them, and replacing a file is asked first); open and compare say
-    /// that no dialog is available and do nothing else (reopening the typed scene would reset
-    /// the view and its history).
-    fn without_dialog(&mut self, kind: DialogKind, reason: &'static str) {
-        let export = &self.settings.export;
-        let typed = |text: &str| (!text.trim().is_empty()).then(|| PathBuf::from(text.trim()));
-        let action = match kind {
-            DialogKind::Export => typed(&export.path).map(Write::ExportTo),
-            DialogKind::SaveScene => typed(&export.scene_path).map(Write::SaveViewTo),
-            DialogKind::Open | DialogKind::CompareImage(_) => None,
-        };
-        match action {
-            Some(write) => self.apply(Action::Write(write)),
-            None => self.status = Some(Status::error(reason)),
-        }
-    }
-
-    /// Writes the files `stage` stages, all or nothing, in the background: the status bar says
-    /// `running` meanwhile, then `done` and the full path of each file written (or why none was).
-    pub(super) fn write_files(&mut self, running: &str, done: String, stage: Stager) {
+    /// Writes the files `stage` stages, all or nothing, in the background (`writes` holds the
+    /// write in flight): what the status bar says, `running` meanwhile, then `done` and the full
+    /// path of each file written (or why none was).
+    #[expect(
+        clippy::unused_self,
+        reason = "a method, as each seam's are: the caller names no seam"
+    )]
+    pub(crate) fn write_files(
+        &mut self,
+        writes: &mut Writes,
+        ctx: &egui::Context,
+        (running, done): (&str, String),
+        stage: Stager,
+    ) -> Status {
         let write = move || {
             let mut set = FileSet::new();
             stage(&mut set)?;
             let written = set.commit().map_err(|e| e.to_string())?;
             Ok(format!("{done} {}", full_names(&written)))
         };
-        self.status = Some(start_write(&mut self.writes, running, write, &self.ctx));
+        start_write(writes, running, write, ctx)
+    }
+}
+
+/// Where no file dialog can be shown: export and save go to the side panel's typed paths (the
+/// section says so under them, and replacing a file is asked first); open and compare say that
+/// no dialog is available and do nothing else (reopening the typed scene would reset the view
+/// and its history).
+fn without_dialog(kind: DialogKind, export: &ExportSettings, reason: &'static str) -> Asked {
+    let typed = |text: &str| (!text.trim().is_empty()).then(|| PathBuf::from(text.trim()));
+    let write = match kind {
+        DialogKind::Export => typed(&export.path).map(Write::ExportTo),
+        DialogKind::SaveScene => typed(&export.scene_path).map(Write::SaveViewTo),
+        DialogKind::Open | DialogKind::CompareImage(_) => None,
+    };
+    match write {
+        Some(write) => Asked::Apply(Action::Write(write)),
+        None => Asked::Say(Status::error(reason)),
     }
 }
 

@@ -8,10 +8,10 @@ use glam::DVec2;
 use super::actions::Action;
 use super::compare::dropped_image_kind;
 use super::dialogs::DialogKind;
+use super::navigate::Navigation;
 use super::reload::{FileWatcher, WatchState};
 use super::status::Status;
 use super::ui::gestures::{ImageGestures, ORBIT_RAD_PER_POINT};
-use super::viewing::Navigation;
 use crate::render::View;
 
 /// Keyboard pan step, as a fraction of the image's shorter side.

@@ -28,12 +28,14 @@
 //! * [`background`]: the one background-task type (loads, writes, dialogs)
 //! * [`status`]: the typed status-bar message
 //! * [`dialogs`]: native file dialogs; [`reload`]: watching the open file
-//! * `desktop::window`: opening the window (or saying why none can be opened)
-//! * [`web`]: in a browser page, files in as bytes and out as downloads; [`desktop`]: on the
-//!   desktop, files out into the file system
+//! * [`seam`]: what the coordinator holds of where it runs; [`asked`]: what a seam asks of it;
+//!   [`desktop`]: on the desktop, files by path and out into the file system; [`web`]: in a
+//!   browser page, files in as bytes and out as downloads
+//! * [`start`]: opening the window (or saying why none can be opened), or starting in a page
 //! * [`ui`]: the drawing, one `*_ui` function per part
 
 pub(crate) mod actions;
+pub(crate) mod asked;
 pub(crate) mod background;
 pub mod compare;
 pub(crate) mod confirm;
@@ -54,7 +56,9 @@ pub mod render_job;
 pub(crate) mod render_requests;
 pub mod saved_views;
 pub(crate) mod scene_loading;
+pub(crate) mod seam;
 pub mod settings;
+pub mod start;
 pub(crate) mod status;
 pub mod ui;
 pub(crate) mod viewer;

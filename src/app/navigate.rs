@@ -14,6 +14,23 @@ use crate::explore::scene_extent;
 use crate::render::View;
 use crate::scene::{MAX_MAGNITUDE, MIN_VIEW_SIZE, Scene};
 
+/// A move of the view or the magnifier, from the keyboard or a gesture on the images.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Navigation {
+    /// Pan by this many image pixels (y up), as [`pan`].
+    Pan(DVec2),
+    /// Orbit around the scene's centre: yaw as a drag to the right, pitch up (radians).
+    Orbit(DVec2),
+    /// Zoom by this factor (the size multiplied) at this image position (pixels, y up).
+    ZoomAt(f64, DVec2),
+    /// Magnify the images by this factor at this image position (no new render).
+    Magnify(f64, DVec2),
+    /// Move the magnified part by this many image pixels.
+    PanMagnifier(DVec2),
+    /// The pointer is over this image position, or over neither image.
+    Hover(Option<DVec2>),
+}
+
 /// Margin "frame all" leaves around the scene, as a fraction of the screen (5% on each side).
 pub(crate) const FRAME_ALL_MARGIN: f64 = 0.05;
 

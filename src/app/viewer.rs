@@ -8,18 +8,22 @@ use std::time::Duration;
 use glam::DVec2;
 
 use super::actions::{Action, Write};
-use super::confirm::{self, Answer};
+use super::asked::Asked;
+use super::confirm::Answer;
 use super::depth_stats::DepthHistogram;
 use super::loaded_scene::LoadedScene;
 use super::probe::{Probe, point_of_probe};
 use super::saved_views::SceneViews;
 use super::scene_loading::{LoadKind, OpenScene};
+use super::seam::Seam;
 use super::settings::Settings;
 use super::status::{self, Status};
 use super::ui::magnifier::Magnifier;
 use super::{compare, input, layout, pixel_trace, render_requests, viewing, writes};
 use crate::cli::ViewerRequest;
+use crate::compare::their_image::decode_their_image;
 use crate::render::{Frame, View};
+use crate::scene::bundled::BUNDLED_SCENES;
 
 /// The viewer application: the coordinator of the features' states (the open scene, the view,
 /// the frames, the writes, the panels, the comparison).
@@ -40,9 +44,8 @@ pub struct ViewerApp {
     pub(super) compare: compare::CompareState,
     /// The status bar's message.
     pub(super) status: Option<Status>,
-    /// In a browser page: files on their way in.
-    #[cfg(target_arch = "wasm32")]
-    pub(super) page: super::web::Page,
+    /// Where the viewer runs: the desktop, or a browser page with its files on their way in.
+    pub(super) seam: Seam,
     pub(super) ctx: egui::Context,
 }
 
@@ -50,6 +53,15 @@ impl ViewerApp {
     /// Creates the viewer: settings from eframe's storage, the scene from the request (or the last
     /// scene, or the embedded default), and the render worker.
     pub fn new(cc: &eframe::CreationContext<'_>, request: ViewerRequest) -> Self {
+        Self::with_seam(cc, request, Seam::default())
+    }
+
+    /// The viewer on `seam` (a page's script gives the page it started: `start::page`).
+    pub(super) fn with_seam(
+        cc: &eframe::CreationContext<'_>,
+        request: ViewerRequest,
+        seam: Seam,
+    ) -> Self {
         let settings = Settings::from_storage(cc.storage, request.size_px);
         input::claim_zoom_keys(&cc.egui_ctx);
         let (frames, status) = render_requests::Frames::start(&cc.egui_ctx, cc.gl.is_some());
@@ -63,16 +75,38 @@ impl ViewerApp {
             panels: layout::Panels::default(),
             compare: compare::CompareState::default(),
             status,
-            #[cfg(target_arch = "wasm32")]
-            page: super::web::Page::default(),
+            seam,
             ctx: cc.egui_ctx.clone(),
         };
-        app.open_first(request.input);
+        let last = app.settings.last_scene.as_deref();
+        if let Some(path) = app.seam.first_scene(request.input, last) {
+            app.open(&path);
+        }
         app
     }
 
+    /// Carries out what the seam asked for.
+    fn take_asked(&mut self, asked: impl IntoIterator<Item = Asked>) {
+        for asked in asked {
+            match asked {
+                Asked::Open(path) => self.open(&path),
+                Asked::OpenBytes(name, bytes) => self.open_bytes(&name, bytes),
+                Asked::Apply(action) => self.apply(action),
+                Asked::Say(status) => self.status = Some(status),
+                Asked::SceneError(message) => self.scene.error = Some(message),
+                Asked::CompareBytes(name, kind, bytes) => {
+                    let read = move |path: &Path| decode_their_image(path, &bytes);
+                    let said = self
+                        .compare
+                        .with_image(&self.against(), name.into(), kind, read);
+                    self.say(said);
+                }
+            }
+        }
+    }
+
     /// What a comparison started now is made against.
-    pub(super) fn against(&self) -> compare::Against {
+    fn against(&self) -> compare::Against {
         compare::Against {
             ctx: self.ctx.clone(),
             scene: std::sync::Arc::clone(&self.scene.loaded.scene),
@@ -143,43 +177,40 @@ impl ViewerApp {
         let last = self.settings.views.last.get(&SceneViews::key(&path));
         self.viewing.opened(last);
         self.panels.fields.path_text = path.display().to_string();
-        self.set_title(&format!("raytracer — {}", path.display()));
+        self.seam
+            .set_title(&self.ctx, &format!("raytracer — {}", path.display()));
     }
 
-    /// Carries out `write` now if it replaces nothing, else asks ([`confirm::wait_for_yes`]); one
-    /// that cannot start is refused before a folder it would make is offered (a page has none).
+    /// Carries out `write` now if it replaces nothing, else asks ([`writes::Writer`]); the seam
+    /// writes its files.
     fn write_or_ask(&mut self, write: Write) {
-        let missing_folder = self.missing_export_folder(&write);
-        let written = self.written();
-        let asked =
-            self.writes
-                .files_of(&write, missing_folder.is_some(), &self.settings, &written);
-        let (scene, compared) = (
-            self.scene.loaded.path.as_deref(),
-            self.compare.watched_files(),
-        );
-        let guarded = confirm::Guarded { scene, compared };
-        match asked.map(|files| confirm::wait_for_yes(write, missing_folder, files, guarded)) {
-            Ok(Ok(write)) => self.write_now(write),
-            Ok(Err(pending)) => self.writes.pending_replace = Some(pending),
-            Err(refused) => self.status = Some(refused),
-        }
+        let typed_folder = &self.settings.export.path;
+        let missing_folder = self.seam.missing_export_folder(&write, typed_folder);
+        let staged = self.writer().write_or_ask(write, missing_folder);
+        self.write_staged(staged);
     }
 
-    /// Carries out `write` (the user has agreed to replace what it replaces).
-    fn write_now(&mut self, write: Write) {
-        self.scene.note_write(&write);
-        match self.writes.stage(write, &self.settings, &self.written()) {
-            Ok(staged) => self.write_files(staged.running, staged.done, staged.stage),
-            Err(status) => self.status = Some(status),
-        }
+    /// Hands the files staged to the seam to write; or says why they were not.
+    fn write_staged(&mut self, staged: Option<Result<writes::StagedWrite, Status>>) {
+        let status = match staged {
+            Some(Ok(staged)) => {
+                let said = (staged.running, staged.done);
+                let (writes, ctx) = (&mut self.writes, &self.ctx);
+                self.seam.write_files(writes, ctx, said, staged.stage)
+            }
+            Some(Err(status)) => status,
+            None => return,
+        };
+        self.status = Some(status);
     }
 
-    /// What a write started now writes: the scene on screen in the view on screen.
-    fn written(&self) -> writes::Written<'_> {
-        writes::Written {
-            loaded: &self.scene.loaded,
-            epoch: self.scene.epoch,
+    /// What a write needs of the viewer's features.
+    fn writer(&mut self) -> writes::Writer<'_> {
+        writes::Writer {
+            writes: &mut self.writes,
+            settings: &self.settings,
+            scene: &mut self.scene,
+            compared: self.compare.watched_files(),
             view: self.viewing.view,
             shown: self.frames.shown.as_ref(),
         }
@@ -187,15 +218,7 @@ impl ViewerApp {
 
     /// Carries out `action`. A one-shot view change is a step of the history of its own.
     pub(crate) fn apply(&mut self, action: Action) {
-        let one_shot = matches!(
-            action,
-            Action::FrameAll
-                | Action::ResetView
-                | Action::ResetDepth
-                | Action::AutoRange
-                | Action::UseDepthRange(_)
-                | Action::GoToView(_)
-        );
+        let one_shot = action.is_one_shot();
         let before = self.viewing.view;
         self.carry_out(action);
         if one_shot {
@@ -205,27 +228,23 @@ impl ViewerApp {
 
     /// Hands `action` to the feature that carries it out; what it says goes to the status bar.
     fn carry_out(&mut self, action: Action) {
-        let path = self.scene.loaded.path.as_deref();
         let status = match action {
-            Action::Reload => self.scene.reload(&self.viewing.view, &self.ctx),
-            Action::AutoRange => {
-                let shown = self.frames.shown.as_ref().map(|shown| &*shown.frame);
-                let cut = self.settings.depth.auto_cut_percent;
-                self.viewing.auto_range(shown, cut)
+            action if action.is_the_views() => {
+                let inputs = viewing::ViewInputs {
+                    loaded: &self.scene.loaded,
+                    shown: self.frames.shown.as_ref(),
+                    views: &mut self.settings.views,
+                    auto_cut_percent: self.settings.depth.auto_cut_percent,
+                };
+                self.viewing.carry_out(action, inputs)
             }
+            Action::Reload => self.scene.reload(&self.viewing.view, &self.ctx),
             Action::Trace => {
                 let view = self.frames.shown.as_ref().map(|shown| &shown.view);
                 let px = self.viewing.pinned_px(self.frames.shown.as_ref());
                 let scene = &self.scene.loaded.scene;
                 pixel_trace::open(&mut self.panels.trace, scene, view, px, &self.compare)
             }
-            Action::Undo => self.viewing.undo(),
-            Action::Redo => self.viewing.redo(),
-            Action::NameView(name) => Some(self.viewing.name_view(
-                &mut self.settings.views,
-                path,
-                &name,
-            )),
             Action::CompareImage(path, kind) => self.compare.with_file(&self.against(), path, kind),
             Action::CompareQuality => {
                 let quality = self.settings.quality;
@@ -236,63 +255,48 @@ impl ViewerApp {
         self.say(status);
     }
 
-    /// Hands `action`, one that says nothing, to the feature that carries it out.
+    /// Hands `action`, one that says nothing, to the feature that carries it out (the seam's
+    /// requests, what it asks for, are carried out in turn).
     fn carry_out_quietly(&mut self, action: Action) {
-        let path = self.scene.loaded.path.as_deref();
-        match action {
-            Action::OpenDialog(kind) => self.open_dialog(kind),
-            Action::Open(path) => self.open_path(&path),
-            Action::OpenBundled(index) => {
-                if let Some((name, text)) = crate::scene::bundled::BUNDLED_SCENES.get(index) {
-                    self.open_bytes(name, std::sync::Arc::from(text.as_bytes()));
-                }
+        let asked = match action {
+            Action::OpenDialog(kind) => {
+                let (writes, export) = (&mut self.writes, &self.settings.export);
+                self.seam.open_dialog(kind, writes, export, &self.ctx)
             }
-            Action::FrameAll => self.frame_all(),
-            Action::ResetView => self.viewing.reset_view(&self.scene.loaded.file_view),
-            Action::ResetDepth => self.viewing.reset_depth(&self.scene.loaded.file_view),
-            Action::UseDepthRange(range) => self.viewing.view.depth_range = range,
-            Action::GoToView(index) => {
-                self.viewing
-                    .go_to_view(&mut self.settings.views, path, index);
+            Action::Open(path) => self.seam.open_path(&path),
+            Action::OpenBundled(index) => BUNDLED_SCENES
+                .get(index)
+                .map(|(name, text)| Asked::OpenBytes((*name).into(), text.as_bytes().into())),
+            Action::ToggleHelp => {
+                self.panels.help_open = !self.panels.help_open;
+                None
             }
-            Action::ForgetView(index) => {
-                viewing::forget_view(&mut self.settings.views, path, index);
+            Action::Write(write) => return self.write_or_ask(write),
+            Action::Confirmed(Answer::Write(write)) => {
+                let staged = self.writer().write_now(write);
+                return self.write_staged(Some(staged));
             }
-            Action::ToggleHelp => self.panels.help_open = !self.panels.help_open,
-            Action::ResetMagnifier => self.viewing.magnifier = Default::default(),
-            Action::Write(write) => self.write_or_ask(write),
-            Action::Confirmed(Answer::Write(write)) => self.write_now(write),
             // Into the new folder, asking again should anything be there meanwhile.
             Action::Confirmed(Answer::CreateFolder(folder, write)) => {
                 match writes::create_folder(&folder) {
-                    Ok(()) => self.write_or_ask(write),
-                    Err(status) => self.status = Some(status),
+                    Ok(()) => return self.write_or_ask(write),
+                    Err(status) => Some(Asked::Say(status)),
                 }
-            }
-            Action::Navigate(navigation) => {
-                let (scene, size_px) = (&self.scene.loaded.scene, self.frames.size_px());
-                self.viewing.navigate(navigation, scene, size_px);
             }
             Action::Pin(px) => {
                 // The point itself is pinned, so the pin stays on it while the view moves.
                 if let Some(probe) = self.probe_at(px) {
                     self.viewing.probe.pinned_world = Some(point_of_probe(&probe));
                 }
+                None
             }
-            Action::Unpin => self.viewing.probe.pinned_world = None,
-            Action::CompareShow(show) => self.compare.show_if_open(show),
-            Action::CompareFlip => self.compare.flip(),
-            Action::CompareDifference => self.compare.toggle_difference(),
-            Action::CompareClose => self.compare.close(),
-            Action::Reload // (said above)
-            | Action::AutoRange
-            | Action::Undo
-            | Action::Redo
-            | Action::NameView(_)
-            | Action::Trace
-            | Action::CompareImage(..)
-            | Action::CompareQuality => {}
-        }
+            Action::CompareShow(show) => return self.compare.show_if_open(show),
+            Action::CompareFlip => return self.compare.flip(),
+            Action::CompareDifference => return self.compare.toggle_difference(),
+            Action::CompareClose => return self.compare.close(),
+            _ => None, // (carried out in carry_out)
+        };
+        self.take_asked(asked);
     }
 
     // What the viewer shows, read from outside: the tests and tools (screenshots, benchmarks)
@@ -333,10 +337,7 @@ impl ViewerApp {
 
     /// The histogram of visible t of the frame on screen.
     pub fn histogram(&self) -> Option<&DepthHistogram> {
-        self.frames
-            .shown
-            .as_ref()
-            .and_then(|s| s.histogram.as_ref())
+        self.frames.shown.as_ref()?.histogram.as_ref()
     }
 
     /// Probes the frame on screen at image position `px` (pixels, y up).
@@ -379,9 +380,8 @@ impl ViewerApp {
 
     /// The status bar's message and whether it is an error.
     pub fn message(&self) -> Option<(&str, bool)> {
-        self.status
-            .as_ref()
-            .map(|s| (s.text.as_str(), s.is_error()))
+        let status = self.status.as_ref()?;
+        Some((status.text.as_str(), status.is_error()))
     }
 
     /// True while an export or a saved view is being written.
@@ -407,10 +407,8 @@ impl ViewerApp {
 
     /// Waits (for tests and tools) until the worker has nothing to do.
     pub fn wait_for_worker(&self, timeout: Duration) -> bool {
-        self.frames
-            .worker
-            .as_ref()
-            .is_none_or(|w| w.wait_idle(timeout))
+        let worker = self.frames.worker.as_ref();
+        worker.is_none_or(|worker| worker.wait_idle(timeout))
     }
 
     /// The comparison on screen (Compare section), if any.
@@ -435,7 +433,8 @@ impl eframe::App for ViewerApp {
         if let Some(log) = &mut self.frames.log {
             log.ui(frame.info().cpu_usage);
         }
-        self.poll_platform();
+        let asked = self.seam.poll(&self.ctx, self.compare.closes);
+        self.take_asked(asked);
         if self.frames.take_in(&self.ctx, &mut self.status) {
             let (depth, shown) = (&self.settings.depth, self.frames.shown.as_ref());
             self.viewing.follow_depth(depth, shown, self.scene.epoch);
@@ -443,12 +442,10 @@ impl eframe::App for ViewerApp {
         self.receive_scene();
         let (export, compare_path) = (&mut self.settings.export, &mut self.compare.path_text);
         let (saving_over, status) = (&mut self.scene.saving_over, &mut self.status);
-        if let Some(action) = self
+        let action = self
             .writes
-            .take_in(export, compare_path, saving_over, status)
-        {
-            self.apply(action);
-        }
+            .take_in(export, compare_path, saving_over, status);
+        action.into_iter().for_each(|action| self.apply(action));
         let (scene, view) = (&self.scene.loaded.scene, &mut self.viewing.view);
         self.compare.take_in(&ctx, scene, view, &mut self.status);
         let (help_open, watcher) = (self.panels.help_open, self.scene.watcher.as_ref());
@@ -458,7 +455,8 @@ impl eframe::App for ViewerApp {
         }
         self.say(input.refused);
         for file in input.dropped {
-            self.open_dropped(file);
+            let asked = self.seam.dropped(file, self.compare.kind);
+            self.take_asked(asked);
         }
         let window = layout::Window {
             settings: &mut self.settings,
@@ -478,7 +476,7 @@ impl eframe::App for ViewerApp {
         }
         self.viewing.observe();
         let (scene, wanted) = (&self.scene.loaded.scene, self.wanted());
-        if !self.first_scene_on_its_way() {
+        if self.frames.shown.is_some() || !self.seam.first_scene_on_its_way() {
             self.frames.submit_if_changed(scene, wanted, &self.ctx);
         }
         if layout::busy(&self.frames, &self.writes, &self.compare) {
@@ -486,7 +484,7 @@ impl eframe::App for ViewerApp {
         }
     }
 
-    /// The page's handle reads the app through this (`app::web::WebHandle`).
+    /// The page's handle reads the app through this (`app::start::page::WebHandle`).
     #[cfg(target_arch = "wasm32")]
     fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
         Some(self)

@@ -6,6 +6,8 @@ use std::path::Path;
 
 use glam::{DVec2, DVec3};
 
+use super::actions::Action;
+use super::loaded_scene::LoadedScene;
 use super::probe::pixel_of_point;
 use super::render_requests::Shown;
 use super::saved_views::{History, NamedView, SavedView, SceneViews};
@@ -13,7 +15,7 @@ use super::settings::DepthDisplay;
 use super::status::Status;
 use super::ui::magnifier::Magnifier;
 use crate::app::depth_stats::auto_range;
-use crate::app::navigate;
+use crate::app::navigate::{self, Navigation};
 use crate::render::depth_map::DepthRange;
 use crate::render::{Frame, View};
 use crate::scene::Scene;
@@ -24,23 +26,6 @@ use crate::scene::Scene;
 pub(crate) struct ProbePoints {
     pub(crate) hover_px: Option<DVec2>,
     pub(crate) pinned_world: Option<DVec3>,
-}
-
-/// A move of the view or the magnifier, from the keyboard or a gesture on the images.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum Navigation {
-    /// Pan by this many image pixels (y up), as [`navigate::pan`].
-    Pan(DVec2),
-    /// Orbit around the scene's centre: yaw as a drag to the right, pitch up (radians).
-    Orbit(DVec2),
-    /// Zoom by this factor (the size multiplied) at this image position (pixels, y up).
-    ZoomAt(f64, DVec2),
-    /// Magnify the images by this factor at this image position (no new render).
-    Magnify(f64, DVec2),
-    /// Move the magnified part by this many image pixels.
-    PanMagnifier(DVec2),
-    /// The pointer is over this image position, or over neither image.
-    Hover(Option<DVec2>),
 }
 
 /// The viewer's "view and history" feature: the view the controls edit, its undo history, the
@@ -239,6 +224,52 @@ impl Viewing {
     }
 }
 
+/// What the view's actions read besides the view: the open scene, the frame on screen, the named
+/// views the settings keep, and the auto range's cut at each end (percent).
+pub(crate) struct ViewInputs<'a> {
+    pub(crate) loaded: &'a LoadedScene,
+    pub(crate) shown: Option<&'a Shown>,
+    pub(crate) views: &'a mut SceneViews,
+    pub(crate) auto_cut_percent: f64,
+}
+
+impl Viewing {
+    /// Carries out `action` where it is the view's (navigation, resets, ranges, history, named
+    /// views, unpinning, the magnifier): what the status bar says. Any other action is not the
+    /// view's, and does nothing here.
+    pub(crate) fn carry_out(&mut self, action: Action, inputs: ViewInputs<'_>) -> Option<Status> {
+        let ViewInputs {
+            loaded,
+            shown,
+            views,
+            auto_cut_percent,
+        } = inputs;
+        let path = loaded.path.as_deref();
+        match action {
+            Action::AutoRange => {
+                return self.auto_range(shown.map(|shown| &*shown.frame), auto_cut_percent);
+            }
+            Action::Undo => return self.undo(),
+            Action::Redo => return self.redo(),
+            Action::NameView(name) => return Some(self.name_view(views, path, &name)),
+            Action::FrameAll => self.frame_all(&loaded.scene),
+            Action::ResetView => self.reset_view(&loaded.file_view),
+            Action::ResetDepth => self.reset_depth(&loaded.file_view),
+            Action::UseDepthRange(range) => self.view.depth_range = range,
+            Action::GoToView(index) => self.go_to_view(views, path, index),
+            Action::ForgetView(index) => forget_view(views, path, index),
+            Action::Navigate(navigation) => {
+                let size_px = shown.map(|s| [s.frame.width_px, s.frame.height_px]);
+                self.navigate(navigation, &loaded.scene, size_px);
+            }
+            Action::Unpin => self.probe.pinned_world = None,
+            Action::ResetMagnifier => self.magnifier = Magnifier::default(),
+            _ => {}
+        }
+        None
+    }
+}
+
 /// The named views of the scene file at `path` among `saved`, for changing; `None` for a scene
 /// with no file.
 fn named_views<'a>(
@@ -249,7 +280,7 @@ fn named_views<'a>(
 }
 
 /// Forgets the named view at `index` of the scene file at `path`.
-pub(crate) fn forget_view(saved: &mut SceneViews, path: Option<&Path>, index: usize) {
+fn forget_view(saved: &mut SceneViews, path: Option<&Path>, index: usize) {
     if let Some(named) = named_views(saved, path)
         && index < named.len()
     {

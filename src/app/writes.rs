@@ -10,12 +10,13 @@ use std::sync::Arc;
 
 use super::actions::{Action, Write};
 use super::background::{Poll, Task};
-use super::confirm::PendingReplace;
+use super::confirm::{self, PendingReplace};
 use super::course_files::{course_files, course_files_stage};
 use super::dialogs::{DialogAnswer, DialogKind, PendingDialog};
 use super::loaded_scene::LoadedScene;
 use super::render_job::{DepthStyle, ViewerJob, prepare_frame};
 use super::render_requests::Shown;
+use super::scene_loading::OpenScene;
 use super::settings::{ExportFormat, ExportSettings, Settings};
 use super::status::Status;
 use crate::export::{ExportFiles, ExportPlan, stage_export, stage_view_as_scene};
@@ -34,6 +35,69 @@ pub(crate) struct StagedWrite {
     pub(crate) running: &'static str,
     pub(crate) done: String,
     pub(crate) stage: Stager,
+}
+
+/// A write asked for, with what it needs of the viewer's features: the files it writes are
+/// worked out, the user asked before any is replaced or a folder made, and its files staged for
+/// the seam to write.
+pub(crate) struct Writer<'a> {
+    pub(crate) writes: &'a mut Writes,
+    pub(crate) settings: &'a Settings,
+    /// The open scene (a write over its file is noted, so that its reload keeps the view).
+    pub(crate) scene: &'a mut OpenScene,
+    /// The files being compared, never replaced without being asked.
+    pub(crate) compared: [Option<&'a Path>; 2],
+    pub(crate) view: View,
+    pub(crate) shown: Option<&'a Shown>,
+}
+
+impl Writer<'_> {
+    /// `write`'s files staged, to write now if they replace nothing; else `None`, the user asked
+    /// first ([`confirm::wait_for_yes`]: `missing_folder` is the folder it would make, the seam
+    /// says). One that cannot start is refused before a folder it would make is offered: why.
+    pub(crate) fn write_or_ask(
+        self,
+        write: Write,
+        missing_folder: Option<PathBuf>,
+    ) -> Option<Result<StagedWrite, Status>> {
+        let written = self.written();
+        let no_folder = missing_folder.is_some();
+        let files = match self
+            .writes
+            .files_of(&write, no_folder, self.settings, &written)
+        {
+            Ok(files) => files,
+            Err(refused) => return Some(Err(refused)),
+        };
+        let scene = self.scene.loaded.path.as_deref();
+        let guarded = confirm::Guarded {
+            scene,
+            compared: self.compared,
+        };
+        match confirm::wait_for_yes(write, missing_folder, files, guarded) {
+            Ok(write) => Some(self.write_now(write)),
+            Err(pending) => {
+                self.writes.pending_replace = Some(pending);
+                None
+            }
+        }
+    }
+
+    /// `write`'s files staged (the user has agreed to replace what it replaces), or why not.
+    pub(crate) fn write_now(self, write: Write) -> Result<StagedWrite, Status> {
+        self.scene.note_write(&write);
+        self.writes.stage(write, self.settings, &self.written())
+    }
+
+    /// What a write started now writes: the scene on screen in the view on screen.
+    fn written(&self) -> Written<'_> {
+        Written {
+            loaded: &self.scene.loaded,
+            epoch: self.scene.epoch,
+            view: self.view,
+            shown: self.shown,
+        }
+    }
 }
 
 /// The scene on screen at its load `epoch` and the view that is written; the frame on screen, if

@@ -155,7 +155,7 @@ done
   echo "viewer's other threads took."
   echo
   echo "This run: the window painted with $(echo $renderers | tr ' ' '\n' | sort -u | tr '\n' ' ' | sed 's/ $//')"
-  echo "(as the viewer's frame log says; ${RAYTRACER_RENDERER:+\`RAYTRACER_RENDERER=$RAYTRACER_RENDERER\`, }see src/app/desktop/window.rs)."
+  echo "(as the viewer's frame log says; ${RAYTRACER_RENDERER:+\`RAYTRACER_RENDERER=$RAYTRACER_RENDERER\`, }see src/app/start/window.rs)."
   if [ -n "${LP_NUM_THREADS:-}" ]; then
     echo
     echo "This run: \`LP_NUM_THREADS=$LP_NUM_THREADS\`, Mesa's software painter on $LP_NUM_THREADS thread(s) instead of one per"

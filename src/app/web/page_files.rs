@@ -1,7 +1,7 @@
 //! The page's files on their way in (`wasm32`): dropped on the page, chosen with the browser's
 //! file input or (where the browser has one) its file picker, which also watches the image
 //! chosen, and fetched from the page's own site. They land in the [`Page`]'s inbox and the viewer
-//! takes them at its next frame (`app/web.rs`).
+//! takes them at its next frame (`Page::poll`, in `app/web.rs`).
 
 use std::cell::{Cell, RefCell};
 use std::path::Path;
