@@ -6,6 +6,10 @@
 //! 1% of their pixels.
 //!
 //! `docs/diagnosis.md` (`cargo run --release --example diagnosis_report`) reports every image.
+//!
+//! The two tests that compare every image of every program (some 600 diagnoses, minutes on the
+//! debug build) are left out of a plain `cargo test`: `cargo xtask corpus` runs all of them on
+//! the program the download ships (`RAYTRACER_CORPUS_BIN`), and CI runs that.
 
 #[path = "../examples/support/corpus.rs"]
 mod corpus;
@@ -15,7 +19,7 @@ mod course;
 mod judge;
 
 use std::collections::BTreeSet;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
 use raytracer::compare::Mistake;
@@ -59,9 +63,17 @@ fn compare_all(binary: &Path, programs: &[Program]) -> Vec<(String, String, Outc
     results
 }
 
+/// The program compared with: `RAYTRACER_CORPUS_BIN` (`cargo xtask corpus` gives the one the
+/// download ships), else the test build's.
+fn binary() -> PathBuf {
+    std::env::var_os("RAYTRACER_CORPUS_BIN")
+        .map_or_else(|| PathBuf::from(env!("CARGO_BIN_EXE_raytracer")), PathBuf::from)
+}
+
 #[test]
+#[ignore = "every image of every program: `cargo xtask corpus` runs it on the release build"]
 fn the_corpus_gets_no_false_statement_and_nearly_every_image_explained() {
-    let binary = Path::new(env!("CARGO_BIN_EXE_raytracer"));
+    let binary = &binary();
     let vocabulary: Vec<&str> = Mistake::ALL.iter().map(|m| m.word()).collect();
     let programs = programs();
     assert!(programs.len() >= 20, "{}", programs.len());
@@ -153,7 +165,7 @@ fn says_the_raw_up_ramp(file: &str, said: &[String]) -> bool {
 /// named; the model's search now tells them apart.
 #[test]
 fn kskun_s_scene1_07_is_named_as_its_code_makes_it() {
-    let binary = Path::new(env!("CARGO_BIN_EXE_raytracer"));
+    let binary = &binary();
     let programs = programs();
     let kskun = programs.iter().find(|p| p.name == "kskun").expect("kskun");
     let image = images()
@@ -175,8 +187,9 @@ fn kskun_s_scene1_07_is_named_as_its_code_makes_it() {
 /// (14 … 19 for 14.5 … 19.5). Programs that normalise depth per image (dengpingzju,
 /// moonlightcc) or map another quantity are left out: their ranges are not the command line's.
 #[test]
+#[ignore = "every image of every program: `cargo xtask corpus` runs it on the release build"]
 fn the_depth_range_read_back_is_the_one_the_program_used() {
-    let binary = Path::new(env!("CARGO_BIN_EXE_raytracer"));
+    let binary = &binary();
     let mut wrong = Vec::new();
     let mut checked = 0;
     for program in programs().iter().filter(|p| {

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# The diagnosis on the real programs' images (tests/corpus.rs), on the program the download ships.
+#   cargo xtask corpus [ARGUMENT…]   (ARGUMENTs go to the test binary: `cargo xtask corpus range`)
+#
+# Builds the program in the `dist` profile (nothing to do where `cargo xtask release build` has
+# just built it, as in CI), then runs every test of tests/corpus.rs against it, the two that
+# compare every image of every program included: a plain `cargo test` (the README's test
+# command) leaves those two out, for they diagnose some 600 images one after another and take
+# minutes on the debug build. Run it after a change to the comparison or the diagnosis; CI runs
+# it on every change.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+
+cargo build --profile dist --bin raytracer
+RAYTRACER_CORPUS_BIN="$PWD/target/dist/raytracer" cargo test --test corpus -- --include-ignored "$@"
