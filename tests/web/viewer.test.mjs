@@ -263,6 +263,19 @@ test("an image picked where the browser lets the page keep it is compared again 
   await page.waitForFunction(() => /: match$/.test(window.raytracer.message() ?? ""), null, { timeout: 60_000 });
   assert.equal(await page.evaluate(() => window.raytracer.message()), "compared output1_04.tga: match");
   assert.deepEqual(await page.evaluate(() => window.raytracer.diagnosis()), []);
+  // Another scene opened closes the comparison, and the watch with it: the file written again
+  // is not compared (against a scene it is not of).
+  await dropFiles(page, [["scene1_02.txt", fs.readFileSync(path.resolve(env.scenes, "scene1_02.txt"))]]);
+  await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_02.txt", null, { timeout: 60_000 });
+  await settled(page);
+  assert.deepEqual(await page.evaluate(() => window.raytracer.compared()), []);
+  const opened = await page.evaluate(() => window.raytracer.message());
+  await write(flipped);
+  // Four times the page's look at a watched file (500 ms).
+  await page.waitForTimeout(2_000);
+  await settled(page);
+  assert.deepEqual(await page.evaluate(() => window.raytracer.compared()), [], "the closed comparison's file was compared again");
+  assert.equal(await page.evaluate(() => window.raytracer.message()), opened);
   await context.close();
 });
 
