@@ -66,8 +66,10 @@ fn compare_all(binary: &Path, programs: &[Program]) -> Vec<(String, String, Outc
 /// The program compared with: `RAYTRACER_CORPUS_BIN` (`cargo xtask corpus` gives the one the
 /// download ships), else the test build's.
 fn binary() -> PathBuf {
-    std::env::var_os("RAYTRACER_CORPUS_BIN")
-        .map_or_else(|| PathBuf::from(env!("CARGO_BIN_EXE_raytracer")), PathBuf::from)
+    std::env::var_os("RAYTRACER_CORPUS_BIN").map_or_else(
+        || PathBuf::from(env!("CARGO_BIN_EXE_raytracer")),
+        PathBuf::from,
+    )
 }
 
 #[test]

@@ -3,7 +3,8 @@
 //!   rows that are, verbatim, rows of that generated report (the reports are written by committed commands), and every
 //!   code block so marked holds lines of it;
 //! * every row of docs/robustness.md cites tests that exist (or says "same" for the row above);
-//! * the README is a front door: at most 250 lines, the download its first section.
+//! * the README is a front door: at most 250 lines, the download its first section;
+//! * the README's times of the last CI run are those of docs/ci-steps.txt.
 
 #[path = "common/source_tree.rs"]
 #[allow(dead_code)] // the file walk alone
@@ -194,3 +195,52 @@ fn the_readme_is_short_and_starts_with_the_download() {
 
 /// The most lines the README may have.
 const README_MOST_LINES: usize = 250;
+
+/// The seconds `.ci/run` printed for `step` (`ci-step: N s: STEP`, or `ci-total: N s` for
+/// "total") in docs/ci-steps.txt.
+fn ci_seconds(steps: &str, step: &str) -> u64 {
+    steps
+        .lines()
+        .find_map(|line| {
+            let rest = if step == "total" {
+                line.strip_prefix("ci-total: ")?.strip_suffix(" s")?
+            } else {
+                line.strip_prefix("ci-step: ")?
+                    .strip_suffix(&format!(" s: {step}"))?
+            };
+            rest.parse().ok()
+        })
+        .unwrap_or_else(|| panic!("docs/ci-steps.txt has no {step}"))
+}
+
+/// The README's sentence on the last fresh-clone run of CI gives the test command's time and
+/// CI's, each in minutes and seconds: the seconds are docs/ci-steps.txt's, the minutes rounded
+/// from them, and the commit the run was made on is named there.
+#[test]
+fn the_readmes_ci_times_are_those_of_the_ci_steps_it_cites() {
+    let steps = read("docs/ci-steps.txt");
+    assert!(
+        steps.starts_with("# .ci/run on a fresh clone of "),
+        "docs/ci-steps.txt names the commit it ran on: {}",
+        steps.lines().next().unwrap_or("")
+    );
+    let readme = read("README.md").replace('\n', " ");
+    let sentence = readme
+        .split("In the last fresh-clone run of CI")
+        .nth(1)
+        .and_then(|rest| rest.split("docs/ci-steps.txt").next())
+        .expect("the README's sentence on the last CI run, citing docs/ci-steps.txt");
+    let figures: Vec<u64> = sentence
+        .split(|c: char| !c.is_ascii_digit())
+        .filter_map(|word| word.parse().ok())
+        .filter(|&n| n != 2) // "2 cores"
+        .collect();
+    let test_s = ci_seconds(&steps, "cargo xtask test");
+    let total_s = ci_seconds(&steps, "total");
+    let minutes = |s: u64| (s + 30) / 60;
+    assert_eq!(
+        figures,
+        [minutes(test_s), test_s, minutes(total_s), total_s],
+        "the README says {sentence:?}; docs/ci-steps.txt says {test_s} s and {total_s} s"
+    );
+}
