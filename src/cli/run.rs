@@ -348,19 +348,20 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
     };
     // Its text is counted before it is made: a line holds a dozen numbers printed in full, some
     // 150 bytes or, at the extremes of f64, thousands.
-    let trace_bound = match &traced {
+    let (trace_bound, trace_text_bytes) = match &traced {
         Some(traced) => {
+            let text = traced.text_bytes();
             // As JSON, the answer holds a copy of the text, each line quoted.
             let as_json = request
                 .answer_as_json()
-                .then(|| traced.text_bytes() + traced.spheres.len() as u64 * JSON_LINE_BYTES);
-            let counted = traced.text_bound_bytes() + as_json.unwrap_or(0);
+                .then(|| text + traced.spheres.len() as u64 * JSON_LINE_BYTES);
+            let counted = traced.records_bytes() + text + as_json.unwrap_or(0);
             if counted > trace_bound {
                 check_memory(request, BASELINE_BYTES + counted, traced_spheres)?;
             }
-            counted
+            (counted, text)
         }
-        None => 0,
+        None => (0, 0),
     };
     let streamed = streams(request);
     let measuring = Instant::now();
@@ -408,7 +409,7 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
             disc_tests: streamed.disc_tests,
             memory_bound,
             compare: None,
-            trace: traced.map(|traced| traced.text()),
+            trace: traced.map(|traced| traced.text_sized(trace_text_bytes)),
         });
     }
     let started = Instant::now();
@@ -438,7 +439,7 @@ pub fn run(request: &RenderRequest) -> Result<RunReport, RunError> {
         if traced.depth_range.is_none() {
             traced.depth_range = compare_report.as_ref().and_then(|r| r.depth_range_used);
         }
-        let mut text = traced.text();
+        let mut text = traced.text_sized(trace_text_bytes);
         text.push_str(&their_pixel_lines(
             &scene,
             &theirs,

@@ -180,7 +180,12 @@ impl PixelTrace {
 
     /// The trace as plain text, one step a line.
     pub fn text(&self) -> String {
-        let mut out = String::new();
+        self.text_sized(self.text_bytes())
+    }
+
+    /// [`Self::text`], made in a string of `bytes` (what [`Self::text_bytes`] counted).
+    pub fn text_sized(&self, bytes: u64) -> String {
+        let mut out = String::with_capacity(usize::try_from(bytes).unwrap_or(0));
         let (width, height) = self.size_px;
         let (u, v) = self.screen_uv;
         let _ = writeln!(
@@ -226,7 +231,6 @@ impl PixelTrace {
         // first and made in a string of its size, with room for the lines after it and what the
         // command adds (grown by doubling, the old and the new buffer were both held: up to
         // three times the text, and a peak that varied from run to run).
-        out.reserve(self.sphere_lines_bytes() + TEXT_ROOM_BYTES);
         self.write_sphere_lines(&mut out);
         let [r, g, b] = self.colour;
         let [rb, gb, bb] = self.colour_bytes;
@@ -267,14 +271,13 @@ impl PixelTrace {
         out
     }
 
-    /// The bytes the trace holds at most while its text is made: its records, and the text with
-    /// its room, counted (a number prints in full, so a line is 200 bytes or a few thousand).
-    pub fn text_bound_bytes(&self) -> u64 {
-        (self.spheres.capacity() * std::mem::size_of::<SphereTrace>()) as u64 + self.text_bytes()
+    /// The bytes its records hold.
+    pub fn records_bytes(&self) -> u64 {
+        (self.spheres.capacity() * std::mem::size_of::<SphereTrace>()) as u64
     }
 
-    /// The bytes of its text at most, counted without making it: the sphere lines and the
-    /// room kept after them.
+    /// The bytes of its text at most, counted without making it (a number prints in full, so a
+    /// line is 200 bytes or a few thousand): the sphere lines and the room kept after them.
     pub fn text_bytes(&self) -> u64 {
         (self.sphere_lines_bytes() + TEXT_ROOM_BYTES) as u64
     }

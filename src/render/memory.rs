@@ -66,8 +66,8 @@ pub fn render_bound_bytes(
 
 /// Per sphere of a pixel's trace (`-trace`), checked before it is made: its record (80 bytes)
 /// and a line of text of some 300 bytes, every number printed to 17 digits. Once it is made, its
-/// text is counted and the count is the bound (`PixelTrace::text_bound_bytes`): a number far
-/// from 1 prints in full, hundreds of digits.
+/// text is counted, and the count with its records is the bound (`PixelTrace::text_bytes`): a
+/// number far from 1 prints in full, hundreds of digits.
 pub const TRACE_BYTES_PER_SPHERE: u64 = 384;
 
 /// The bound, in bytes, that a pixel's trace adds for `sphere_count` spheres.
