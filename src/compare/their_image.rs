@@ -86,8 +86,8 @@ impl TheirImageError {
 /// How long [`read_their_image_settled`] waits between two looks at a file being written.
 const SETTLE_WAIT: std::time::Duration = std::time::Duration::from_millis(100);
 
-/// How many looks [`read_their_image_settled`] takes before it says the last error: three
-/// seconds for a program to finish writing its image.
+/// How many looks [`read_their_image_settled`] takes before it says the last error: 3 s for a
+/// program to finish writing its image.
 const SETTLE_LOOKS: u32 = 30;
 
 /// Reads their image as [`read_their_image`] does, once their program has finished writing it:

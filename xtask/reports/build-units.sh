@@ -51,7 +51,7 @@ w("# Where the test profile's build goes (2 cores)")
 w()
 w(f"cargo's timings of `cargo test --lib --bins --tests --no-run --timings` from an empty target")
 w(f"folder, at {commit}" + (f", {when.group(1)[:4]}-{when.group(1)[4:6]}-{when.group(1)[6:]}" if when else "") +
-  "; read by `bash xtask/reports/build-units.sh` (`cargo xtask report build-units` builds and")
+  ". Read by `bash xtask/reports/build-units.sh` (`cargo xtask report build-units` builds and")
 w("reads). Every unit's start and seconds are in [build-units.tsv](build-units.tsv).")
 w()
 w(f"The build took {wall:.0f} s of wall time; its units' seconds add up to {total:.0f} s (two")
