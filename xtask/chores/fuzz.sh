@@ -49,7 +49,9 @@ fi
 cargo +nightly fuzz build --release
 # Thread exits the leak check may see before they finish (fuzz/lsan-suppressions.txt says why).
 export LSAN_OPTIONS="suppressions=$root/fuzz/lsan-suppressions.txt:print_suppressions=0"
-for target in ${FUZZ_TARGETS:-scene command_line}; do
+# One target's run, its lines prefixed with its name; exits with libFuzzer's status.
+fuzz_one() {
+  local target=$1 corpus log status
   corpus=$(mktemp -d)
   cp corpus/"$target"/* "$corpus"/
   log=/dev/null
@@ -68,7 +70,8 @@ for target in ${FUZZ_TARGETS:-scene command_line}; do
   set +e +o pipefail
   cargo +nightly fuzz run --release "$target" "$corpus" -- \
     -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-    2>&1 | sed -e "s#$root/##g" -e "s#$root#.#g" -e "s#$corpus#<copy of fuzz/corpus/$target>#g" | tee "$log" | grep -E '^(Done|stat::|==|SUMMARY|INFO: Seed)|ERROR|panicked'
+    2>&1 | sed -e "s#$root/##g" -e "s#$root#.#g" -e "s#$corpus#<copy of fuzz/corpus/$target>#g" | tee "$log" | grep --line-buffered -E '^(Done|stat::|==|SUMMARY|INFO: Seed)|ERROR|panicked' \
+    | sed -u "s/^/$target: /"
   status=${PIPESTATUS[0]}
   set -e -o pipefail
   rm -rf "$corpus"
@@ -76,4 +79,17 @@ for target in ${FUZZ_TARGETS:-scene command_line}; do
     echo "fuzzing $target failed (status $status); the input is in fuzz/artifacts/$target/" >&2
     exit "$status"
   fi
+}
+
+# The targets at once, each libFuzzer on one core (a campaign is one process on one thread):
+# the step takes SECONDS, not SECONDS per target.
+pids=()
+for target in ${FUZZ_TARGETS:-scene command_line}; do
+  fuzz_one "$target" &
+  pids+=($!)
 done
+failed=0
+for pid in "${pids[@]}"; do
+  wait "$pid" || failed=$?
+done
+exit "$failed"

@@ -26,9 +26,14 @@ bindgen_version() {
   awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock
 }
 
-install_tools() {
+# The wasm32 target, where missing.
+install_target() {
   rustup target list --installed 2>/dev/null | grep -qx wasm32-unknown-unknown \
     || rustup target add wasm32-unknown-unknown
+}
+
+# Installs wasm-bindgen-cli at the version Cargo.lock pins, where target/tools/ lacks it.
+install_bindgen() {
   local version
   version=$(bindgen_version)
   if [ -z "$version" ]; then
@@ -41,9 +46,17 @@ install_tools() {
   fi
 }
 
+# The page: the program built for wasm32 while wasm-bindgen-cli is installed beside it (the
+# program's last unit compiles on one core; the tool takes the other), then bound by it.
 build() {
-  install_tools
-  cargo build --release --target wasm32-unknown-unknown --bin raytracer
+  install_target
+  install_bindgen &
+  local installing=$!
+  if ! cargo build --release --target wasm32-unknown-unknown --bin raytracer; then
+    kill "$installing" 2>/dev/null || true
+    exit 1
+  fi
+  wait "$installing"
   rm -rf "$site"
   mkdir -p "$site"
   "$tools/bin/wasm-bindgen" --target web --no-typescript --out-dir "$site" --out-name raytracer \
