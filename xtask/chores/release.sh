@@ -170,9 +170,10 @@ sizes() {
 case "${1:-}" in
   build)
     rm -rf "$dist"
-    # The notice (cargo-about installed where missing, then run over the crates' licences: both
-    # mostly on one core) is made while the Linux program builds (its last unit on one core).
-    notice &
+    # The notice (cargo-about installed where missing, then run over the crates' licences) is
+    # made while the Linux program builds, at the lowest priority: it takes the core the build
+    # leaves idle (its last unit compiles on one) and slows the build no more than that.
+    (renice -n 19 -p "$BASHPID" >/dev/null && notice) &
     noticing=$!
     if ! cargo build --profile dist --bin raytracer; then
       kill "$noticing" 2>/dev/null || true
