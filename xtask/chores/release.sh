@@ -33,7 +33,7 @@ notice() {
     # A tool run once needs no link-time optimisation: without it (and in 16 units) it builds
     # sooner.
     CARGO_PROFILE_RELEASE_LTO=false CARGO_PROFILE_RELEASE_CODEGEN_UNITS=16 \
-      cargo install cargo-about --version "$about_version" --locked --root "$tools" --quiet
+      cargo install cargo-about --version "$about_version" --locked --root "$tools" --quiet --force
   fi
   mkdir -p "$dist"
   # The default features: what the programs are built with (the viewer and mimalloc).

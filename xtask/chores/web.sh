@@ -42,7 +42,8 @@ install_bindgen() {
   fi
   if [ "$("$tools/bin/wasm-bindgen" --version 2>/dev/null | awk '{print $2}')" != "$version" ]; then
     echo "web.sh: installing wasm-bindgen-cli $version"
-    cargo install wasm-bindgen-cli --version "$version" --root "$tools" --quiet
+    # --force: cargo skips a version it has recorded as installed, even with its program gone.
+    cargo install wasm-bindgen-cli --version "$version" --root "$tools" --quiet --force
   fi
 }
 
