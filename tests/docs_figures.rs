@@ -52,14 +52,7 @@ fn figures(text: &str) -> Vec<Figure> {
             i += 1;
             continue;
         }
-        let mut end = i;
-        while end < chars.len()
-            && (chars[end].is_ascii_digit()
-                || (matches!(chars[end], ',' | '.')
-                    && chars.get(end + 1).is_some_and(char::is_ascii_digit)))
-        {
-            end += 1;
-        }
+        let end = number_end(&chars, i, &[',', '.']);
         let number: String = chars[i..end].iter().collect();
         let mut unit_start = end;
         if chars
@@ -93,6 +86,20 @@ fn figures(text: &str) -> Vec<Figure> {
     found
 }
 
+/// Where the number starting at `start` ends: its digits, and each of `separators` that a digit
+/// follows (`1,152.5`; `20_000` in code).
+fn number_end(chars: &[char], start: usize, separators: &[char]) -> usize {
+    let mut end = start;
+    while end < chars.len()
+        && (chars[end].is_ascii_digit()
+            || (separators.contains(&chars[end])
+                && chars.get(end + 1).is_some_and(char::is_ascii_digit)))
+    {
+        end += 1;
+    }
+    end
+}
+
 /// Whether a digit follows the space at `index` (`200 × 200`).
 fn next_is_digit(chars: &[char], index: usize) -> bool {
     chars.get(index + 1).is_some_and(char::is_ascii_digit)
@@ -107,14 +114,7 @@ fn numbers(source: &str) -> Vec<String> {
         if chars[i].is_ascii_digit()
             && (i == 0 || !(chars[i - 1].is_alphanumeric() || chars[i - 1] == '_'))
         {
-            let mut end = i;
-            while end < chars.len()
-                && (chars[end].is_ascii_digit()
-                    || (matches!(chars[end], '.' | ',' | '_')
-                        && chars.get(end + 1).is_some_and(char::is_ascii_digit)))
-            {
-                end += 1;
-            }
+            let end = number_end(&chars, i, &['.', ',', '_']);
             found.push(
                 chars[i..end]
                     .iter()
