@@ -7,10 +7,10 @@
 
 #[path = "../examples/support/course.rs"]
 mod course;
-#[path = "../examples/support/generated.rs"]
-mod generated;
 #[path = "../examples/support/judge.rs"]
 mod judge;
+#[path = "../examples/support/generated.rs"]
+mod programs;
 #[path = "../examples/support/student.rs"]
 mod student;
 
@@ -32,7 +32,7 @@ const ONCE_MISREAD: [u64; 5] = [170, 226, 270, 280, 298];
 
 #[test]
 fn the_student_caster_with_no_knob_turned_draws_the_exact_images() {
-    for case in generated::cases(21) {
+    for case in programs::cases(21) {
         let program = student::Program::course();
         let (colour, depth) = student::render(
             &program,
@@ -71,7 +71,7 @@ fn generated_programs_get_no_false_statement_and_are_explained() {
     let mut wrong = Vec::new();
     let (mut differing, mut explained) = (0, 0);
     let last_misread = ONCE_MISREAD.iter().copied().max().unwrap_or(0);
-    let cases = generated::cases(CASES.max(last_misread + 1))
+    let cases = programs::cases(CASES.max(last_misread + 1))
         .into_iter()
         .filter(|case| case.seed < CASES || ONCE_MISREAD.contains(&case.seed));
     for case in cases {
@@ -220,9 +220,9 @@ fn a_grid_of_samples_where_the_last_hit_wins_is_found() {
 /// reports all 300 cases.
 #[test]
 fn single_images_of_generated_programs_get_no_false_statement() {
-    use generated::Given;
+    use programs::Given;
     use rayon::prelude::*;
-    let cases = generated::cases(CASES);
+    let cases = programs::cases(CASES);
     let answers: Vec<(u64, &str, Verdict, Vec<String>)> = cases
         .par_iter()
         .flat_map(|case| {
@@ -269,8 +269,8 @@ fn single_images_of_generated_programs_get_no_false_statement() {
 /// or without a tie), which such a program does not do.
 #[test]
 fn a_strip_measured_from_an_edge_is_said_as_a_scale_not_a_shear() {
-    use generated::Given;
-    let cases = generated::cases(255);
+    use programs::Given;
+    let cases = programs::cases(255);
     for (seed, given) in [
         (118, Given::Depth),
         (140, Given::Colour),
@@ -298,8 +298,8 @@ fn a_strip_measured_from_an_edge_is_said_as_a_scale_not_a_shear() {
 /// their pixels no better and which their program does not do.
 #[test]
 fn a_tilt_on_one_sphere_is_not_said_with_a_sample_a_hair_off() {
-    let case = &generated::cases(136)[135];
-    let (verdict, said, _) = case.diagnose_given(generated::Given::Depth);
+    let case = &programs::cases(136)[135];
+    let (verdict, said, _) = case.diagnose_given(programs::Given::Depth);
     assert_eq!(verdict, Verdict::Explained, "{said:?}");
     assert!(said.iter().any(|s| s.starts_with("t-ramp ")), "{said:?}");
     assert!(
@@ -315,9 +315,9 @@ fn a_tilt_on_one_sphere_is_not_said_with_a_sample_a_hair_off() {
 /// pixels; the boxes around what is drawn give the map.
 #[test]
 fn a_zoomed_depth_image_alone_is_said_as_the_zoom() {
-    let cases = generated::cases(134);
+    let cases = programs::cases(134);
     for (seed, scale) in [(61, [0.907, 0.907]), (133, [0.897, 1.295])] {
-        let (verdict, said, left) = cases[seed].diagnose_given(generated::Given::Depth);
+        let (verdict, said, left) = cases[seed].diagnose_given(programs::Given::Depth);
         assert_eq!(verdict, Verdict::Explained, "seed {seed}: {said:?}");
         assert_eq!(left, 0, "seed {seed}: {said:?}");
         let values: Vec<f64> = said
@@ -344,13 +344,13 @@ fn a_zoomed_depth_image_alone_is_said_as_the_zoom() {
 /// pixels and no statement; each is said, with the mirror, the flip and the scales named.
 #[test]
 fn a_flipped_depth_image_alone_is_fitted_again_from_the_named_points() {
-    let cases = generated::cases(268);
+    let cases = programs::cases(268);
     for (seed, named) in [
         (85, &["mirrored", "tmin-zero"][..]),
         (267, &["flipped-vertically", "stretched", "zoom"][..]),
         (46, &["axes-scaled"][..]),
     ] {
-        let (verdict, said, left) = cases[seed].diagnose_given(generated::Given::Depth);
+        let (verdict, said, left) = cases[seed].diagnose_given(programs::Given::Depth);
         assert_eq!(verdict, Verdict::Explained, "seed {seed}: {said:?}");
         // A handful of edge pixels at most (each left thousands before).
         assert!(left <= 20, "seed {seed}: {left} px left, {said:?}");

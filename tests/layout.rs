@@ -380,3 +380,64 @@ fn a_browser_pages_differences_are_switched_in_the_seams() {
          SWITCHES_LEFT):\n{wrong:#?}"
     );
 }
+
+#[test]
+fn every_test_file_runs_in_exactly_one_test_binary() {
+    // Cargo.toml turns cargo's discovery of test files off (`autotests = false`) and lists the
+    // test binaries: a suite (tests/suites/NAME.rs) gathers several files as modules, the rest
+    // stand alone. A file in neither would never run; a file in two would run twice.
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let manifest = std::fs::read_to_string(root.join("Cargo.toml")).unwrap();
+    assert!(
+        manifest.contains("\nautotests = false\n"),
+        "Cargo.toml: autotests"
+    );
+    let mut runs: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    let mut targets = 0;
+    for block in manifest.split("\n[[test]]\n").skip(1) {
+        let path = block
+            .lines()
+            .find_map(|line| line.strip_prefix("path = \""))
+            .and_then(|rest| rest.strip_suffix('"'))
+            .unwrap_or_else(|| panic!("a [[test]] without a path: {block}"));
+        assert!(
+            root.join(path).is_file(),
+            "Cargo.toml lists {path}: no such file"
+        );
+        targets += 1;
+        let Some(suite) = path.strip_prefix("tests/suites/") else {
+            runs.entry(path.to_owned())
+                .or_default()
+                .push(path.to_owned());
+            continue;
+        };
+        let text = std::fs::read_to_string(root.join(path)).unwrap();
+        let mut lines = text.lines().filter(|line| !line.starts_with("//"));
+        while let Some(line) = lines.next() {
+            let Some(file) = line
+                .strip_prefix("#[path = \"../")
+                .and_then(|rest| rest.strip_suffix(".rs\"]"))
+            else {
+                continue;
+            };
+            assert_eq!(
+                lines.next(),
+                Some(format!("mod {file};").as_str()),
+                "{suite}: the module of {file}.rs is named as its file"
+            );
+            runs.entry(format!("tests/{file}.rs"))
+                .or_default()
+                .push(path.to_owned());
+        }
+    }
+    assert!(targets >= 2, "Cargo.toml: no [[test]] list read");
+    for entry in std::fs::read_dir(root.join("tests")).unwrap() {
+        let name = entry.unwrap().file_name().to_string_lossy().into_owned();
+        if Path::new(&name).extension().is_some_and(|e| e == "rs") {
+            let file = format!("tests/{name}");
+            let binaries = runs.remove(&file).unwrap_or_default();
+            assert_eq!(binaries.len(), 1, "{file} runs in {binaries:?}");
+        }
+    }
+    assert!(runs.is_empty(), "listed but not in tests/: {runs:?}");
+}

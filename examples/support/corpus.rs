@@ -49,7 +49,7 @@ pub(crate) fn images() -> &'static [Image] {
     IMAGES.get_or_init(|| {
         let png = |name: &Path| kept(name.with_extension("png").to_string_lossy().into_owned());
         let mut images = Vec::new();
-        for task in crate::course::tasks() {
+        for task in super::course::tasks() {
             let scene = kept(task.name());
             let depth_range = task
                 .depth_words()
@@ -105,8 +105,8 @@ pub(crate) struct Outcome {
 
 impl Outcome {
     /// The judge's verdict against `truth`.
-    pub(crate) fn judged(&self, truth: &[String]) -> crate::judge::Verdict {
-        crate::judge::judge(
+    pub(crate) fn judged(&self, truth: &[String]) -> super::judge::Verdict {
+        super::judge::judge(
             self.matched,
             &[self.stated.clone(), self.partial.clone()].concat(),
             &self.alternatives,

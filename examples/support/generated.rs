@@ -12,8 +12,8 @@ use raytracer::render::View;
 use raytracer::render::depth_map::DepthRange;
 use raytracer::scene::{Scene, load_scene};
 
-use crate::judge::{Verdict, judge};
-use crate::student::{Draw, Program, draw_program, render};
+use super::judge::{Verdict, judge};
+use super::student::{Draw, Program, draw_program, render};
 
 /// The image sizes drawn from.
 const SIZES: [(u32, u32); 3] = [(200, 200), (160, 90), (90, 140)];
@@ -47,7 +47,7 @@ pub(crate) fn cases(count: u64) -> Vec<Case> {
         .map(|seed| {
             let mut draw = Draw::new(seed);
             // The course scenes and the depth ranges of their command lines.
-            let scenes = crate::course::ranges();
+            let scenes = super::course::ranges();
             let (scene_name, dmin, dmax) = scenes[draw.below(scenes.len() as u64) as usize];
             let (width, height) = SIZES[draw.below(SIZES.len() as u64) as usize];
             let program = draw_program(&mut draw, width != height);

@@ -6,9 +6,9 @@
 use glam::DVec2;
 use image::RgbImage;
 
-use crate::cases::Pictures;
-use crate::claims::Claim;
-use crate::shapes::{differing, flipped, least_squares, mirrored, shape, transposed};
+use super::cases::Pictures;
+use super::claims::Claim;
+use super::shapes::{differing, flipped, least_squares, mirrored, shape, transposed};
 
 pub(crate) fn near(a: f64, b: f64, tolerance: f64) -> bool {
     (a - b).abs() <= tolerance

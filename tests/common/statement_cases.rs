@@ -13,8 +13,8 @@ use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{Frame, View, render};
 use raytracer::scene::{Scene, load_scene};
 
-use crate::compare_run;
-use crate::student::{self, DepthRule, Keep, NonSquare, OutsideRule, Program};
+use super::compare_run;
+use super::student::{self, DepthRule, Keep, NonSquare, OutsideRule, Program};
 
 pub(crate) fn scene(relative: &str) -> Scene {
     load_scene(&compare_run::path(relative)).unwrap()

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # The whole test suite: installs the system packages it needs, then runs cargo test.
-#   cargo xtask test [ARGUMENT…]   (ARGUMENTs go to cargo test: `cargo xtask test --test cli`)
+#   cargo xtask test [ARGUMENT…]   (ARGUMENTs go to cargo test: `cargo xtask test --test viewer`)
 #
 # Runs the whole test suite on a fresh Debian/Ubuntu machine: installs the system packages the
 # viewer tests need (only those missing; needs root or sudo), then `cargo test` of the library,
 # the program and the tests. The examples and benchmarks are not built here (clippy
 # --all-targets type-checks them in CI); arguments go to `cargo test`, and one that chooses
-# targets (`--test cli`, `--examples`...) replaces that default.
+# targets (`--test viewer`, `--examples`...) replaces that default. The test files are
+# gathered into a few suites (Cargo.toml's [[test]] list): `--test viewer viewer_files::` runs one file.
 #   * xvfb, xauth, xdotool, imagemagick: the test that starts the real viewer window and takes a
 #     screenshot (tests/window_screenshot.rs)
 #   * mesa-vulkan-drivers, libvulkan1, libgl1-mesa-dri, libegl1: software GPU (lavapipe/llvmpipe)

@@ -68,8 +68,8 @@ open(path, "w").write(source.replace(text, with_))
 PY
   if [ -n "${DRY:-}" ]; then
     verdict="applied (dry run)"
-  elif cargo test --release --test generated >"$scratch/log" 2>&1 \
-    && cargo test --release --test compare >>"$scratch/log" 2>&1 \
+  elif cargo test --release --test diagnosis -- generated:: >"$scratch/log" 2>&1 \
+    && cargo test --release --test diagnosis -- compare:: >>"$scratch/log" 2>&1 \
     && cargo test --release --test corpus -- --include-ignored >>"$scratch/log" 2>&1; then
     verdict="NOT CAUGHT"
     held=$((held + 1))
