@@ -3,11 +3,12 @@
 #   cargo xtask test [ARGUMENT…]   (ARGUMENTs go to cargo test: `cargo xtask test --test viewer`)
 #
 # Runs the whole test suite on a fresh Debian/Ubuntu machine: installs the system packages the
-# viewer tests need (only those missing; needs root or sudo), then `cargo test` of the library,
-# the program and the tests. The examples and benchmarks are not built here (clippy
-# --all-targets type-checks them in CI); arguments go to `cargo test`, and one that chooses
-# targets (`--test viewer`, `--examples`...) replaces that default. The test files are
-# gathered into a few suites (Cargo.toml's [[test]] list): `--test viewer viewer_files::` runs one file.
+# viewer tests need (only those missing; needs root or sudo), then `cargo test` of the library
+# and the tests (the program is built for them; it has no unit tests of its own). The examples
+# and benchmarks are not built here (clippy --all-targets type-checks them in CI); arguments go
+# to `cargo test`, and one that chooses targets (`--test viewer`, `--examples`...) replaces that
+# default. The test files are gathered into a few suites (Cargo.toml's [[test]] list):
+# `--test viewer viewer_files::` runs one file.
 #   * xvfb, xauth, xdotool, imagemagick: the test that starts the real viewer window and takes a
 #     screenshot (tests/window_screenshot.rs)
 #   * mesa-vulkan-drivers, libvulkan1, libgl1-mesa-dri, libegl1: software GPU (lavapipe/llvmpipe)
@@ -33,5 +34,5 @@ for argument in "$@"; do
       | --examples | --bench | --bench=* | --benches | --all-targets | --doc) selected=yes ;;
   esac
 done
-[ "$selected" = yes ] || set -- --lib --bins --tests "$@"
+[ "$selected" = yes ] || set -- --lib --tests "$@"
 cargo test "$@"

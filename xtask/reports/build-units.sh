@@ -15,7 +15,7 @@ html=${1:-}
 if [ -z "$html" ]; then
   rm -rf target/build-units
   CARGO_INCREMENTAL=0 CARGO_TARGET_DIR=target/build-units \
-    cargo test --lib --bins --tests --no-run --timings
+    cargo test --lib --tests --no-run --timings
   html=$(ls -t target/build-units/cargo-timings/cargo-timing-*.html | head -1)
 fi
 commit=${2:-$(git rev-parse --short HEAD)}
@@ -49,7 +49,7 @@ out = open("docs/build-units.md", "w", encoding="utf-8")
 w = lambda line="": out.write(line + "\n")
 w("# Where the test profile's build goes (2 cores)")
 w()
-w(f"cargo's timings of `cargo test --lib --bins --tests --no-run --timings` from an empty target")
+w(f"cargo's timings of `cargo test --lib --tests --no-run --timings` from an empty target")
 w(f"folder, at {commit}" + (f", {when.group(1)[:4]}-{when.group(1)[4:6]}-{when.group(1)[6:]}" if when else "") +
   ". Read by `bash xtask/reports/build-units.sh` (`cargo xtask report build-units` builds and")
 w("reads). Every unit's start and seconds are in [build-units.tsv](build-units.tsv).")
