@@ -6,10 +6,12 @@
 # just built it, as in CI), then runs every test of tests/corpus.rs against it, the two that
 # compare every image of every program included: a plain `cargo test` (the README's test
 # command) leaves those two out, for they diagnose some 600 images one after another and take
-# minutes on the debug build. Run it after a change to the comparison or the diagnosis; CI runs
-# it on every change.
+# minutes on the debug build. Then the diagnosis suite's sweeps that the README's test command
+# samples (tests/compare.rs: every course scene's images against every other's). Run it after a
+# change to the comparison or the diagnosis; CI runs it on every change.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
 cargo build --profile dist --bin raytracer
 RAYTRACER_CORPUS_BIN="$PWD/target/dist/raytracer" cargo test --test corpus -- --include-ignored "$@"
+[ $# -gt 0 ] || cargo test --test diagnosis -- --ignored
