@@ -162,8 +162,7 @@ fn exact_images_name_nothing() {
 
 #[test]
 fn images_of_the_next_scene_name_nothing() {
-    // Each course scene's images against the next course scene (the last against the first):
-    // never a mistake named. Every pair is `images_of_every_other_scene_name_nothing`.
+    // Each course scene against the next (the last against the first); every pair: below.
     let count = course::ranges().len();
     let compared = another_scene_names_nothing(|name, other| (name + 1) % count == other);
     assert!(compared >= 6, "{compared}");
@@ -176,9 +175,8 @@ fn images_of_every_other_scene_name_nothing() {
     assert!(compared >= 40, "{compared}");
 }
 
-/// Course scene `name`'s images (by its place in the course's list) against course scene
-/// `other`'s, for the pairs `chosen` takes: never a mistake named. Returns the pairs compared
-/// (those whose pictures differ).
+/// Course scenes' images against other course scenes', the pairs (places in the course's list)
+/// `chosen` takes: never a mistake named. Returns the pairs whose pictures differ.
 fn another_scene_names_nothing(chosen: impl Fn(usize, usize) -> bool) -> usize {
     let mut compared = 0;
     let ranges = course::ranges();

@@ -117,14 +117,16 @@ fn every_robustness_row_cites_tests_that_exist() {
     let mut sources = Vec::new();
     rust_files(&root().join("src"), &mut sources);
     rust_files(&root().join("tests"), &mut sources);
-    // The names of the test functions: `fn name(` on the line after `#[test]`.
+    // The names of the test functions: `fn name(` after `#[test]` (and its other attributes,
+    // such as `#[ignore = …]`).
     let mut tests = std::collections::BTreeSet::new();
     for path in &sources {
         let text = std::fs::read_to_string(path).unwrap();
         let lines: Vec<&str> = text.lines().map(str::trim).collect();
-        for pair in lines.windows(2) {
-            if pair[0] == "#[test]"
-                && let Some(rest) = pair[1].strip_prefix("fn ")
+        for (at, line) in lines.iter().enumerate() {
+            let function = lines[at + 1..].iter().find(|l| !l.starts_with("#["));
+            if *line == "#[test]"
+                && let Some(rest) = function.and_then(|l| l.strip_prefix("fn "))
             {
                 let name: String = rest
                     .chars()
