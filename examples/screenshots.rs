@@ -9,7 +9,8 @@
 //! Writes `OUT_FOLDER/explore.png`, `OUT_FOLDER/orbit.png` and `OUT_FOLDER/compare.png` (the
 //! Compare section with an image rendered with the `pixel-corners` mistake), and for each a
 //! `.marks` file of `x y` lines (pixels): the spots the annotations point at, in the README's
-//! order.
+//! order, and a `.names` file: the repository's files the picture shows (`file:PATH`, the scene
+//! the viewer has open), which the chore writes down in docs/pictures.tsv.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -62,6 +63,14 @@ fn save(harness: &mut App, folder: &Path, name: &str, marks: &[Pos2]) {
         writeln!(text, "{} {}", mark.x.round(), mark.y.round()).unwrap();
     }
     std::fs::write(folder.join(format!("{name}.marks")), text).unwrap();
+    let shown = harness
+        .state()
+        .loaded_scene()
+        .path
+        .as_ref()
+        .map(|path| format!("file:{}", path.display()))
+        .unwrap_or_default();
+    std::fs::write(folder.join(format!("{name}.names")), shown).unwrap();
     println!("wrote {}", folder.join(format!("{name}.png")).display());
 }
 

@@ -1,4 +1,4 @@
-//! The `house` test suite: the repository as a whole: its chores, its docs and their figures, the layout of its code, what it carries.
+//! The `house` test suite: the repository as a whole: its chores, its docs, their figures and pictures, the layout of its code, what it carries.
 //!
 //! One test binary for several test files (each a module, named as its file), so that the test
 //! profile links a few binaries, not one per file, and their tests run side by side. Every
@@ -16,5 +16,7 @@ mod docs;
 mod docs_figures;
 #[path = "../layout.rs"]
 mod layout;
+#[path = "../pictures.rs"]
+mod pictures;
 #[path = "../repository.rs"]
 mod repository;

@@ -28,12 +28,19 @@ all=(accuracy performance tradeoff mistakes diagnosis diagnosis-speed compare-di
      thread-wake profile command-vs-cpp window-frame-times window-frame-times-wgpu setup-times web
      windows windows-viewer screenshot readme-screenshots window-sizes fuzz trace-example grading)
 by_name_only=(break-diagnosis build-units sync)
+source xtask/lib/pictures.sh
 
 report() {
   local name=$1
   shift
   case "$name" in
-    accuracy | performance | tradeoff | mistakes) cargo run --release --example "$name" -- "$@" ;;
+    accuracy | performance | tradeoff) cargo run --release --example "$name" -- "$@" ;;
+    mistakes)
+      # The gallery's pictures are renders: they show no name.
+      cargo run --release --example mistakes -- "$@" &&
+        for picture in docs/mistakes/*.png; do
+          record_picture "$picture" "cargo xtask report mistakes"
+        done ;;
     diagnosis) cargo build --release && cargo run --release --example diagnosis_report -- "$@" ;;
     diagnosis-speed) cargo build --release && cargo run --release --example diagnosis_speed -- "$@" ;;
     compare-diff) bash xtask/reports/compare-example.sh "$@" ;;
@@ -53,7 +60,15 @@ report() {
       # in headless Chromium (docs/grading.png).
       cargo build --release && cargo run --release --example grade_class 100 docs/grading-speed.md target/grading-report &&
         chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size=1300,900 \
-          --screenshot=docs/grading.png "file://$PWD/target/grading-report/index.html" ;;
+          --screenshot=docs/grading.png "file://$PWD/target/grading-report/index.html" &&
+        {
+          # The names the page shows, read from the page itself: the course's lines and the
+          # program's version.
+          page=target/grading-report/index.html
+          assignment=$(grep -o 'Assignment <code>[^<]*</code>' "$page" | head -n 1 | sed 's/.*<code>//; s/<.*//')
+          version=$(grep -o 'Made by raytracer [0-9][0-9.]*[0-9]' "$page" | head -n 1 | awk '{ print $4 }')
+          record_picture docs/grading.png "cargo xtask report grading" "file:$assignment" "version:$version"
+        } ;;
     fuzz) bash xtask/chores/fuzz.sh 240 docs/fuzz && bash xtask/chores/fuzz.sh self-test ;;
     trace-example)
       cargo build --bin raytracer && scratch=$(mktemp -d) && {

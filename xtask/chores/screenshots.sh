@@ -14,6 +14,8 @@
 #                                           …-opened.png: the Windows viewer under Wine, before and
 #                                           after opening a scene through its file dialog
 #   cargo xtask screenshots                 all four
+# Each picture made is written down in docs/pictures.tsv (xtask/lib/pictures.sh) with the names it
+# shows; tests/pictures.rs checks them.
 # Needs what `cargo xtask test` installs (Xvfb, ImageMagick, xdotool, Mesa); `windows` needs Wine
 # (`cargo xtask windows install`).
 set -euo pipefail

@@ -130,6 +130,9 @@ case "$command" in
       RAYTRACER_DENSE_SCENE=target/web-test/dense_1e5.txt \
       RAYTRACER_CHROMIUM="$(command -v chromium)" \
       node tests/web/report.mjs docs/web.md docs/web-page.png
+    # The page's picture is of the default scene, which is embedded: no file's name.
+    source xtask/lib/pictures.sh
+    record_picture docs/web-page.png "cargo xtask web report"
     ;;
   *)
     echo "usage: cargo xtask web build | serve [PORT] | test | report" >&2

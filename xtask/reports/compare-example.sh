@@ -23,4 +23,7 @@ output=$("${command[@]}") || status=$?
 status=0
 "${command[@]:0:${#command[@]}-2}" -compare_format json > docs/compare-diff.json || status=$?
 [ "$status" -eq 3 ] || { echo "the JSON answer ended with status $status" >&2; exit 1; }
+# The -diff picture's words are its panels' titles and counts: no file's name.
+source xtask/lib/pictures.sh
+record_picture docs/compare-diff.png "cargo xtask report compare-diff"
 cat docs/compare-diff.txt

@@ -8,6 +8,7 @@ cd "$(dirname "$0")/../.."
 raw=$(mktemp -d)
 trap 'rm -rf "$raw"' EXIT
 cargo run --quiet --example screenshots -- "$raw"
+source xtask/lib/pictures.sh
 font=/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf
 for name in explore orbit compare; do
   draw=()
@@ -23,5 +24,8 @@ for name in explore orbit compare; do
     number=$((number + 1))
   done < "$raw/$name.marks"
   convert "$raw/$name.png" "${draw[@]}" "docs/$name.png"
+  # The repository's files the picture shows, as the example wrote them down.
+  read -r -a names < "$raw/$name.names" || true  # (one line, no newline at its end)
+  record_picture "docs/$name.png" "cargo xtask screenshots readme" "${names[@]}"
   echo "wrote docs/$name.png"
 done

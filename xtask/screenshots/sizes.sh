@@ -9,6 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 cargo build --release
 scene=${1:-}
+source xtask/lib/pictures.sh
 display=":96"
 for spec in "1600 900 1" "800 600 1" "400 300 1" "1600 900 2" "400 300 1 drawer"; do
   read -r width height scale drawer <<<"$spec"
@@ -31,6 +32,7 @@ for spec in "1600 900 1" "800 600 1" "400 300 1" "1600 900 2" "400 300 1 drawer"
   fi
   name="docs/window-${width}x${height}$suffix.png"
   import -display "$display" -window root "$name"
+  record_picture "$name" "cargo xtask screenshots sizes${scene:+ $scene}" ${scene:+"file:$scene"}
   echo "wrote $name"
   kill "$viewer" 2>/dev/null || true
   wait "$viewer" 2>/dev/null || true

@@ -15,4 +15,8 @@ DISPLAY="$display" HOME="$home" XDG_DATA_HOME="$home" XDG_CONFIG_HOME="$home" \
 viewer=$!
 sleep "${SCREENSHOT_WAIT:-6}"
 import -display "$display" -window root -crop 1280x720+0+0 docs/screenshot.png
+source xtask/lib/pictures.sh
+names=()
+for argument in "$@"; do [ -f "$argument" ] && names+=("file:$argument"); done
+record_picture docs/screenshot.png "cargo xtask screenshots viewer${*:+ $*}" "${names[@]}"
 echo "wrote docs/screenshot.png"

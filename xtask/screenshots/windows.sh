@@ -33,4 +33,9 @@ xdotool type --delay 20 'C:\scenes\scene1_02.txt'
 xdotool key Return
 sleep 8
 import -window root "${out%.png}-opened.png"
+if [ "$out" = docs/windows-viewer.png ]; then
+  source xtask/lib/pictures.sh
+  record_picture "$out" "cargo xtask screenshots windows"
+  record_picture "${out%.png}-opened.png" "cargo xtask screenshots windows" file:scenes/scene1_02.txt
+fi
 echo "screenshots: $out ${out%.png}-opened.png (the viewer said: $(tr '\n' ' ' < "$WINEPREFIX/viewer.log"))"
