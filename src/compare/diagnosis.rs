@@ -39,9 +39,9 @@ const PARTIAL_SHARE_EACH: f64 = 0.1;
 const PARTIAL_SHARE_ALL: f64 = 0.5;
 
 /// Spheres beyond which no model of their program is fitted: the fit renders their scene some
-/// hundreds of times, and this many random spheres keep the whole comparison within 10 s on two
-/// cores (docs/diagnosis-speed.md measures it, with the sizes around it); beyond, the comparison
-/// counts the pixels and says why it stops there.
+/// hundreds of times, and this many random spheres keep the whole comparison to a few seconds on
+/// two cores (docs/diagnosis-speed.md measures it, with the sizes around it); beyond, the
+/// comparison counts the pixels and says why it stops there.
 pub const MAX_FITTED_SPHERES: usize = 20_000;
 
 /// Models seen on the way that are said and compared with the fitted one, at most.

@@ -1,4 +1,6 @@
-//! The `command_line` test suite: the command line as every platform runs it (CI's Windows and macOS jobs run this suite and the library's tests): flags and messages, the course's reference images, the compare command and its JSON.
+//! The `command_line` test suite: the command line as every platform runs it (CI's Windows and
+//! macOS jobs run this suite and the library's tests): flags and messages, the course's reference
+//! images, the compare command and its JSON.
 //!
 //! One test binary for several test files (each a module, named as its file), so that the test
 //! profile links a few binaries, not one per file, and their tests run side by side. Every

@@ -1,4 +1,5 @@
-//! The `diagnosis` test suite: the comparison's diagnosis: every known mistake named on the course scenes and on generated ones, and every sentence it prints drawn and measured.
+//! The `diagnosis` test suite: the comparison's diagnosis: every known mistake named on the course
+//! scenes and on generated ones, and every sentence it prints drawn and measured.
 //!
 //! One test binary for several test files (each a module, named as its file), so that the test
 //! profile links a few binaries, not one per file, and their tests run side by side. Every

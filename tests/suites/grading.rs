@@ -1,4 +1,5 @@
-//! The `grading` test suite: grading a class: the grader's answers, its memory, its names, its races and its stops.
+//! The `grading` test suite: grading a class: the grader's answers, its memory, its names, its
+//! races and its stops.
 //!
 //! One test binary for several test files (each a module, named as its file), so that the test
 //! profile links a few binaries, not one per file, and their tests run side by side. Every

@@ -1,4 +1,5 @@
-//! The `house` test suite: the repository as a whole: its chores, its docs, their figures and pictures, the layout of its code, what it carries.
+//! The `house` test suite: the repository as a whole: its chores, its docs, their figures and
+//! pictures, the layout of its code, what it carries.
 //!
 //! One test binary for several test files (each a module, named as its file), so that the test
 //! profile links a few binaries, not one per file, and their tests run side by side. Every

@@ -1,4 +1,6 @@
-//! The `rendering` test suite: what the renderer draws: exactness against the high-precision oracle, sampling, scenes, the streamed command (the render's phases are timed by a recorder the whole process shares: tests/phases.rs is a binary of its own).
+//! The `rendering` test suite: what the renderer draws: exactness against the high-precision
+//! oracle, sampling, scenes, the streamed command (the render's phases are timed by a recorder the
+//! whole process shares: tests/phases.rs is a binary of its own).
 //!
 //! One test binary for several test files (each a module, named as its file), so that the test
 //! profile links a few binaries, not one per file, and their tests run side by side. Every

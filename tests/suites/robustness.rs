@@ -1,4 +1,5 @@
-//! The `robustness` test suite: bad input, limits and hostile files: clear errors, never a panic, nothing lost.
+//! The `robustness` test suite: bad input, limits and hostile files: clear errors, never a panic,
+//! nothing lost.
 //!
 //! One test binary for several test files (each a module, named as its file), so that the test
 //! profile links a few binaries, not one per file, and their tests run side by side. Every

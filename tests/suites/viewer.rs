@@ -1,4 +1,5 @@
-//! The `viewer` test suite: the viewer: the app through egui_kittest, and the real window under Xvfb.
+//! The `viewer` test suite: the viewer: the app through egui_kittest, and the real window under
+//! Xvfb.
 //!
 //! One test binary for several test files (each a module, named as its file), so that the test
 //! profile links a few binaries, not one per file, and their tests run side by side. Every
