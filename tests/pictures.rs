@@ -4,6 +4,10 @@
 //! being run again, fails here; so does a name it shows that no longer exists (a scene file
 //! renamed, the program's version moved on).
 
+#[path = "common/source_tree.rs"]
+#[allow(dead_code)] // the file walk alone
+mod source_tree;
+
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -44,29 +48,17 @@ fn table() -> BTreeMap<String, Row> {
     rows
 }
 
-/// The pictures under `folder` (relative to the repository), as `docs/…png` paths.
-fn pictures_under(folder: &str, found: &mut Vec<String>) {
-    for entry in std::fs::read_dir(root().join(folder)).unwrap() {
-        let entry = entry.unwrap();
-        let name = entry.file_name().to_string_lossy().into_owned();
-        let path = format!("{folder}/{name}");
-        if entry.file_type().unwrap().is_dir() {
-            pictures_under(&path, found);
-        } else if Path::new(&name).extension().is_some_and(|e| e == "png") {
-            found.push(path);
-        }
-    }
-}
-
-/// The program's version, from Cargo.toml.
-fn version() -> String {
-    let manifest = std::fs::read_to_string(root().join("Cargo.toml")).unwrap();
-    manifest
-        .lines()
-        .find_map(|line| line.strip_prefix("version = \""))
-        .and_then(|rest| rest.strip_suffix('"'))
-        .expect("Cargo.toml: the package's version")
-        .to_owned()
+/// The pictures in docs/, at any depth, as `docs/…png` paths.
+fn pictures() -> Vec<String> {
+    let mut found = Vec::new();
+    source_tree::files_ending(&root().join("docs"), "png", &mut found);
+    found
+        .iter()
+        .map(|path| {
+            let relative = path.strip_prefix(root()).unwrap();
+            relative.to_string_lossy().replace('\\', "/")
+        })
+        .collect()
 }
 
 /// The chores `cargo xtask` knows (xtask/chores/NAME.sh).
@@ -77,8 +69,7 @@ fn chore_exists(name: &str) -> bool {
 #[test]
 fn every_picture_in_the_docs_is_written_down_by_the_command_that_made_it() {
     let rows = table();
-    let mut pictures = Vec::new();
-    pictures_under("docs", &mut pictures);
+    let pictures = pictures();
     assert!(pictures.len() >= 10, "pictures found: {pictures:?}");
     let mut problems = Vec::new();
     for picture in &pictures {
@@ -109,7 +100,8 @@ fn every_picture_in_the_docs_is_written_down_by_the_command_that_made_it() {
 
 #[test]
 fn the_names_a_picture_shows_exist() {
-    let version = version();
+    // The program's version is this package's.
+    let version = env!("CARGO_PKG_VERSION");
     let mut problems = Vec::new();
     let mut checked = 0;
     for (picture, row) in table() {

@@ -6,11 +6,16 @@ use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
 pub(crate) fn rust_files(folder: &Path, found: &mut Vec<PathBuf>) {
+    files_ending(folder, "rs", found);
+}
+
+/// The files under `folder`, at any depth, whose extension is `extension`.
+pub(crate) fn files_ending(folder: &Path, extension: &str, found: &mut Vec<PathBuf>) {
     for entry in std::fs::read_dir(folder).unwrap() {
         let path = entry.unwrap().path();
         if path.is_dir() {
-            rust_files(&path, found);
-        } else if path.extension().is_some_and(|e| e == "rs") {
+            files_ending(&path, extension, found);
+        } else if path.extension().is_some_and(|e| e == extension) {
             found.push(path);
         }
     }
