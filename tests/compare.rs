@@ -4,12 +4,14 @@
 
 #[path = "../examples/support/course.rs"]
 mod course;
+#[path = "common/named.rs"]
+mod named;
 
 use std::path::{Path, PathBuf};
 
 use image::RgbImage;
-use raytracer::compare::diagnosis::words_of;
-use raytracer::compare::{Deviation, Diagnosis, Difference, Mistake, MistakeSet, Theirs, diagnose};
+use named::{both, named_in_part, offered, words_named};
+use raytracer::compare::{Deviation, Difference, Mistake, MistakeSet, Theirs, diagnose};
 use raytracer::oracle::mistaken::render_variant;
 use raytracer::render::depth_map::DepthRange;
 use raytracer::render::{View, render};
@@ -34,40 +36,6 @@ fn every_mistake() -> (Scene, View) {
 fn exact(scene: &Scene, view: &View) -> (RgbImage, RgbImage) {
     let frame = render(scene, view).unwrap();
     (frame.colour_image(), frame.depth_image(view.depth_range))
-}
-
-fn both<'a>(images: &'a (RgbImage, RgbImage)) -> Theirs<'a> {
-    Theirs {
-        colour: Some(&images.0),
-        depth: Some(&images.1),
-    }
-}
-
-/// The known mistakes a diagnosis names in full; every statement it makes must be one of them.
-fn words_named(diagnosis: &Diagnosis) -> MistakeSet {
-    let words = words_of(diagnosis.stated());
-    assert_eq!(
-        words.len(),
-        diagnosis.stated().len(),
-        "statements beyond the known mistakes: {diagnosis:?}"
-    );
-    words
-}
-
-/// The known mistakes a diagnosis names in part; every statement must be one of them.
-fn named_in_part(diagnosis: &Diagnosis) -> MistakeSet {
-    let words = words_of(diagnosis.partial());
-    assert_eq!(words.len(), diagnosis.partial().len(), "{diagnosis:?}");
-    words
-}
-
-/// The sets of known mistakes a near tie offers, each with the statements all of them make.
-fn offered(diagnosis: &Diagnosis) -> Vec<MistakeSet> {
-    diagnosis
-        .alternatives()
-        .iter()
-        .map(|part| words_of(&[diagnosis.stated(), part.as_slice()].concat()))
-        .collect()
 }
 
 #[test]
@@ -256,60 +224,6 @@ fn scene_named(name: &str) -> Scene {
     scene(&format!("scenes/{name}.txt"))
 }
 
-#[test]
-fn on_the_course_scenes_each_mistake_that_shows_is_named_and_never_another() {
-    // 200×200 as the course renders, 200×120 for the stretched image; the course's depth range
-    // and its middle half (where depth outside the range shows).
-    let mut named = Vec::new();
-    let ranges = course::ranges()
-        .iter()
-        .copied()
-        .flat_map(|(name, min_t, max_t)| {
-            let quarter = 0.25 * (max_t - min_t);
-            [
-                (name, min_t, max_t),
-                (name, min_t + quarter, max_t - quarter),
-            ]
-        });
-    for (name, min_t, max_t) in ranges {
-        let scene = scene_named(name);
-        for mistake in Mistake::ALL {
-            let (width, height) = if mistake == Mistake::Stretched {
-                (200, 120)
-            } else {
-                (200, 200)
-            };
-            let view = View::of_camera(&scene.camera, width, height, DepthRange::new(min_t, max_t));
-            let set = MistakeSet::of(&[mistake]);
-            let theirs = render_variant(&scene, &view, set);
-            let diagnosis = diagnose(&scene, &view, both(&theirs));
-            if diagnosis.differing_exact == 0 {
-                continue; // the mistake does not show on this scene
-            }
-            if !diagnosis.alternatives().is_empty() {
-                // Only when another set makes exactly the same images.
-                assert!(
-                    offered(&diagnosis).contains(&set),
-                    "{name} {mistake}: {diagnosis:?}"
-                );
-            } else {
-                assert_eq!(words_named(&diagnosis), set, "{name} {mistake}");
-                named.push(format!("{name} {mistake}"));
-            }
-        }
-    }
-    // Every mistake shows, and is named, on at least one course scene; but no two course spheres
-    // tie, so last-wins shows only on the every-mistake scene.
-    for mistake in Mistake::ALL.into_iter().filter(|&m| m != Mistake::LastWins) {
-        assert!(
-            named
-                .iter()
-                .any(|case| case.ends_with(&format!(" {mistake}"))),
-            "{mistake} is named on no course scene: {named:?}"
-        );
-    }
-}
-
 /// Changes `count` pixels of `image`, spread by a seeded sequence, to colours far from theirs.
 fn speckle(image: &mut RgbImage, count: usize, seed: u64) {
     let mut state = seed;
@@ -429,72 +343,4 @@ fn the_model_s_named_points_draw_what_the_mistaken_caster_draws() {
     }
     assert_eq!(sets.len(), 1 + 15 + 103);
     assert_eq!(wrong, Vec::<String>::new());
-}
-
-/// Each known mistake that shows on a course scene, in one image alone (the colour image; the
-/// depth image without its range, read back as a user who forgot it gets it): the answer is that
-/// one mistake, or a tie of single mistakes that draw the same pixels among which it is — never a
-/// longer story (a mirrored depth image of scene1_07 was once "far-root + no-depth-test first +
-/// depth-range 2 -2", a flipped one of scene1_02 unexplained).
-#[test]
-fn a_single_image_of_one_mistake_gets_the_shortest_story() {
-    use rayon::prelude::*;
-    let mut jobs = Vec::new();
-    for &(name, min_t, max_t) in course::ranges() {
-        for mistake in Mistake::ALL {
-            for depth in [false, true] {
-                jobs.push((name, min_t, max_t, mistake, depth));
-            }
-        }
-    }
-    let wrong: Vec<String> = jobs
-        .par_iter()
-        .filter_map(|&(name, min_t, max_t, mistake, depth)| {
-            let scene = scene_named(name);
-            let (width, height) = if mistake == Mistake::Stretched {
-                (200, 120)
-            } else {
-                (200, 200)
-            };
-            let view = View::of_camera(&scene.camera, width, height, DepthRange::new(min_t, max_t));
-            let set = MistakeSet::of(&[mistake]);
-            let (colour, depth_image) = render_variant(&scene, &view, set);
-            let theirs = if depth {
-                Theirs {
-                    colour: None,
-                    depth: Some(&depth_image),
-                }
-            } else {
-                Theirs {
-                    colour: Some(&colour),
-                    depth: None,
-                }
-            };
-            let exact = render(&scene, &view).unwrap();
-            let range = (!depth).then_some(view.depth_range);
-            let judged = raytracer::compare::judge::judge(&scene, &exact, theirs, range).ok()?;
-            let answer = &judged.diagnosis;
-            if answer.differing_exact == 0 {
-                return None;
-            }
-            let named = words_of(answer.stated());
-            let single_tie = !answer.alternatives().is_empty()
-                && offered(answer).contains(&set)
-                && offered(answer).iter().all(|s| s.len() == 1);
-            let shortest = named == set && answer.stated().len() == 1;
-            (!(shortest || single_tie)).then(|| {
-                let said: Vec<String> = answer
-                    .stated()
-                    .iter()
-                    .map(Deviation::name_and_values)
-                    .collect();
-                format!(
-                    "{name} {mistake} ({}): said {said:?}, offered {:?}",
-                    if depth { "depth alone" } else { "colour alone" },
-                    offered(answer)
-                )
-            })
-        })
-        .collect();
-    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }

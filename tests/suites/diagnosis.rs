@@ -11,6 +11,8 @@
 
 #[path = "../compare.rs"]
 mod compare;
+#[path = "../course_mistakes.rs"]
+mod course_mistakes;
 #[path = "../generated.rs"]
 mod generated;
 #[path = "../statements.rs"]

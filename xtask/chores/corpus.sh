@@ -7,8 +7,9 @@
 # compare every image of every program included: a plain `cargo test` (the README's test
 # command) leaves those two out, for they diagnose some 600 images one after another and take
 # minutes on the debug build. Then the diagnosis suite's sweeps that the README's test command
-# samples (tests/compare.rs: every course scene's images against every other's). Run it after a
-# change to the comparison or the diagnosis; CI runs it on every change.
+# samples (tests/compare.rs: every course scene's images against every other's;
+# tests/course_mistakes.rs: each mistake on every course scene; tests/generated.rs: 60 programs,
+# not 20). Run it after a change to the comparison or the diagnosis; CI runs it on every change.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
