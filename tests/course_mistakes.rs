@@ -22,6 +22,17 @@ fn scene_named(name: &str) -> Scene {
     load_scene(&Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.txt"))).unwrap()
 }
 
+/// The view `mistake` is made at: 200×200 as the course renders, 200×120 for the stretched
+/// image; depth over `min_t`..`max_t`.
+fn course_view(scene: &Scene, mistake: Mistake, min_t: f64, max_t: f64) -> View {
+    let (width, height) = if mistake == Mistake::Stretched {
+        (200, 120)
+    } else {
+        (200, 200)
+    };
+    View::of_camera(&scene.camera, width, height, DepthRange::new(min_t, max_t))
+}
+
 #[test]
 fn on_a_third_of_the_course_cases_each_mistake_that_shows_is_named_and_never_another() {
     // Each mistake on two or three of the seven scenes, each scene with five or six mistakes.
@@ -69,12 +80,7 @@ fn each_mistake_that_shows_is_named(chosen: impl Fn(usize, usize) -> bool) -> Ve
             if !chosen(place, mistake_place) {
                 continue;
             }
-            let (width, height) = if mistake == Mistake::Stretched {
-                (200, 120)
-            } else {
-                (200, 200)
-            };
-            let view = View::of_camera(&scene.camera, width, height, DepthRange::new(min_t, max_t));
+            let view = course_view(&scene, mistake, min_t, max_t);
             let set = MistakeSet::of(&[mistake]);
             let theirs = render_variant(&scene, &view, set);
             let diagnosis = diagnose(&scene, &view, both(&theirs));
@@ -131,12 +137,7 @@ fn single_images_get_the_shortest_story(chosen: impl Fn(usize, usize) -> bool) {
         .par_iter()
         .filter_map(|&(name, min_t, max_t, mistake, depth)| {
             let scene = scene_named(name);
-            let (width, height) = if mistake == Mistake::Stretched {
-                (200, 120)
-            } else {
-                (200, 200)
-            };
-            let view = View::of_camera(&scene.camera, width, height, DepthRange::new(min_t, max_t));
+            let view = course_view(&scene, mistake, min_t, max_t);
             let set = MistakeSet::of(&[mistake]);
             let (colour, depth_image) = render_variant(&scene, &view, set);
             let theirs = if depth {
