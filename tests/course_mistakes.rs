@@ -1,7 +1,7 @@
 //! Each known mistake on the course scenes (200×200 as the course renders them): where it shows,
 //! named from both images and never another; from one image alone, the shortest story. The
 //! README's test command runs a sample of the cases (each mistake on some of the scenes), and
-//! `cargo xtask corpus` (which CI runs) every case: 210 diagnoses each, a minute's work here.
+//! `cargo xtask corpus` (which CI runs) every case: 210 diagnoses each.
 
 #[path = "../examples/support/course.rs"]
 mod course;
@@ -35,7 +35,7 @@ fn course_view(scene: &Scene, mistake: Mistake, min_t: f64, max_t: f64) -> View 
 
 #[test]
 fn on_a_third_of_the_course_cases_each_mistake_that_shows_is_named_and_never_another() {
-    // Each mistake on two or three of the seven scenes, each scene with five or six mistakes.
+    // Each mistake on two or three of the seven scenes, each scene with five mistakes.
     let named = each_mistake_that_shows_is_named(|place, mistake| (place + mistake) % 3 == 0);
     assert!(named.len() >= 20, "{named:?}");
 }
