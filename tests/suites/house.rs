@@ -17,6 +17,8 @@ mod docs;
 mod docs_figures;
 #[path = "../layout.rs"]
 mod layout;
+#[path = "../notice.rs"]
+mod notice;
 #[path = "../pictures.rs"]
 mod pictures;
 #[path = "../repository.rs"]

@@ -7,8 +7,13 @@
 #       raytracer-VERSION-x86_64-windows.zip     raytracer.exe (mingw-w64, icon and version info)
 #       raytracer-VERSION-web.zip                the page (index.html, the wasm, the course scenes)
 #     each with README.md, the licences (LICENSE-MIT, LICENSE-APACHE), the third-party notice
-#     (THIRD-PARTY-LICENSES.html, by cargo-about; a licence not allowed in about.toml fails the
-#     build) and the course scenes;
+#     (THIRD-PARTY-LICENSES.html, committed) and the course scenes; a notice made from other
+#     crates than Cargo.lock's fails the build;
+#   cargo xtask release notice    THIRD-PARTY-LICENSES.html made again by cargo-about (installed
+#     where missing): after a change of Cargo.lock, Cargo.toml's dependencies or features,
+#     about.toml or about.hbs; a licence about.toml does not accept fails it;
+#   cargo xtask release notice-check    whether THIRD-PARTY-LICENSES.html was made from what
+#     the repository holds now (exit 1 and what to run when not);
 #   cargo xtask release linux | windows | web | macos    one of them (macos: on a Mac, as
 #     the release workflow builds it: raytracer-VERSION-universal-macos.tar.gz, one program for
 #     Apple silicon and Intel);
@@ -18,7 +23,7 @@
 #   cargo xtask release sizes     docs/release-sizes.md: each archive's size, and the
 #     programs' sizes unpacked, from what target/artefacts/ holds.
 # The programs are built with the `dist` profile (Cargo.toml): the release profile the
-# benchmarks measure, without debug information; the system's strip removes the symbols. Installs what it lacks (cargo-about, the Windows toolchain).
+# benchmarks measure, without debug information; the system's strip removes the symbols. Installs what it lacks (the Windows toolchain).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
@@ -26,6 +31,22 @@ version=$(sed -n 's/^version = "\(.*\)"$/\1/p;T;q' Cargo.toml)
 dist=target/artefacts
 tools=target/tools
 about_version=0.8.2
+
+# What the notice is made from, as one line: the sha256 of Cargo.lock, of Cargo.toml's
+# [features] and dependency tables (cargo-about follows the features the programs are built
+# with), of about.toml and of about.hbs; and cargo-about's version.
+notice_inputs() {
+  {
+    cat Cargo.lock
+    awk '/^\[/ { keep = ($0 ~ /dependencies\]$/ || $0 == "[features]") } keep' Cargo.toml
+    cat about.toml about.hbs
+  } | sha256sum | awk -v about="$about_version" '{ print "cargo-about " about ", inputs sha256 " $1 }'
+}
+
+# The line THIRD-PARTY-LICENSES.html carries: what it was made from.
+notice_stamp() {
+  echo "<!-- made by cargo xtask release notice from $(notice_inputs) -->"
+}
 
 notice() {
   if [ "$("$tools/bin/cargo-about" --version 2>/dev/null | awk '{print $2}')" != "$about_version" ]; then
@@ -35,14 +56,28 @@ notice() {
     CARGO_PROFILE_RELEASE_LTO=false CARGO_PROFILE_RELEASE_CODEGEN_UNITS=16 \
       cargo install cargo-about --version "$about_version" --locked --root "$tools" --quiet --force
   fi
-  mkdir -p "$dist"
-  # The default features: what the programs are built with (the viewer and mimalloc).
-  "$tools/bin/cargo-about" generate --fail --locked -o "$dist/THIRD-PARTY-LICENSES.html" about.hbs
+  mkdir -p target
+  # The default features: what the programs are built with (the viewer and mimalloc). Written
+  # beside, then moved: a failed run leaves the committed notice as it was.
+  "$tools/bin/cargo-about" generate --fail --locked -o target/THIRD-PARTY-LICENSES.html about.hbs
+  { notice_stamp; cat target/THIRD-PARTY-LICENSES.html; } > target/THIRD-PARTY-LICENSES.html.new
+  rm target/THIRD-PARTY-LICENSES.html
+  mv target/THIRD-PARTY-LICENSES.html.new THIRD-PARTY-LICENSES.html
+  echo "release.sh: wrote THIRD-PARTY-LICENSES.html ($(notice_inputs))"
+}
+
+# Whether the committed notice was made from what the repository holds now.
+notice_check() {
+  if [ "$(head -n 1 THIRD-PARTY-LICENSES.html 2>/dev/null)" != "$(notice_stamp)" ]; then
+    echo "release.sh: THIRD-PARTY-LICENSES.html was not made from this Cargo.lock, Cargo.toml's" >&2
+    echo "dependencies, about.toml and about.hbs: run \`cargo xtask release notice\` and commit it" >&2
+    return 1
+  fi
 }
 
 # The README and the licences, which every artefact carries, into folder $1.
 papers() {
-  cp README.md LICENSE-MIT LICENSE-APACHE "$dist/THIRD-PARTY-LICENSES.html" "$1/"
+  cp README.md LICENSE-MIT LICENSE-APACHE THIRD-PARTY-LICENSES.html "$1/"
 }
 
 # What the programs' archives carry beside the program, into folder $1: the papers and the
@@ -71,7 +106,7 @@ zipped() {
 }
 
 linux() {
-  [ -f "$dist/THIRD-PARTY-LICENSES.html" ] || notice
+  notice_check
   cargo build --profile dist --bin raytracer
   local name="raytracer-$version-x86_64-linux"
   rm -rf "${dist:?}/$name"
@@ -82,7 +117,7 @@ linux() {
 }
 
 macos() {
-  [ -f "$dist/THIRD-PARTY-LICENSES.html" ] || notice
+  notice_check
   local name="raytracer-$version-universal-macos" target
   rm -rf "${dist:?}/$name"
   mkdir -p "$dist/$name"
@@ -98,7 +133,7 @@ macos() {
 }
 
 windows() {
-  [ -f "$dist/THIRD-PARTY-LICENSES.html" ] || notice
+  notice_check
   cargo xtask windows install
   local target=x86_64-pc-windows-gnu
   cargo build --profile dist --target "$target" --bin raytracer
@@ -113,7 +148,7 @@ windows() {
 }
 
 web() {
-  [ -f "$dist/THIRD-PARTY-LICENSES.html" ] || notice
+  notice_check
   cargo xtask web build
   local name="raytracer-$version-web"
   rm -rf "${dist:?}/$name"
@@ -169,17 +204,9 @@ sizes() {
 
 case "${1:-}" in
   build)
+    notice_check
     rm -rf "$dist"
-    # The notice (cargo-about installed where missing, then run over the crates' licences) is
-    # made while the Linux program builds, at the lowest priority: it takes the core the build
-    # leaves idle (its last unit compiles on one) and slows the build no more than that.
-    (renice -n 19 -p "$BASHPID" >/dev/null && notice) &
-    noticing=$!
-    if ! cargo build --profile dist --bin raytracer; then
-      kill "$noticing" 2>/dev/null || true
-      exit 1
-    fi
-    wait "$noticing"
+    cargo build --profile dist --bin raytracer
     linux
     windows
     web
@@ -188,12 +215,15 @@ case "${1:-}" in
   linux | windows | web | macos | notice | sums | sizes)
     "$1"
     ;;
+  notice-check)
+    notice_check
+    ;;
   test)
     shift
     bash xtask/release/test.sh "$@"
     ;;
   *)
-    echo "usage: cargo xtask release build | linux | windows | web | macos | notice | sums | sizes | test [PART…]" >&2
+    echo "usage: cargo xtask release build | linux | windows | web | macos | notice | notice-check | sums | sizes | test [PART…]" >&2
     exit 2
     ;;
 esac
