@@ -96,12 +96,26 @@ fn assert_consistent(harness: &mut Harness, step: usize) {
     }
 }
 
+/// Two thousand hostile inputs in two runs of a thousand, each from its own seed: the two run
+/// side by side (one run takes a core for its whole time).
 #[test]
 fn thousands_of_hostile_inputs_never_panic() {
+    hostile_inputs_never_panic(0xAB05E);
+}
+
+#[test]
+fn thousands_of_hostile_inputs_never_panic_from_another_seed() {
+    hostile_inputs_never_panic(0x5EED2);
+}
+
+/// A thousand random inputs from `seed`: no panic, every kind of abuse done many times, and
+/// afterwards the viewer renders the file's view again.
+fn hostile_inputs_never_panic(seed: u64) {
+    const STEPS: usize = 1_000;
     let mut harness = common::viewer(Some(common::scene_path("scene1_02.txt")));
     harness.get_by_label("Direction and up").click();
     harness.step();
-    let mut rng = SplitMix64::new(0xAB05E);
+    let mut rng = SplitMix64::new(seed);
     let sizes = [
         (0.0, 0.0),
         (1.0, 1.0),
@@ -112,7 +126,7 @@ fn thousands_of_hostile_inputs_never_panic() {
     let mut size = (1000.0, 700.0);
     // What was done: resizes, typed values, resets, slider values.
     let mut done = [0usize; 4];
-    for step in 0..2_000 {
+    for step in 0..STEPS {
         // In a window this large every control is reachable; below it some may not be.
         let roomy = size.0 >= 1000.0;
         match rng.next_u64() % 10 {
@@ -188,7 +202,7 @@ fn thousands_of_hostile_inputs_never_panic() {
     // Every kind of abuse happened many times (the widgets were found, not skipped; the three
     // tiny sizes show no controls, so a reset is possible in about 2 of 5 steps that try one).
     assert!(
-        done[0] > 100 && done[1] > 200 && done[2] > 50 && done[3] > 600,
+        done[0] > 40 && done[1] > 80 && done[2] > 20 && done[3] > 200,
         "{done:?}"
     );
 
@@ -198,7 +212,7 @@ fn thousands_of_hostile_inputs_never_panic() {
     harness
         .get_by_role_and_label(Role::Button, "Reset view")
         .click();
-    assert_consistent(&mut harness, 2_000);
+    assert_consistent(&mut harness, STEPS);
     assert!(harness.state().view().validate().is_ok());
     let _ = harness.root().accesskit_node();
 }
