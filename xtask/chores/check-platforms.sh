@@ -28,8 +28,7 @@ case "${1:-}" in
   "") ;;
   *) echo "usage: cargo xtask check-platforms [macos | all]" >&2; exit 2 ;;
 esac
-# mingw-w64 only for a Windows check (the Mac's alone, as CI runs it in the background, installs
-# no package).
+# mingw-w64 only for a Windows check (the Mac's alone, as CI runs it, installs no package).
 if [[ "${checks[*]}" == *windows* ]] && ! command -v x86_64-w64-mingw32-gcc >/dev/null; then
   apt_install gcc-mingw-w64-x86-64
 fi

@@ -14,9 +14,6 @@
 #   cargo xtask fuzz self-test
 # the fuzzing's own test: with the planted crash, a 10-second run must exit non-zero. Prints the
 # statuses; exits 1 when a crash would pass unnoticed. CI runs it after the fuzzing.
-#   cargo xtask fuzz build
-# installs what the fuzzing needs where it is missing (the nightly toolchain, cargo-fuzz) and
-# builds the targets, fuzzing nothing: CI builds them early, in the background (.ci/run).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 if [ "${1:-}" = self-test ]; then
@@ -33,8 +30,8 @@ if [ "${1:-}" = self-test ]; then
   exit 0
 fi
 seconds=${1:-60}
-if ! [[ "$seconds" = build || "$seconds" =~ ^[0-9]+$ ]]; then
-  echo "usage: cargo xtask fuzz [SECONDS [LOG_FOLDER]] | self-test | build" >&2
+if ! [[ "$seconds" =~ ^[0-9]+$ ]]; then
+  echo "usage: cargo xtask fuzz [SECONDS [LOG_FOLDER]] | self-test" >&2
   exit 2
 fi
 logs=${2:-}
@@ -50,7 +47,6 @@ if ! command -v cargo-fuzz >/dev/null 2>&1; then
   cargo install cargo-fuzz --locked
 fi
 cargo +nightly fuzz build --release
-[ "$seconds" != build ] || exit 0
 # Thread exits the leak check may see before they finish (fuzz/lsan-suppressions.txt says why).
 export LSAN_OPTIONS="suppressions=$root/fuzz/lsan-suppressions.txt:print_suppressions=0"
 # One target's run, its lines prefixed with its name; exits with libFuzzer's status.
