@@ -72,6 +72,20 @@ fn the_committed_notice_is_made_from_todays_crates() {
     }
 }
 
+/// In a copy of the inputs with `from` replaced by `to` in `file`, the check fails and names the
+/// command that makes the notice again.
+fn fails_and_says_what_to_run(change: &str, file: &str, from: &str, to: &str) {
+    let copy = copy_of_the_inputs();
+    replace_in(copy.path(), file, from, to);
+    let output = notice_check(copy.path());
+    assert!(!output.status.success(), "{change} fails the check");
+    assert!(
+        stderr(&output).contains("run `cargo xtask release notice`"),
+        "{change}: it says what to run: {}",
+        stderr(&output)
+    );
+}
+
 #[test]
 fn another_crate_version_or_feature_fails_the_check_and_says_what_to_run() {
     let copy = copy_of_the_inputs();
@@ -96,40 +110,17 @@ fn another_crate_version_or_feature_fails_the_check_and_says_what_to_run() {
     );
 
     // A feature of the program's crates: the notice must be made again.
-    let features = copy_of_the_inputs();
-    replace_in(
-        features.path(),
+    fails_and_says_what_to_run(
+        "a feature's change",
         "Cargo.toml",
         "\"persistence\",",
         "\"persistence\", \"accesskit\",",
     );
-    let output = notice_check(features.path());
-    assert!(
-        !output.status.success(),
-        "a feature's change fails the check"
-    );
-    assert!(
-        stderr(&output).contains("run `cargo xtask release notice`"),
-        "it says what to run: {}",
-        stderr(&output)
-    );
-
     // Another version of a crate in Cargo.lock.
-    let lock = copy_of_the_inputs();
-    replace_in(
-        lock.path(),
+    fails_and_says_what_to_run(
+        "a crate's version",
         "Cargo.lock",
         "name = \"glam\"\nversion = \"0.34.",
         "name = \"glam\"\nversion = \"0.35.",
-    );
-    let output = notice_check(lock.path());
-    assert!(
-        !output.status.success(),
-        "a crate's version fails the check"
-    );
-    assert!(
-        stderr(&output).contains("run `cargo xtask release notice`"),
-        "it says what to run: {}",
-        stderr(&output)
     );
 }
