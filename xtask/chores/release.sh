@@ -206,7 +206,6 @@ case "${1:-}" in
   build)
     notice_check
     rm -rf "$dist"
-    cargo build --profile dist --bin raytracer
     linux
     windows
     web
