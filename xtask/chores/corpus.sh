@@ -13,6 +13,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
-cargo build --profile dist --bin raytracer
-RAYTRACER_CORPUS_BIN="$PWD/target/dist/raytracer" cargo test --test corpus -- --include-ignored "$@"
+host=$(rustc -vV | sed -n 's/^host: //p')
+cargo build --profile dist --target "$host" --bin raytracer
+RAYTRACER_CORPUS_BIN="$PWD/target/$host/dist/raytracer" cargo test --test corpus -- --include-ignored "$@"
 [ $# -gt 0 ] || cargo test --test diagnosis -- --ignored

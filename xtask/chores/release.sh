@@ -28,6 +28,10 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 
 version=$(sed -n 's/^version = "\(.*\)"$/\1/p;T;q' Cargo.toml)
+# The Linux program is built for the host named as a target (target/HOST/dist/), as the Windows
+# one is: so both can be built by one cargo run (`build` below).
+host=$(rustc -vV | sed -n 's/^host: //p')
+windows_target=x86_64-pc-windows-gnu
 dist=target/artefacts
 tools=target/tools
 about_version=0.8.2
@@ -107,11 +111,11 @@ zipped() {
 
 linux() {
   notice_check
-  cargo build --profile dist --bin raytracer
+  cargo build --profile dist --target "$host" --bin raytracer
   local name="raytracer-$version-x86_64-linux"
   rm -rf "${dist:?}/$name"
   mkdir -p "$dist/$name"
-  strip -o "$dist/$name/raytracer" target/dist/raytracer
+  strip -o "$dist/$name/raytracer" "target/$host/dist/raytracer"
   extras "$dist/$name"
   tarball "$name"
 }
@@ -135,7 +139,7 @@ macos() {
 windows() {
   notice_check
   cargo xtask windows install
-  local target=x86_64-pc-windows-gnu
+  local target=$windows_target
   cargo build --profile dist --target "$target" --bin raytracer
   local name="raytracer-$version-x86_64-windows"
   rm -rf "${dist:?}/$name"
@@ -206,6 +210,11 @@ case "${1:-}" in
   build)
     notice_check
     rm -rf "$dist"
+    # Both programs in one cargo run: the build scripts and procedural macros are compiled once
+    # for both (548 units against 333 + 286 built apart, `cargo build --unit-graph`), and the
+    # last crate of each, compiled on one core (one codegen unit), runs beside the other's.
+    cargo xtask windows install
+    cargo build --profile dist --bin raytracer --target "$host" --target "$windows_target"
     linux
     windows
     web

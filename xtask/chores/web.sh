@@ -14,6 +14,10 @@
 # Tools come from the package registries only: the wasm32 target through rustup, and
 # wasm-bindgen-cli through cargo at exactly the version Cargo.lock pins for the wasm-bindgen
 # crate (the two must match), installed under target/tools/.
+# With RAYTRACER_WEB_CLIPPY=1 (CI sets it), the page's build is linted by clippy as it compiles,
+# warnings denied: clippy-driver compiles this package in rustc's place, as `cargo clippy` runs
+# it, so the lints of `cargo clippy --target wasm32-unknown-unknown --lib --bins -- -D warnings`
+# cost no second pass over the dependencies (CI's separate step took 76 s).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source xtask/lib/apt.sh
@@ -59,7 +63,13 @@ build() {
   install_target
   (renice -n 19 -p "$BASHPID" >/dev/null && install_bindgen) &
   local installing=$!
-  if ! cargo build --release --target wasm32-unknown-unknown --bin raytracer; then
+  local lint=()
+  if [ "${RAYTRACER_WEB_CLIPPY:-}" = 1 ]; then
+    rustup component add clippy >/dev/null 2>&1 || true
+    lint=(env "RUSTC_WORKSPACE_WRAPPER=$(rustup which clippy-driver)"
+      "CLIPPY_ARGS=-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__")
+  fi
+  if ! "${lint[@]}" cargo build --release --target wasm32-unknown-unknown --bin raytracer; then
     kill "$installing" 2>/dev/null || true
     exit 1
   fi
@@ -113,13 +123,20 @@ case "$command" in
     exec python3 -m http.server "$port" --bind 127.0.0.1 --directory "$site"
     ;;
   test)
+    # Chromium, Node and the browser driver are installed while the page builds: downloads and
+    # unpacking, which take little of the cores the build keeps busy.
+    browser_tools &
+    browser_tools_installing=$!
     build
+    echo "web.sh: the page built at ${SECONDS} s"
     # The renderer in WebAssembly under Node: the native frames, bit for bit (tests/same_pixels.rs).
     # The renderer needs no viewer: built without it, the test leaves egui's stack unbuilt.
     CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER="$PWD/$tools/bin/wasm-bindgen-test-runner" \
       cargo test --target wasm32-unknown-unknown --no-default-features --test same_pixels
-    browser_tools
+    echo "web.sh: the WebAssembly test passed at ${SECONDS} s"
+    wait "$browser_tools_installing"
     native_tools debug
+    echo "web.sh: the browser tests start at ${SECONDS} s"
     RAYTRACER_WEB_SITE=target/web RAYTRACER_BIN=target/debug/raytracer \
       RAYTRACER_SCENES=scenes RAYTRACER_DENSE_SCENE=target/web-test/dense_1e5.txt \
       RAYTRACER_CHROMIUM="$(command -v chromium)" \
