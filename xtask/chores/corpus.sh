@@ -3,7 +3,7 @@
 #   cargo xtask corpus [ARGUMENT…]   (ARGUMENTs go to the test binary: `cargo xtask corpus range`)
 #
 # Builds the program in the `dist` profile (nothing to do where `cargo xtask release build` has
-# just built it, as in CI), then runs every test of tests/corpus.rs against it, the two that
+# just built it, as in CI, with RAYTRACER_DIST_TARGETS naming the same targets: xtask/lib/dist.sh), then runs every test of tests/corpus.rs against it, the two that
 # compare every image of every program included: a plain `cargo test` (the README's test
 # command) leaves those two out, for they diagnose some 600 images one after another and take
 # minutes on the debug build. Then the diagnosis suite's sweeps that the README's test command
@@ -14,6 +14,7 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 
 host=$(rustc -vV | sed -n 's/^host: //p')
-cargo build --profile dist --target "$host" --bin raytracer
+source xtask/lib/dist.sh
+dist_build "$host"
 RAYTRACER_CORPUS_BIN="$PWD/target/$host/dist/raytracer" cargo test --test corpus -- --include-ignored "$@"
 [ $# -gt 0 ] || cargo test --test diagnosis -- --ignored

@@ -29,9 +29,10 @@ cd "$(dirname "$0")/../.."
 
 version=$(sed -n 's/^version = "\(.*\)"$/\1/p;T;q' Cargo.toml)
 # The Linux program is built for the host named as a target (target/HOST/dist/), as the Windows
-# one is: so both can be built by one cargo run (`build` below).
+# one is: so both can be built by one cargo run (`build` below; xtask/lib/dist.sh).
 host=$(rustc -vV | sed -n 's/^host: //p')
 windows_target=x86_64-pc-windows-gnu
+source xtask/lib/dist.sh
 dist=target/artefacts
 tools=target/tools
 about_version=0.8.2
@@ -111,7 +112,7 @@ zipped() {
 
 linux() {
   notice_check
-  cargo build --profile dist --target "$host" --bin raytracer
+  dist_build "$host"
   local name="raytracer-$version-x86_64-linux"
   rm -rf "${dist:?}/$name"
   mkdir -p "$dist/$name"
@@ -140,7 +141,7 @@ windows() {
   notice_check
   cargo xtask windows install
   local target=$windows_target
-  cargo build --profile dist --target "$target" --bin raytracer
+  dist_build "$target"
   local name="raytracer-$version-x86_64-windows"
   rm -rf "${dist:?}/$name"
   mkdir -p "$dist/$name"
@@ -210,11 +211,10 @@ case "${1:-}" in
   build)
     notice_check
     rm -rf "$dist"
-    # Both programs in one cargo run: the build scripts and procedural macros are compiled once
-    # for both (548 units against 333 + 286 built apart, `cargo build --unit-graph`), and the
-    # last crate of each, compiled on one core (one codegen unit), runs beside the other's.
+    # Both programs in one cargo run (xtask/lib/dist.sh): the Windows toolchain first.
     cargo xtask windows install
-    cargo build --profile dist --bin raytracer --target "$host" --target "$windows_target"
+    RAYTRACER_DIST_TARGETS="$host $windows_target ${RAYTRACER_DIST_TARGETS:-}"
+    export RAYTRACER_DIST_TARGETS
     linux
     windows
     web

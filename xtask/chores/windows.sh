@@ -20,6 +20,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source xtask/lib/apt.sh
+source xtask/lib/dist.sh
 
 target=x86_64-pc-windows-gnu
 out="target/$target/release"
@@ -59,7 +60,7 @@ case "${1:-}" in
     install
     # The program the Windows download ships (viewer included, the `dist` profile): the release
     # archive (cargo xtask release windows) takes this build as it is.
-    cargo build --profile dist --target "$target" --bin raytracer
+    dist_build "$target"
     out="target/$target/dist"
     scaffolding
     wine_prefix
