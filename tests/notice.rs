@@ -29,9 +29,12 @@ fn notice_check(folder: &Path) -> Output {
 /// A folder holding the files the check reads, as the repository holds them.
 fn copy_of_the_inputs() -> tempfile::TempDir {
     let folder = tempfile::tempdir().expect("a temporary folder");
-    std::fs::create_dir_all(folder.path().join("xtask/chores")).expect("a folder");
+    for folder_name in ["xtask/chores", "xtask/lib"] {
+        std::fs::create_dir_all(folder.path().join(folder_name)).expect("a folder");
+    }
     for file in [
         "xtask/chores/release.sh",
+        "xtask/lib/dist.sh",
         "Cargo.toml",
         "Cargo.lock",
         "about.toml",
