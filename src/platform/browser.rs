@@ -104,7 +104,8 @@ pub fn set_title(title: &str) {
     }
 }
 
-/// The name a browser page downloads `path` as: its last part.
+/// The name a browser page downloads `path` as: its last part (the viewer's downloads).
+#[cfg(feature = "gui")]
 pub(crate) fn download_name(path: &std::path::Path) -> String {
     path.file_name().map_or_else(
         || "raytracer".to_owned(),
