@@ -9,10 +9,11 @@ const browser = await launch();
 const median = (v) => [...v].sort((a, b) => a - b)[Math.floor(v.length / 2)];
 const queries = { default: "", "?scene=scenes/scene1_04.txt": "?scene=scenes/scene1_04.txt" };
 // Each step's time since navigation, from the page's own clock (performance.now()): the page's
-// script running, the .wasm ready, eframe started, the first frame of the scene asked for on
-// screen, settled (the frame of the current view at full quality, nothing pending).
+// script running, the canvas and its WebGL context readied, the .wasm ready, eframe started, the
+// first frame of the scene asked for on screen, settled (the frame of the current view at full
+// quality, nothing pending).
 const results = dirs.map(() => Object.fromEntries(Object.keys(queries).map((q) => [q, {
-  times: [], steps: { script: [], wasm: [], started: [], frame: [], settled: [] },
+  times: [], steps: { script: [], canvas: [], wasm: [], started: [], frame: [], settled: [] },
 }])));
 for (let run = 0; run < 5; run++) {
   for (const [i, site] of sites.entries()) {
@@ -32,6 +33,7 @@ for (let run = 0; run < 5; run++) {
       times.push(Date.now() - started);
       const mark = (n) => page.evaluate((m) => performance.getEntriesByName(m)[0]?.startTime ?? NaN, n);
       steps.script.push(await page.evaluate(() => performance.getEntriesByType("navigation")[0].domContentLoadedEventStart));
+      steps.canvas.push(await mark("raytracer:canvas-ready"));
       steps.wasm.push(await mark("raytracer:wasm-ready"));
       steps.started.push(await mark("raytracer:started"));
       steps.frame.push(frame);

@@ -71,6 +71,34 @@ test("the page loads without a console error and shows the default scene's two i
   await context.close();
 });
 
+test("while the .wasm loads the spinner waits a second before it turns, and the canvas is drawn as the desktop window's", async () => {
+  // Each turn of the spinner is a frame the browser's compositor draws; where WebGL is drawn on
+  // the CPU those frames held up the viewer's start (docs/web-first-frame.txt). A slow load, made
+  // here by holding the .wasm back 2 s, still shows it turning after its second.
+  const context = await browser.newContext({ viewport: { width: 1280, height: 720 } });
+  const page = await context.newPage();
+  let release;
+  const held = new Promise((resolve) => { release = resolve; });
+  await page.route("**/raytracer_bg.wasm", async (route) => {
+    await held;
+    await route.continue();
+  });
+  await page.goto(site.url);
+  const turn = () => page.evaluate(() => getComputedStyle(document.querySelector("#notice .spinner")).transform);
+  await page.waitForTimeout(500);
+  assert.equal(await turn(), "none", "the spinner turns in the load's first second");
+  await page.waitForTimeout(900);
+  assert.match(await turn(), /^matrix/, "the spinner does not turn once the load takes more than a second");
+  release();
+  await page.waitForFunction(() => window.raytracer !== undefined, null, { timeout: 60_000 });
+  await settled(page);
+  const attributes = await page.evaluate(() => document.getElementById("viewer").getContext("webgl2").getContextAttributes());
+  assert.equal(attributes.antialias, false, "the canvas is multisampled");
+  assert.equal(attributes.depth, false, "the canvas has a depth buffer");
+  assert.equal(await page.evaluate(() => getComputedStyle(document.getElementById("notice")).display), "none");
+  await context.close();
+});
+
 test("?scene= opens a scene from the page's site, the same pixels as the native render", async () => {
   const { page, context, errors } = await openViewer(browser, `${site.url}?scene=scenes/scene1_02.txt`);
   await page.waitForFunction(() => window.raytracer.scene_name() === "scene1_02.txt");
